@@ -1,0 +1,35 @@
+# Makefile: drives CMake. `make demo` and `make test` install missing Debian packages first.
+BUILD ?= build
+JOBS ?= $(shell nproc 2>/dev/null || echo 2)
+CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
+DEMO_MODEL ?= tests/data/fox.obj
+DATA ?= ../shared/data
+
+.PHONY: all deps configure build demo test bench install clean
+
+all: build
+
+deps:
+	@bash scripts/install-deps.sh
+
+configure: deps
+	@cmake -S . -B $(BUILD) $(CMAKE_FLAGS) > /dev/null
+
+build: configure
+	@cmake --build $(BUILD) -j $(JOBS)
+
+demo: build
+	@mkdir -p demo-output
+	./$(BUILD)/coverage-axis $(DEMO_MODEL) -o demo-output/skeleton.ma --obj demo-output/skeleton.obj --ply demo-output/skeleton.ply
+
+test: build
+	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+bench: build
+	@for b in $(BUILD)/bench_*; do [ -x "$$b" ] && "$$b" $(DATA) || exit 1; done
+
+install: build
+	@cmake --install $(BUILD) $(if $(PREFIX),--prefix $(PREFIX),)
+
+clean:
+	@rm -rf $(BUILD) demo-output

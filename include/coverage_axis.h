@@ -1,0 +1,282 @@
+/*
+ * coverage_axis.h - the one stable C ABI of the coverage-axis library (C99; compiles as C and C++).
+ *
+ * Coverage Axis (Dou et al., Eurographics 2022) turns a triangle mesh or an oriented point cloud
+ * into a compact medial skeleton: a few medial balls (centre + radius) joined by edges and
+ * triangles. Three calls:
+ *
+ *   ca_candidates  surface -> surface samples + inner candidate balls        (ca_candidate_set)
+ *   ca_select      fewest dilated candidate balls covering every sample      (ca_selection)
+ *   ca_connect     edges and triangles between the selected balls            (ca_skeleton)
+ *
+ * Conventions
+ * - Coordinates are double, in the caller's units; every result is in the caller's units.
+ *   Lengths given as options (delta) are fractions of the longest side of the input's bounding
+ *   box (the paper's unit-cube convention: delta = 0.02 means 2 % of the longest side).
+ * - Inputs are borrowed views: pointer + count + byte stride (0 = tightly packed). They are read
+ *   during the call only.
+ * - Every fallible call returns a ca_status (pinned values below). On any status other than
+ *   CA_OK the output pointer is set to NULL and nothing is allocated: no partial results.
+ *   ca_context_last_error() gives a one-line explanation.
+ * - Results are opaque, immutable, and freed with their ca_*_destroy function (never free()).
+ *   Zero-copy getters return pointers valid until destroy; results may be read from several
+ *   threads at once.
+ * - A context must be used by one thread at a time. ca_context_request_cancel() may be called from
+ *   any thread. Callbacks run on the calling thread only.
+ * - Option structs start with struct_size; fill them with the matching *_init() function, which
+ *   sets the defaults, then change what you need.
+ * - The library never prints, never calls exit()/abort() on bad input, and lets no C++ exception
+ *   cross this boundary. Its only process-wide state is a mutex that serialises calls into CBC
+ *   (CBC is not thread-safe); Qhull runs with one handle per call.
+ */
+#ifndef COVERAGE_AXIS_H
+#define COVERAGE_AXIS_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#if defined(_WIN32) && defined(CA_SHARED_LIBRARY)
+#  ifdef CA_BUILDING_LIBRARY
+#    define CA_API __declspec(dllexport)
+#  else
+#    define CA_API __declspec(dllimport)
+#  endif
+#elif defined(__GNUC__) && defined(CA_SHARED_LIBRARY)
+#  define CA_API __attribute__((visibility("default")))
+#else
+#  define CA_API
+#endif
+
+/* ---- versions ------------------------------------------------------------------------------ */
+#define CA_VERSION_MAJOR 0
+#define CA_VERSION_MINOR 1
+#define CA_VERSION_PATCH 0
+#define CA_VERSION_NUMBER (CA_VERSION_MAJOR * 10000 + CA_VERSION_MINOR * 100 + CA_VERSION_PATCH)
+/* The ABI version changes only when existing functions or struct prefixes change. */
+#define CA_ABI_VERSION 1
+
+CA_API uint32_t ca_version(void);     /* CA_VERSION_NUMBER of the linked library */
+CA_API uint32_t ca_abi_version(void); /* CA_ABI_VERSION of the linked library */
+
+/* ---- status codes (pinned values; never renumbered) ---------------------------------------- */
+typedef int32_t ca_status;
+#define CA_OK                      0
+#define CA_ERROR_INVALID_ARGUMENT  1  /* an option is out of range */
+#define CA_ERROR_NULL_POINTER      2  /* a required pointer is NULL */
+#define CA_ERROR_STRUCT_SIZE       3  /* struct_size is not one this library knows */
+#define CA_ERROR_INVALID_INPUT     4  /* NaN/Inf coordinate, out-of-range index, bad normal */
+#define CA_ERROR_DEGENERATE_INPUT  5  /* empty, zero area, too few distinct points, coplanar */
+#define CA_ERROR_UNCOVERABLE       6  /* some samples are covered by no candidate ball */
+#define CA_ERROR_GEOMETRY          7  /* the Delaunay / power diagram (Qhull) failed */
+#define CA_ERROR_SOLVER            8  /* the set-cover solver (CBC) failed */
+#define CA_ERROR_CANCELLED         9  /* the progress callback or a cancel request stopped it */
+#define CA_ERROR_OUT_OF_MEMORY     10
+#define CA_ERROR_BUFFER_TOO_SMALL  11 /* copy-out capacity too small; *count has the size needed */
+#define CA_ERROR_INTERNAL          12 /* a bug: please report it with the input */
+#define CA_ERROR_NO_CANDIDATES     13 /* no inner candidate ball was found */
+
+/* A static English name for a status, e.g. "CA_ERROR_NULL_POINTER: a required pointer is NULL". */
+CA_API const char* ca_status_string(ca_status status);
+
+/* ---- context ------------------------------------------------------------------------------- */
+typedef struct ca_context ca_context;
+
+/* level: 0 debug, 1 info, 2 warning. Called on the calling thread. */
+typedef void (*ca_log_fn)(void* user, int32_t level, const char* message);
+/* stage: "sampling", "inside", "delaunay", "candidates", "coverage", "selection", "connect", ...
+   fraction in [0,1] within the stage. Return non-zero to cancel (the call returns
+   CA_ERROR_CANCELLED). Called on the calling thread. */
+typedef int32_t (*ca_progress_fn)(void* user, const char* stage, double fraction);
+/* Allocator for the result objects and the arrays their getters return. Working memory during
+   a call, and the internal state a result keeps for later steps, use the C++ heap. Both
+   functions or neither. */
+typedef void* (*ca_alloc_fn)(void* user, size_t size);
+typedef void (*ca_free_fn)(void* user, void* pointer);
+
+typedef struct ca_context_desc {
+    uint32_t struct_size;  /* sizeof(ca_context_desc) */
+    ca_alloc_fn alloc;     /* NULL: malloc */
+    ca_free_fn free;       /* NULL: free */
+    void* alloc_user;
+    ca_log_fn log;         /* NULL: no log */
+    void* log_user;
+    ca_progress_fn progress; /* NULL: no progress */
+    void* progress_user;
+    int32_t threads;       /* worker threads for parallel stages; 0 = all cores, 1 = serial */
+} ca_context_desc;
+
+CA_API void ca_context_desc_init(ca_context_desc* desc);
+/* desc may be NULL (defaults). */
+CA_API ca_status ca_context_create(const ca_context_desc* desc, ca_context** out);
+CA_API void ca_context_destroy(ca_context* ctx); /* NULL is a no-op */
+/* Any thread. The request stays in force (every long call returns CA_ERROR_CANCELLED) until
+   ca_context_clear_cancel() is called. */
+CA_API void ca_context_request_cancel(ca_context* ctx);
+CA_API void ca_context_clear_cancel(ca_context* ctx);
+/* The message of the last failed call on this context ("" if none). Valid until the next call. */
+CA_API const char* ca_context_last_error(const ca_context* ctx);
+
+/* ---- input views --------------------------------------------------------------------------- */
+/* A triangle mesh (triangle_count > 0) or an oriented point cloud (triangle_count == 0, normals
+   required: outward normals, one per point). Meshes may be open, soups, or self-intersecting:
+   inside/outside comes from the generalised winding number. */
+typedef struct ca_surface_view {
+    uint32_t struct_size;       /* sizeof(ca_surface_view) */
+    const double* positions;    /* x y z per vertex */
+    size_t vertex_count;
+    size_t position_stride;     /* bytes between vertices; 0 = 3 * sizeof(double) */
+    const uint32_t* triangles;  /* i j k per triangle, 0-based */
+    size_t triangle_count;
+    size_t triangle_stride;     /* bytes between triangles; 0 = 3 * sizeof(uint32_t) */
+    const double* normals;      /* point clouds: nx ny nz per point; ignored for meshes */
+    size_t normal_stride;       /* 0 = 3 * sizeof(double) */
+} ca_surface_view;
+
+CA_API void ca_surface_view_init(ca_surface_view* view);
+
+/* ---- step 1: candidates -------------------------------------------------------------------- */
+#define CA_CANDIDATES_VORONOI 0 /* inner Voronoi vertices of voronoi_samples surface samples */
+#define CA_CANDIDATES_RANDOM  1 /* random interior points, radius = distance to the surface */
+
+typedef struct ca_candidate_options {
+    uint32_t struct_size;        /* sizeof(ca_candidate_options) */
+    int32_t generator;           /* CA_CANDIDATES_*; default VORONOI (point clouds: VORONOI only) */
+    uint32_t cover_samples;      /* |S|, samples to cover; default 1500 (point clouds: the points,
+                                    subsampled to this many if there are more; 0 = all) */
+    uint32_t voronoi_samples;    /* |C|, samples whose Voronoi vertices are candidates; default 4000 */
+    uint32_t random_candidates;  /* random generator: number of interior points; default 10000 */
+    uint64_t seed;               /* default 1; the same seed gives the same result */
+} ca_candidate_options;
+
+CA_API void ca_candidate_options_init(ca_candidate_options* options);
+
+typedef struct ca_candidate_set ca_candidate_set;
+
+CA_API ca_status ca_candidates(ca_context* ctx, const ca_surface_view* surface,
+                               const ca_candidate_options* options, ca_candidate_set** out);
+
+/* Build a candidate set from the caller's own samples and balls (radius = undilated medial
+   radius). reference_length is the length delta is a fraction of (the longest bbox side of the
+   model); 0 = the longest bbox side of the samples. Strides in bytes, 0 = packed. */
+CA_API ca_status ca_candidates_from_arrays(ca_context* ctx,
+                                           const double* samples, size_t sample_count, size_t sample_stride,
+                                           const double* centers, size_t center_stride,
+                                           const double* radii, size_t radius_stride,
+                                           size_t ball_count, double reference_length,
+                                           ca_candidate_set** out);
+CA_API void ca_candidate_set_destroy(ca_candidate_set* set);
+
+/* Zero-copy getters: x y z per item; valid until destroy. */
+CA_API size_t ca_candidate_set_count(const ca_candidate_set* set);
+CA_API const double* ca_candidate_set_centers(const ca_candidate_set* set);
+CA_API const double* ca_candidate_set_radii(const ca_candidate_set* set);
+CA_API size_t ca_candidate_set_sample_count(const ca_candidate_set* set);
+CA_API const double* ca_candidate_set_samples(const ca_candidate_set* set);
+/* The length delta is a fraction of (longest bbox side), in the caller's units. */
+CA_API double ca_candidate_set_reference_length(const ca_candidate_set* set);
+/* 1 if the input mesh faced inward and was flipped for the inside test, else 0. */
+CA_API int32_t ca_candidate_set_flipped(const ca_candidate_set* set);
+/* Copy-out: capacity in balls; centers needs 3*capacity doubles, radii capacity doubles (either
+   may be NULL). *count receives the number of balls; CA_ERROR_BUFFER_TOO_SMALL if capacity is
+   smaller (nothing copied). */
+CA_API ca_status ca_candidate_set_copy(const ca_candidate_set* set, double* centers, double* radii,
+                                       size_t capacity, size_t* count);
+
+/* ---- step 2: selection (minimum set cover) ------------------------------------------------- */
+#define CA_DILATE_OFFSET 0 /* r' = r + delta * reference_length */
+#define CA_DILATE_SCALE  1 /* r' = r * scale */
+
+#define CA_SOLVER_EXACT  0 /* reduction + CBC branch and bound: proven optimum within the time limit */
+#define CA_SOLVER_GREEDY 1 /* classic greedy + redundancy removal */
+#define CA_SOLVER_CAPP   2 /* Coverage Axis++ score greedy + redundancy removal */
+
+typedef struct ca_select_options {
+    uint32_t struct_size;        /* sizeof(ca_select_options) */
+    int32_t dilation;            /* CA_DILATE_*; default OFFSET */
+    double delta;                /* offset, fraction of the longest bbox side; default 0.02 */
+    double scale;                /* scale factor; default 1.5 */
+    int32_t solver;              /* CA_SOLVER_*; default EXACT */
+    double time_limit_s;         /* exact solver wall-clock budget; default 60; <= 0: no limit */
+    int32_t skip_uncoverable;    /* 0 (default): uncoverable samples fail with CA_ERROR_UNCOVERABLE;
+                                    1: they are ignored and listed in the result */
+    /* Optional masks (NULL = none), non-zero = set; borrowed during the call. */
+    const uint8_t* ignorable_samples; /* sample_count entries: need not be covered */
+    const uint8_t* forced_in;         /* ball_count entries: must be selected */
+    const uint8_t* forced_out;        /* ball_count entries: must not be selected */
+} ca_select_options;
+
+CA_API void ca_select_options_init(ca_select_options* options);
+
+typedef struct ca_selection ca_selection;
+
+CA_API ca_status ca_select(ca_context* ctx, const ca_candidate_set* set,
+                           const ca_select_options* options, ca_selection** out);
+CA_API void ca_selection_destroy(ca_selection* selection);
+
+CA_API size_t ca_selection_count(const ca_selection* selection);
+CA_API const uint32_t* ca_selection_indices(const ca_selection* selection); /* into the candidate set */
+CA_API const double* ca_selection_centers(const ca_selection* selection);   /* x y z per ball */
+CA_API const double* ca_selection_radii(const ca_selection* selection);     /* undilated */
+CA_API const double* ca_selection_dilated_radii(const ca_selection* selection);
+CA_API size_t ca_selection_uncovered_count(const ca_selection* selection);
+CA_API const uint32_t* ca_selection_uncovered(const ca_selection* selection); /* sample indices */
+
+typedef struct ca_select_stats {
+    uint32_t struct_size;        /* set by the caller: sizeof(ca_select_stats) */
+    int32_t proven_optimal;      /* 1 iff the cover is a proven minimum */
+    int32_t solver;              /* CA_SOLVER_* used */
+    double objective;            /* number of selected balls */
+    double lower_bound;          /* a valid lower bound on the minimum */
+    double gap;                  /* (objective - lower_bound) / objective */
+    double delta_absolute;       /* the offset in the caller's units (0 for SCALE) */
+    double time_reduce_s;
+    double time_solve_s;
+    double time_total_s;         /* including the coverage matrix */
+    uint64_t rows_before, cols_before, rows_after, cols_after, forced;
+} ca_select_stats;
+
+CA_API ca_status ca_selection_stats(const ca_selection* selection, ca_select_stats* stats);
+
+/* ---- step 3: connectivity ------------------------------------------------------------------ */
+#define CA_CONNECT_POWER 0 /* regular triangulation of selected balls and surface samples */
+
+typedef struct ca_connect_options {
+    uint32_t struct_size;        /* sizeof(ca_connect_options) */
+    int32_t method;              /* CA_CONNECT_*; default POWER */
+} ca_connect_options;
+
+CA_API void ca_connect_options_init(ca_connect_options* options);
+
+typedef struct ca_skeleton ca_skeleton;
+
+CA_API ca_status ca_connect(ca_context* ctx, const ca_candidate_set* set, const ca_selection* selection,
+                            const ca_connect_options* options, ca_skeleton** out);
+CA_API void ca_skeleton_destroy(ca_skeleton* skeleton);
+
+CA_API size_t ca_skeleton_vertex_count(const ca_skeleton* skeleton);
+CA_API const double* ca_skeleton_centers(const ca_skeleton* skeleton); /* x y z per vertex */
+CA_API const double* ca_skeleton_radii(const ca_skeleton* skeleton);   /* undilated medial radii */
+CA_API size_t ca_skeleton_edge_count(const ca_skeleton* skeleton);
+CA_API const uint32_t* ca_skeleton_edges(const ca_skeleton* skeleton); /* i j per edge, incl. face edges */
+CA_API size_t ca_skeleton_face_count(const ca_skeleton* skeleton);
+CA_API const uint32_t* ca_skeleton_faces(const ca_skeleton* skeleton); /* i j k per face */
+
+typedef struct ca_skeleton_stats {
+    uint32_t struct_size;        /* set by the caller: sizeof(ca_skeleton_stats) */
+    uint64_t vertices, edges, faces;
+    uint64_t components;         /* connected components (isolated vertices count) */
+    uint64_t isolated;           /* vertices with no edge */
+    int64_t betti1;              /* independent cycles of the complex */
+    double time_s;
+} ca_skeleton_stats;
+
+CA_API ca_status ca_skeleton_stats_get(const ca_skeleton* skeleton, ca_skeleton_stats* stats);
+
+#ifdef __cplusplus
+}
+#endif
+#endif /* COVERAGE_AXIS_H */

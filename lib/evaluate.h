@@ -1,0 +1,37 @@
+// evaluate.h: how far a medial skeleton is from the shape (EVALUATION.md). The reconstruction
+// E is the union of the skeleton's spheres, medial cones (edges) and medial slabs (faces).
+// Exact signed distances to each primitive, F(x) = min over primitives (BVH over primitive
+// bounding spheres), samples of the boundary of E, and one- and two-sided Hausdorff distances
+// to the input surface (exact point-to-triangle distances through an AABB tree).
+#pragma once
+#include "common.h"
+#include "skeleton.h"
+
+namespace ca {
+
+// Exact signed distances (negative inside): min over the simplex of |p - c(t)| - r(t).
+double sd_sphere(const Vec3& p, const Vec3& c, double r);
+double sd_cone(const Vec3& p, const Vec3& c1, double r1, const Vec3& c2, double r2);
+double sd_slab(const Vec3& p, const Vec3& c1, double r1, const Vec3& c2, double r2,
+               const Vec3& c3, double r3);
+
+struct EvaluateOptions {
+    uint32_t surface_samples = 30000;    // plus the input vertices
+    uint32_t envelope_samples = 100000;  // at least; boundary samples of E
+    uint64_t seed = 1;
+};
+
+struct EvaluateResult {
+    // all in percent of the input bounding-box diagonal
+    double hd_surface_to_recon = 0, mean_surface_to_recon = 0;
+    double hd_recon_to_surface = 0, mean_recon_to_surface = 0;
+    double hd_two_sided = 0;
+    double diagonal = 0;                 // the input bbox diagonal (input units)
+    size_t surface_samples_used = 0, envelope_samples_used = 0;
+};
+
+// Mesh input (triangles non-empty) or point cloud (triangles empty: distance to nearest point).
+Status evaluate(const Mesh& surface, const Skeleton& skeleton, const EvaluateOptions& opt,
+                const Monitor& monitor, EvaluateResult& out);
+
+}  // namespace ca

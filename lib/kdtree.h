@@ -1,0 +1,35 @@
+// kdtree.h: a nanoflann k-d tree over a vector of 3-D points (radii and distances squared, as
+// nanoflann 1.4 takes them). Built in the constructor; const queries are thread-safe.
+#pragma once
+#include "common.h"
+
+#include <nanoflann.hpp>
+
+namespace ca {
+
+struct PointSetAdaptor {
+    const std::vector<Vec3>* pts;
+    size_t kdtree_get_point_count() const { return pts->size(); }
+    double kdtree_get_pt(size_t i, size_t d) const { return (*pts)[i][int(d)]; }
+    template <class B> bool kdtree_get_bbox(B&) const { return false; }
+};
+
+class PointTree {
+public:
+    explicit PointTree(const std::vector<Vec3>& pts)
+        : adaptor_{&pts}, tree_(3, adaptor_, nanoflann::KDTreeSingleIndexAdaptorParams(16)) {}
+    // (index, squared distance) of the points within `radius` of q.
+    void within(const Vec3& q, double radius, std::vector<std::pair<size_t, double>>& hits) const {
+        hits.clear();
+        tree_.radiusSearch(q.data(), radius * radius, hits, nanoflann::SearchParams(32, 0, false));
+    }
+    // k nearest points; returns how many were found.
+    size_t nearest(const Vec3& q, size_t k, size_t* idx, double* dist2) const {
+        return tree_.knnSearch(q.data(), k, idx, dist2);
+    }
+private:
+    PointSetAdaptor adaptor_;
+    nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PointSetAdaptor>, PointSetAdaptor, 3, size_t> tree_;
+};
+
+}  // namespace ca

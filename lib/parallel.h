@@ -1,0 +1,45 @@
+// parallel.h: a minimal fork-join loop over index ranges with std::thread. Work is cut into
+// batches; between batches the calling thread reports progress (callbacks never run on worker
+// threads) and stops early when the monitor says so.
+#pragma once
+#include "common.h"
+
+#include <algorithm>
+#include <thread>
+
+namespace ca {
+
+inline int resolve_threads(int32_t requested) {
+    if (requested > 0) return requested;
+    const unsigned hw = std::thread::hardware_concurrency();
+    return hw ? int(hw) : 1;
+}
+
+// Calls body(begin, end) over [0, n) in batches of `batch` items split across `threads`.
+// Returns false if cancelled.
+template <class Body>
+bool parallel_for(size_t n, int threads, size_t batch, const Monitor& monitor, const char* stage, Body&& body) {
+    threads = std::max(1, threads);
+    batch = std::max<size_t>(batch, 1);
+    for (size_t start = 0; start < n; start += batch) {
+        const size_t stop = std::min(n, start + batch);
+        const size_t len = stop - start;
+        const size_t workers = std::min<size_t>(size_t(threads), len);
+        if (workers <= 1) {
+            body(start, stop);
+        } else {
+            std::vector<std::thread> pool;
+            const size_t chunk = (len + workers - 1) / workers;
+            for (size_t w = 1; w < workers; ++w) {
+                const size_t b = start + w * chunk, e = std::min(stop, b + chunk);
+                if (b < e) pool.emplace_back([&body, b, e] { body(b, e); });
+            }
+            body(start, std::min(stop, start + chunk));
+            for (auto& t : pool) t.join();
+        }
+        if (!monitor.report(stage, double(stop) / double(n))) return false;
+    }
+    return true;
+}
+
+}  // namespace ca

@@ -1,0 +1,56 @@
+// setcover.h: choose the fewest balls that cover every (non-ignorable) sample: reduction to a
+// fixpoint (forced balls, dominated balls, dominated samples), then an exact ILP solve with CBC
+// on the kernel (greedy start, time budget, honest bound/gap), or a heuristic (greedy,
+// Coverage Axis++), each followed by redundancy removal.
+// CBC is not thread-safe: every CBC call in the process goes through one mutex (the only
+// process-wide state of the library).
+#pragma once
+#include "common.h"
+#include "coverage.h"
+
+namespace ca {
+
+enum class Solver : int32_t { exact = 0, greedy = 1, capp = 2 };
+
+struct CoverOptions {
+    Solver solver = Solver::exact;
+    double time_limit_s = 60.0;   // CBC wall-clock budget; <= 0 means no limit
+    int32_t threads = 1;          // CBC threads (1 = serial, deterministic)
+    // Optional per-sample / per-ball masks (empty = none). Non-zero = set.
+    std::vector<uint8_t> ignorable_samples;   // need not be covered
+    std::vector<uint8_t> forced_in;           // must be selected
+    std::vector<uint8_t> forced_out;          // must not be selected
+    // Needed by the Coverage Axis++ score only (ball centres and radii, undilated).
+    const std::vector<Vec3>* centers = nullptr;
+    const std::vector<double>* radii = nullptr;
+};
+
+struct CoverResult {
+    std::vector<uint32_t> selected;        // ball indices, ascending
+    int32_t proven_optimal = 0;            // 1 iff the exact solver proved optimality
+    double objective = 0;                  // |selected|
+    double lower_bound = 0;                // valid lower bound on the optimum
+    double gap = 0;                        // (objective - lower_bound) / objective
+    size_t rows_before = 0, cols_before = 0, rows_after = 0, cols_after = 0, forced = 0;
+    double time_reduce_s = 0, time_solve_s = 0;
+    std::vector<uint32_t> uncovered;       // samples no allowed ball covers (only when allowed)
+};
+
+// A sample that no allowed ball covers and that is not ignorable makes the problem infeasible:
+// returns Code::uncoverable listing how many and which, unless `skip_uncoverable` is set, in
+// which case those samples are reported in result.uncovered and treated as ignorable.
+Status solve_set_cover(const Coverage& cov, const CoverOptions& opt, bool skip_uncoverable,
+                       const Monitor& monitor, CoverResult& result);
+
+namespace detail {
+// The reduction alone (exposed for tests): same checks as solve_set_cover; on success `forced`
+// lists the balls the reduction selects (forced_in and forced by the reduction, ascending) and
+// `kernel` is what remains (kernel.n_samples rows, kernel.n_balls columns, both directions
+// filled), kernel_samples / kernel_balls giving their original indices. The optimum of the
+// original problem equals forced.size() + the optimum of the kernel.
+Status reduce_set_cover(const Coverage& cov, const CoverOptions& opt, bool skip_uncoverable, const Monitor& monitor,
+                        std::vector<uint32_t>& forced, Coverage& kernel, std::vector<uint32_t>& kernel_balls,
+                        std::vector<uint32_t>& kernel_samples);
+}  // namespace detail
+
+}  // namespace ca

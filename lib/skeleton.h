@@ -1,0 +1,24 @@
+// skeleton.h: the medial skeleton (balls joined by edges and triangles) and its topology
+// statistics: connected components, isolated balls, first Betti number of the complex.
+#pragma once
+#include "common.h"
+
+namespace ca {
+
+struct Skeleton {
+    std::vector<Ball> balls;
+    std::vector<std::array<uint32_t, 2>> edges;   // i < j, unique, includes every face edge
+    std::vector<Tri> faces;                       // i < j < k, unique
+};
+
+struct TopologyStats {
+    size_t components = 0;   // connected components of the 1-skeleton (isolated balls count)
+    size_t isolated = 0;     // balls with no edge
+    long betti1 = 0;         // first Betti number of the 2-complex over GF(2)
+};
+
+// Sorts and de-duplicates edges/faces and adds every face edge as an edge.
+void canonicalize(Skeleton& s);
+TopologyStats topology(const Skeleton& s);
+
+}  // namespace ca

@@ -1,0 +1,92 @@
+// surface.cpp: validation and normalisation of the caller's mesh or oriented point cloud.
+#include "surface.h"
+#include "winding.h"
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <string>
+
+namespace ca {
+
+std::pair<Vec3, Vec3> bounding_box(const std::vector<Vec3>& pts) {
+    if (pts.empty()) return {Vec3::Zero(), Vec3::Zero()};
+    Vec3 lo = pts[0], hi = pts[0];
+    for (const Vec3& p : pts) { lo = lo.cwiseMin(p); hi = hi.cwiseMax(p); }
+    return {lo, hi};
+}
+
+static bool all_in_one_plane(const std::vector<Vec3>& pts, double longest) {
+    Vec3 mean = Vec3::Zero();
+    for (const Vec3& p : pts) mean += p;
+    mean /= double(pts.size());
+    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+    for (const Vec3& p : pts) cov += (p - mean) * (p - mean).transpose();
+    cov /= double(pts.size());
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
+    // smallest standard deviation relative to the size of the model
+    return std::sqrt(std::max(0.0, es.eigenvalues()[0])) <= 1e-9 * longest;
+}
+
+Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out) {
+    out = Surface{};
+    const size_t nv = raw.vertices.size();
+    if (nv == 0) return fail(Code::degenerate_input, "the input has no vertices");
+    for (size_t i = 0; i < nv; ++i)
+        if (!raw.vertices[i].allFinite())
+            return fail(Code::invalid_input, "vertex " + std::to_string(i) + " has a NaN or infinite coordinate");
+    for (size_t t = 0; t < raw.triangles.size(); ++t)
+        for (uint32_t v : raw.triangles[t])
+            if (v >= nv)
+                return fail(Code::invalid_input, "triangle " + std::to_string(t) + " references vertex " +
+                                                     std::to_string(v) + " of " + std::to_string(nv));
+    const bool cloud = raw.triangles.empty();
+    if (cloud) {
+        if (normals.size() != nv)
+            return fail(Code::invalid_input, "a point cloud (no triangles) needs one normal per point (" +
+                                                 std::to_string(normals.size()) + " normals for " +
+                                                 std::to_string(nv) + " points)");
+        for (size_t i = 0; i < nv; ++i) {
+            const double len = normals[i].norm();
+            if (!std::isfinite(len) || len < 1e-12)
+                return fail(Code::invalid_input, "normal " + std::to_string(i) + " is zero, NaN or infinite");
+            normals[i] /= len;
+        }
+    }
+
+    auto [lo, hi] = bounding_box(raw.vertices);
+    const double longest = (hi - lo).maxCoeff();
+    if (!(longest > 0)) return fail(Code::degenerate_input, "all input points coincide");
+    if (!std::isfinite(longest))
+        return fail(Code::invalid_input, "the input's bounding box is too large to represent");
+    if (all_in_one_plane(raw.vertices, longest))
+        return fail(Code::degenerate_input, "all input points lie in one plane: a medial skeleton needs a solid");
+
+    out.norm.origin = lo;
+    out.norm.scale = longest;
+    for (Vec3& p : raw.vertices) p = out.norm.to_internal(p);
+
+    if (!cloud) {
+        // drop zero-area triangles (they carry no surface and no winding number)
+        std::vector<Tri> kept;
+        kept.reserve(raw.triangles.size());
+        for (const Tri& t : raw.triangles) {
+            const Vec3& a = raw.vertices[t[0]];
+            const double area2 = (raw.vertices[t[1]] - a).cross(raw.vertices[t[2]] - a).norm();
+            if (area2 > 1e-14) kept.push_back(t);
+        }
+        out.dropped_triangles = raw.triangles.size() - kept.size();
+        if (kept.empty()) return fail(Code::degenerate_input, "every triangle has zero area");
+        raw.triangles = std::move(kept);
+        // an inward-facing mesh has negative signed volume: flip it so inside means w > 1/2
+        if (signed_volume(raw) < 0) {
+            for (Tri& t : raw.triangles) std::swap(t[1], t[2]);
+            out.flipped = true;
+        }
+    }
+    out.mesh = std::move(raw);
+    out.normals = std::move(normals);
+    out.point_cloud = cloud;
+    return Status::success();
+}
+
+}  // namespace ca

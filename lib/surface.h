@@ -1,0 +1,33 @@
+// surface.h: the validated input surface in internal units. The caller's coordinates are mapped
+// to the unit cube (min corner at 0, longest bbox side 1: the paper's convention, in which the
+// default delta = 0.02 is defined); every result is mapped back with `Normalization`.
+#pragma once
+#include "common.h"
+
+namespace ca {
+
+struct Normalization {
+    Vec3 origin = Vec3::Zero();   // bbox min corner of the input (caller's units)
+    double scale = 1;             // longest bbox side (caller's units)
+    Vec3 to_internal(const Vec3& p) const { return (p - origin) / scale; }
+    Vec3 to_user(const Vec3& p) const { return origin + p * scale; }
+};
+
+struct Surface {
+    Mesh mesh;                    // internal units; empty triangles for a point cloud
+    std::vector<Vec3> normals;    // point clouds: unit outward normals, one per vertex
+    bool point_cloud = false;
+    bool flipped = false;         // the mesh faced inward and was flipped
+    size_t dropped_triangles = 0; // zero-area triangles ignored
+    Normalization norm;
+};
+
+// Validates raw caller data (finite coordinates, indices in range, non-degenerate, not all in
+// one plane, unit normals for point clouds) and normalises it. `mesh.triangles` empty means a
+// point cloud, which needs `normals` (one per vertex). Takes its arguments by value (moved in).
+Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out);
+
+// Axis-aligned bounding box of points (min, max); empty input gives (0, 0).
+std::pair<Vec3, Vec3> bounding_box(const std::vector<Vec3>& pts);
+
+}  // namespace ca

@@ -1,0 +1,35 @@
+// winding.h: inside/outside by the generalised winding number w(q) = sum_f Omega_f(q) / 4pi
+// (Jacobson et al. 2013), made O(log F) per query by the hierarchical approximation of
+// Barill et al. 2018 (BVH over triangles; far clusters replaced by a dipole (+ quadrupole)
+// expansion; exact near the query). Works for open meshes, holes, soups. Queries are const
+// and safe from several threads at once.
+#pragma once
+#include "common.h"
+#include <memory>
+
+namespace ca {
+
+class WindingNumber {
+public:
+    // `beta` is Barill's accuracy parameter: a cluster of radius r at distance d is expanded
+    // when d > beta * r (2 is their default).
+    explicit WindingNumber(const Mesh& mesh, double beta = 2.0);
+    ~WindingNumber();
+    WindingNumber(WindingNumber&&) noexcept;
+    WindingNumber& operator=(WindingNumber&&) noexcept;
+
+    double operator()(const Vec3& q) const;                 // hierarchical approximation
+    bool inside(const Vec3& q) const { return (*this)(q) > 0.5; }
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+// Exact O(F) reference (Van Oosterom-Strackee solid angle per triangle); for tests.
+double winding_number_brute_force(const Mesh& mesh, const Vec3& q);
+
+// Sum of signed tetrahedron volumes (origin, triangle). Negative for an inward-facing closed mesh.
+double signed_volume(const Mesh& mesh);
+
+}  // namespace ca
