@@ -53,12 +53,24 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out) {
         }
     }
 
-    auto [lo, hi] = bounding_box(raw.vertices);
+    // the shape is what the triangles use (a point cloud: every point)
+    std::vector<Vec3> used;
+    if (cloud) {
+        used = raw.vertices;
+    } else {
+        std::vector<uint8_t> referenced(nv, 0);
+        for (const Tri& t : raw.triangles)
+            for (uint32_t v : t) referenced[v] = 1;
+        for (size_t i = 0; i < nv; ++i)
+            if (referenced[i]) used.push_back(raw.vertices[i]);
+        if (used.empty()) return fail(Code::degenerate_input, "the mesh has no triangles");
+    }
+    auto [lo, hi] = bounding_box(used);
     const double longest = (hi - lo).maxCoeff();
     if (!(longest > 0)) return fail(Code::degenerate_input, "all input points coincide");
     if (!std::isfinite(longest))
         return fail(Code::invalid_input, "the input's bounding box is too large to represent");
-    if (all_in_one_plane(raw.vertices, longest))
+    if (all_in_one_plane(used, longest))
         return fail(Code::degenerate_input, "all input points lie in one plane: a medial skeleton needs a solid");
 
     out.norm.origin = lo;

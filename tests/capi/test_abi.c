@@ -1,0 +1,339 @@
+/* test_abi.c: tests of the C ABI, compiled as C99: versions, NULL pointers, struct sizes, bad
+ * input (NaN, out-of-range index, empty, flat, too few distinct points), uncoverable samples,
+ * copy-out capacity, cancellation and progress, the custom allocator, determinism, and a
+ * known answer (the balls of a box lie on its medial axis). */
+#include "coverage_axis.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int failures = 0, checks = 0;
+#define CHECK(cond)                                                                  \
+    do {                                                                             \
+        ++checks;                                                                    \
+        if (!(cond)) {                                                               \
+            ++failures;                                                              \
+            fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond); \
+        }                                                                            \
+    } while (0)
+
+/* a 2 x 1 x 1 box, outward-facing */
+static const double box_v[] = {0, 0, 0, 2, 0, 0, 2, 1, 0, 0, 1, 0, 0, 0, 1, 2, 0, 1, 2, 1, 1, 0, 1, 1};
+static const uint32_t box_f[] = {0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
+                                 1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7};
+
+static ca_surface_view box_view(void) {
+    ca_surface_view v;
+    ca_surface_view_init(&v);
+    v.positions = box_v;
+    v.vertex_count = 8;
+    v.triangles = box_f;
+    v.triangle_count = 12;
+    return v;
+}
+
+static ca_candidate_options small_options(void) {
+    ca_candidate_options o;
+    ca_candidate_options_init(&o);
+    o.cover_samples = 400;
+    o.voronoi_samples = 800;
+    return o;
+}
+
+static void test_versions(void) {
+    CHECK(ca_version() == CA_VERSION_NUMBER);
+    CHECK(ca_abi_version() == CA_ABI_VERSION);
+    CHECK(strncmp(ca_status_string(CA_ERROR_NULL_POINTER), "CA_ERROR_NULL_POINTER", 21) == 0);
+    CHECK(strcmp(ca_status_string(9999), "unknown ca_status") == 0);
+    /* pinned values */
+    CHECK(CA_OK == 0 && CA_ERROR_INVALID_INPUT == 4 && CA_ERROR_UNCOVERABLE == 6 && CA_ERROR_NO_CANDIDATES == 13);
+}
+
+static void test_null_and_sizes(void) {
+    ca_context* ctx = NULL;
+    ca_candidate_set* set = (ca_candidate_set*)1;
+    ca_surface_view v = box_view();
+    ca_candidate_options o = small_options();
+    ca_context_desc d;
+
+    CHECK(ca_context_create(NULL, NULL) == CA_ERROR_NULL_POINTER);
+    ca_context_desc_init(&d);
+    d.struct_size = 3;
+    CHECK(ca_context_create(&d, &ctx) == CA_ERROR_STRUCT_SIZE && ctx == NULL);
+    CHECK(ca_context_create(NULL, &ctx) == CA_OK && ctx != NULL);
+
+    CHECK(ca_candidates(NULL, &v, &o, &set) == CA_ERROR_NULL_POINTER);
+    CHECK(set == NULL);
+    CHECK(ca_candidates(ctx, NULL, &o, &set) == CA_ERROR_NULL_POINTER && set == NULL);
+    CHECK(strstr(ca_context_last_error(ctx), "surface") != NULL);
+    CHECK(ca_candidates(ctx, &v, &o, NULL) == CA_ERROR_NULL_POINTER);
+    v.positions = NULL;
+    CHECK(ca_candidates(ctx, &v, &o, &set) == CA_ERROR_NULL_POINTER && set == NULL);
+    v = box_view();
+    v.struct_size = 8;
+    CHECK(ca_candidates(ctx, &v, &o, &set) == CA_ERROR_STRUCT_SIZE && set == NULL);
+    v = box_view();
+    o.struct_size = sizeof(o) + 8;
+    CHECK(ca_candidates(ctx, &v, &o, &set) == CA_ERROR_STRUCT_SIZE && set == NULL);
+    CHECK(strstr(ca_context_last_error(ctx), "struct_size") != NULL);
+    o = small_options();
+    o.generator = 7;
+    CHECK(ca_candidates(ctx, &v, &o, &set) == CA_ERROR_INVALID_ARGUMENT && set == NULL);
+    v.position_stride = 8; /* smaller than a vertex */
+    o = small_options();
+    CHECK(ca_candidates(ctx, &v, &o, &set) == CA_ERROR_INVALID_ARGUMENT && set == NULL);
+
+    CHECK(ca_select(ctx, NULL, NULL, (ca_selection**)&set) == CA_ERROR_NULL_POINTER);
+    CHECK(ca_connect(ctx, NULL, NULL, NULL, NULL) == CA_ERROR_NULL_POINTER);
+    /* getters and destroy accept NULL */
+    CHECK(ca_candidate_set_count(NULL) == 0 && ca_skeleton_centers(NULL) == NULL);
+    ca_candidate_set_destroy(NULL);
+    ca_selection_destroy(NULL);
+    ca_skeleton_destroy(NULL);
+    ca_context_destroy(ctx);
+}
+
+static ca_status run_candidates(ca_context* ctx, const double* pos, size_t nv, const uint32_t* tri, size_t nt,
+                                const double* normals, ca_candidate_set** out) {
+    ca_surface_view v;
+    ca_candidate_options o = small_options();
+    ca_surface_view_init(&v);
+    v.positions = pos;
+    v.vertex_count = nv;
+    v.triangles = tri;
+    v.triangle_count = nt;
+    v.normals = normals;
+    return ca_candidates(ctx, &v, &o, out);
+}
+
+static void test_bad_input(void) {
+    ca_context* ctx = NULL;
+    ca_candidate_set* set = NULL;
+    double v[24];
+    uint32_t f[36];
+    double pts[300], nrm[300];
+    int i;
+    CHECK(ca_context_create(NULL, &ctx) == CA_OK);
+
+    memcpy(v, box_v, sizeof v);
+    memcpy(f, box_f, sizeof f);
+    v[7] = NAN;
+    CHECK(run_candidates(ctx, v, 8, f, 12, NULL, &set) == CA_ERROR_INVALID_INPUT && set == NULL);
+    CHECK(strstr(ca_context_last_error(ctx), "vertex 2") != NULL);
+    v[7] = INFINITY;
+    CHECK(run_candidates(ctx, v, 8, f, 12, NULL, &set) == CA_ERROR_INVALID_INPUT && set == NULL);
+
+    memcpy(v, box_v, sizeof v);
+    f[17] = 900;
+    CHECK(run_candidates(ctx, v, 8, f, 12, NULL, &set) == CA_ERROR_INVALID_INPUT && set == NULL);
+    CHECK(strstr(ca_context_last_error(ctx), "triangle 5 references vertex 900 of 8") != NULL);
+
+    /* empty mesh */
+    CHECK(run_candidates(ctx, v, 0, NULL, 0, NULL, &set) == CA_ERROR_DEGENERATE_INPUT && set == NULL);
+    /* every triangle degenerate */
+    memset(f, 0, sizeof f);
+    CHECK(run_candidates(ctx, box_v, 8, f, 12, NULL, &set) == CA_ERROR_DEGENERATE_INPUT && set == NULL);
+    /* flat: the bottom face of the box only */
+    CHECK(run_candidates(ctx, box_v, 8, box_f, 2, NULL, &set) == CA_ERROR_DEGENERATE_INPUT && set == NULL);
+    CHECK(strstr(ca_context_last_error(ctx), "plane") != NULL);
+
+    /* point cloud without normals */
+    CHECK(run_candidates(ctx, box_v, 8, NULL, 0, NULL, &set) == CA_ERROR_INVALID_INPUT && set == NULL);
+    /* point cloud: 100 points that are copies of 4 distinct points (a tetrahedron) */
+    for (i = 0; i < 100; ++i) {
+        const int k = i % 4;
+        pts[3 * i] = k == 1; pts[3 * i + 1] = k == 2; pts[3 * i + 2] = k == 3;
+        nrm[3 * i] = k == 1 ? 1 : -0.5; nrm[3 * i + 1] = k == 2 ? 1 : -0.5; nrm[3 * i + 2] = k == 3 ? 1 : -0.5;
+    }
+    CHECK(run_candidates(ctx, pts, 100, NULL, 0, nrm, &set) == CA_ERROR_DEGENERATE_INPUT && set == NULL);
+    CHECK(strstr(ca_context_last_error(ctx), "5") != NULL);
+    /* zero normal */
+    nrm[0] = nrm[1] = nrm[2] = 0;
+    CHECK(run_candidates(ctx, pts, 100, NULL, 0, nrm, &set) == CA_ERROR_INVALID_INPUT && set == NULL);
+    ca_context_destroy(ctx);
+}
+
+static void test_arrays_uncoverable_and_copy(void) {
+    ca_context* ctx = NULL;
+    ca_candidate_set* set = NULL;
+    ca_selection* sel = NULL;
+    ca_select_options so;
+    ca_select_stats stats;
+    /* samples on a line; two balls cover the first three, the last is far away */
+    const double samples[] = {0, 0, 0, 1, 0, 0, 2, 0, 0, 10, 0, 0};
+    const double centers[] = {0.5, 0, 0, 2, 0, 0};
+    const double radii[] = {0.6, 0.1};
+    double out_c[6], out_r[2];
+    size_t count = 0;
+    CHECK(ca_context_create(NULL, &ctx) == CA_OK);
+    CHECK(ca_candidates_from_arrays(ctx, samples, 4, 0, centers, 0, radii, 0, 2, 1.0, &set) == CA_OK);
+    CHECK(ca_candidate_set_count(set) == 2 && ca_candidate_set_sample_count(set) == 4);
+    CHECK(fabs(ca_candidate_set_reference_length(set) - 1.0) < 1e-12);
+    CHECK(fabs(ca_candidate_set_centers(set)[3] - 2.0) < 1e-12 && fabs(ca_candidate_set_radii(set)[0] - 0.6) < 1e-12);
+
+    CHECK(ca_candidate_set_copy(set, out_c, out_r, 1, &count) == CA_ERROR_BUFFER_TOO_SMALL && count == 2);
+    CHECK(ca_candidate_set_copy(set, out_c, out_r, 2, &count) == CA_OK && count == 2 && fabs(out_r[1] - 0.1) < 1e-12);
+
+    ca_select_options_init(&so);
+    so.delta = 0.0;
+    CHECK(ca_select(ctx, set, &so, &sel) == CA_ERROR_UNCOVERABLE && sel == NULL);
+    CHECK(strstr(ca_context_last_error(ctx), "1 of 4") != NULL);
+    so.skip_uncoverable = 1;
+    CHECK(ca_select(ctx, set, &so, &sel) == CA_OK && sel != NULL);
+    CHECK(ca_selection_count(sel) == 2);
+    CHECK(ca_selection_uncovered_count(sel) == 1 && ca_selection_uncovered(sel)[0] == 3);
+    stats.struct_size = 5;
+    CHECK(ca_selection_stats(sel, &stats) == CA_ERROR_STRUCT_SIZE);
+    stats.struct_size = sizeof stats;
+    CHECK(ca_selection_stats(sel, &stats) == CA_OK && stats.proven_optimal == 1 && stats.objective == 2);
+    ca_selection_destroy(sel);
+    sel = NULL;
+
+    /* bad options */
+    ca_select_options_init(&so);
+    so.delta = -1;
+    CHECK(ca_select(ctx, set, &so, &sel) == CA_ERROR_INVALID_ARGUMENT && sel == NULL);
+    ca_select_options_init(&so);
+    so.solver = 42;
+    CHECK(ca_select(ctx, set, &so, &sel) == CA_ERROR_INVALID_ARGUMENT && sel == NULL);
+    /* NaN radius */
+    {
+        const double bad_r[] = {NAN, 0.1};
+        ca_candidate_set* bad = NULL;
+        CHECK(ca_candidates_from_arrays(ctx, samples, 4, 0, centers, 0, bad_r, 0, 2, 1.0, &bad) == CA_ERROR_INVALID_INPUT && bad == NULL);
+    }
+    ca_candidate_set_destroy(set);
+    ca_context_destroy(ctx);
+}
+
+static int32_t cancel_at_second_call(void* user, const char* stage, double f) {
+    int* calls = (int*)user;
+    (void)stage;
+    (void)f;
+    return ++*calls >= 2;
+}
+
+static void test_cancel(void) {
+    ca_context* ctx = NULL;
+    ca_candidate_set* set = NULL;
+    ca_surface_view v = box_view();
+    ca_candidate_options o = small_options();
+    ca_context_desc d;
+    int calls = 0;
+
+    CHECK(ca_context_create(NULL, &ctx) == CA_OK);
+    ca_context_request_cancel(ctx);
+    CHECK(ca_candidates(ctx, &v, &o, &set) == CA_ERROR_CANCELLED && set == NULL);
+    ca_context_clear_cancel(ctx);
+    CHECK(ca_candidates(ctx, &v, &o, &set) == CA_OK && set != NULL);
+    ca_candidate_set_destroy(set);
+    set = NULL;
+    ca_context_destroy(ctx);
+
+    ca_context_desc_init(&d);
+    d.progress = cancel_at_second_call;
+    d.progress_user = &calls;
+    CHECK(ca_context_create(&d, &ctx) == CA_OK);
+    CHECK(ca_candidates(ctx, &v, &o, &set) == CA_ERROR_CANCELLED && set == NULL);
+    CHECK(calls >= 2);
+    ca_context_destroy(ctx);
+}
+
+static long live_blocks = 0, total_blocks = 0;
+static void* counting_alloc(void* user, size_t n) {
+    (void)user;
+    ++live_blocks;
+    ++total_blocks;
+    return malloc(n);
+}
+static void counting_free(void* user, void* p) {
+    (void)user;
+    if (p) --live_blocks;
+    free(p);
+}
+
+/* The whole pipeline on the box: known answer and determinism. */
+static void test_box_pipeline(void) {
+    ca_context* ctx = NULL;
+    ca_candidate_set* set = NULL;
+    ca_selection* sel = NULL;
+    ca_skeleton* sk = NULL;
+    ca_surface_view v = box_view();
+    ca_candidate_options o = small_options();
+    ca_skeleton_stats ks;
+    ca_context_desc d;
+    size_t i, n;
+    const double* c;
+    const double* r;
+    double first[3 * 64];
+    size_t first_n;
+
+    ca_context_desc_init(&d);
+    d.alloc = counting_alloc;
+    d.free = counting_free;
+    CHECK(ca_context_create(&d, &ctx) == CA_OK);
+    CHECK(ca_candidates(ctx, &v, &o, &set) == CA_OK);
+    CHECK(ca_candidate_set_count(set) > 10);
+    CHECK(ca_select(ctx, set, NULL, &sel) == CA_OK);
+    CHECK(ca_connect(ctx, set, sel, NULL, &sk) == CA_OK);
+    n = ca_skeleton_vertex_count(sk);
+    CHECK(n >= 2 && n <= 64);
+    c = ca_skeleton_centers(sk);
+    r = ca_skeleton_radii(sk);
+    for (i = 0; i < n; ++i) {
+        /* inside the box and a medial ball: its radius is its distance to the nearest face
+           (up to the sampling: Voronoi radii are distances to the nearest sample) */
+        const double x = c[3 * i], y = c[3 * i + 1], z = c[3 * i + 2];
+        double dmin = x;
+        if (2 - x < dmin) dmin = 2 - x;
+        if (y < dmin) dmin = y;
+        if (1 - y < dmin) dmin = 1 - y;
+        if (z < dmin) dmin = z;
+        if (1 - z < dmin) dmin = 1 - z;
+        CHECK(dmin > 0);
+        CHECK(r[i] >= dmin - 1e-9 && r[i] <= dmin + 0.1);
+    }
+    ks.struct_size = sizeof ks;
+    CHECK(ca_skeleton_stats_get(sk, &ks) == CA_OK && ks.vertices == n && ks.components >= 1);
+    first_n = n;
+    memcpy(first, c, 3 * n * sizeof(double));
+
+    /* a selection from another set is refused */
+    {
+        ca_candidate_set* other = NULL;
+        ca_skeleton* bad = NULL;
+        CHECK(ca_candidates(ctx, &v, &o, &other) == CA_OK);
+        CHECK(ca_connect(ctx, other, sel, NULL, &bad) == CA_ERROR_INVALID_ARGUMENT && bad == NULL);
+        ca_candidate_set_destroy(other);
+    }
+    ca_skeleton_destroy(sk);
+    ca_selection_destroy(sel);
+    ca_candidate_set_destroy(set);
+    CHECK(total_blocks > 0 && live_blocks == 0);
+
+    /* the same seed gives the same skeleton */
+    set = NULL; sel = NULL; sk = NULL;
+    CHECK(ca_candidates(ctx, &v, &o, &set) == CA_OK && ca_select(ctx, set, NULL, &sel) == CA_OK &&
+          ca_connect(ctx, set, sel, NULL, &sk) == CA_OK);
+    CHECK(ca_skeleton_vertex_count(sk) == first_n);
+    if (ca_skeleton_vertex_count(sk) == first_n)
+        CHECK(memcmp(first, ca_skeleton_centers(sk), 3 * first_n * sizeof(double)) == 0);
+    ca_skeleton_destroy(sk);
+    ca_selection_destroy(sel);
+    ca_candidate_set_destroy(set);
+    CHECK(live_blocks == 0);
+    ca_context_destroy(ctx);
+}
+
+int main(void) {
+    test_versions();
+    test_null_and_sizes();
+    test_bad_input();
+    test_arrays_uncoverable_and_copy();
+    test_cancel();
+    test_box_pipeline();
+    printf("test_abi: %d passed, %d failed\n", checks - failures, failures);
+    return failures ? 1 : 0;
+}
