@@ -1,0 +1,160 @@
+// winding.cpp: generalised winding numbers. Exact per-triangle solid angles (Van Oosterom-
+// Strackee, atan2 form), and the hierarchical approximation of Barill et al. 2018: every BVH
+// node stores a Taylor expansion (dipole, first- and second-order moments) of its triangles'
+// solid-angle field about its area-weighted centroid; a query uses it when it is farther than
+// beta * radius from that centre and recurses otherwise (leaves are summed exactly).
+#include "winding.h"
+#include "bvh.h"
+#include <Eigen/Geometry>
+#include <cmath>
+
+namespace ca {
+namespace {
+
+constexpr double kFourPi = 4.0 * 3.14159265358979323846;
+
+// Signed solid angle of triangle (a, b, c) seen from q; positive when q is behind the triangle
+// (on the side opposite to its right-handed normal). Degenerate triangles give 0, never NaN.
+double solid_angle(const Vec3& q, const Vec3& a0, const Vec3& b0, const Vec3& c0) {
+    const Vec3 a = a0 - q, b = b0 - q, c = c0 - q;
+    const double la = a.norm(), lb = b.norm(), lc = c.norm();
+    const double num = a.dot(b.cross(c));
+    if (num == 0) return 0.0;   // coplanar with q (or zero area): atan2(0, den < 0) would give 2 pi
+    const double den = la * lb * lc + a.dot(b) * lc + a.dot(c) * lb + b.dot(c) * la;
+    return 2.0 * std::atan2(num, den);
+}
+
+// Far-field expansion of one node's solid-angle field (Barill et al. 2018, eq. 6-8), with
+// A_t = triangle area * unit normal, d_t = centroid_t - centre, S_t = E[(x - centre)(x - centre)^T]
+// over triangle t:  N = sum A_t,  M = sum A_t d_t^T,  Q[i] = sum A_t,i S_t.
+struct Expansion {
+    Vec3 centre = Vec3::Zero();
+    double radius = 0;
+    Vec3 N = Vec3::Zero();
+    Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
+    Eigen::Matrix3d Q[3] = {Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
+
+    // Solid angle at q (not yet divided by 4 pi). With r = centre - q the kernel is
+    // K(r) = r / |r|^3 and the three terms are K.N + J:M + 1/2 H:Q.
+    double eval(const Vec3& q) const {
+        const Vec3 r = centre - q;
+        const double r2 = r.squaredNorm();
+        const double inv = 1.0 / std::sqrt(r2), inv3 = inv * inv * inv, inv5 = inv3 * inv * inv;
+        const double inv7 = inv5 * inv * inv;
+        const double t1 = N.dot(r) * inv3;
+        const double t2 = M.trace() * inv3 - 3.0 * r.dot(M * r) * inv5;
+        double rrrQ = 0, diagQ = 0, trQ = 0;
+        for (int i = 0; i < 3; ++i) {
+            const Vec3 Qr = Q[i] * r;
+            rrrQ += r[i] * r.dot(Qr);
+            diagQ += Qr[i];
+            trQ += r[i] * Q[i].trace();
+        }
+        const double t3 = 0.5 * (15.0 * rrrQ * inv7 - 3.0 * (2.0 * diagQ + trQ) * inv5);
+        return t1 + t2 + t3;
+    }
+};
+
+}  // namespace
+
+struct WindingNumber::Impl {
+    double beta = 2.0;
+    detail::Bvh bvh;
+    std::vector<Expansion> exp;              // one per BVH node
+    std::vector<std::array<Vec3, 3>> tris;   // triangle corners, in bvh.order
+};
+
+WindingNumber::WindingNumber(const Mesh& mesh, double beta) : impl_(std::make_unique<Impl>()) {
+    Impl& m = *impl_;
+    m.beta = (beta >= 0 && std::isfinite(beta)) ? beta : 2.0;
+    m.bvh = detail::build_bvh(mesh, detail::valid_triangles(mesh));
+    m.tris.reserve(m.bvh.order.size());
+    for (uint32_t t : m.bvh.order) {
+        const Tri& f = mesh.triangles[t];
+        m.tris.push_back({mesh.vertices[f[0]], mesh.vertices[f[1]], mesh.vertices[f[2]]});
+    }
+    // Per-triangle vector area, centroid and covariance about the centroid.
+    const size_t nt = m.tris.size();
+    std::vector<Vec3> area(nt), cen(nt);
+    std::vector<Eigen::Matrix3d> cov(nt);
+    for (size_t i = 0; i < nt; ++i) {
+        const auto& v = m.tris[i];
+        area[i] = 0.5 * (v[1] - v[0]).cross(v[2] - v[0]);
+        cen[i] = (v[0] + v[1] + v[2]) / 3.0;
+        cov[i].setZero();
+        for (const Vec3& p : v) cov[i] += (p - cen[i]) * (p - cen[i]).transpose();
+        cov[i] /= 12.0;
+    }
+    // Each node sums over its own triangles: O(F log F) overall.
+    m.exp.resize(m.bvh.nodes.size());
+    for (size_t n = 0; n < m.bvh.nodes.size(); ++n) {
+        const detail::BvhNode& node = m.bvh.nodes[n];
+        Expansion& e = m.exp[n];
+        double wsum = 0;
+        Vec3 csum = Vec3::Zero();
+        for (uint32_t i = node.begin; i < node.end; ++i) {
+            const double a = area[i].norm();
+            wsum += a;
+            csum += a * cen[i];
+        }
+        e.centre = wsum > 0 ? Vec3(csum / wsum) : Vec3(0.5 * (node.lo + node.hi));
+        for (uint32_t i = node.begin; i < node.end; ++i) {
+            const Vec3 d = cen[i] - e.centre;
+            const Eigen::Matrix3d S = d * d.transpose() + cov[i];
+            e.N += area[i];
+            e.M += area[i] * d.transpose();
+            for (int k = 0; k < 3; ++k) e.Q[k] += area[i][k] * S;
+            for (const Vec3& p : m.tris[i]) e.radius = std::max(e.radius, (p - e.centre).norm());
+        }
+    }
+}
+
+WindingNumber::~WindingNumber() = default;
+WindingNumber::WindingNumber(WindingNumber&&) noexcept = default;
+WindingNumber& WindingNumber::operator=(WindingNumber&&) noexcept = default;
+
+double WindingNumber::operator()(const Vec3& q) const {
+    if (!impl_ || impl_->bvh.nodes.empty()) return 0.0;
+    const Impl& m = *impl_;
+    double omega = 0;
+    uint32_t stack[128];   // DFS with a median-split tree: depth + 1 entries at most
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const uint32_t n = stack[--top];
+        const Expansion& e = m.exp[n];
+        if ((q - e.centre).squaredNorm() > m.beta * m.beta * e.radius * e.radius) {
+            omega += e.eval(q);
+            continue;
+        }
+        const detail::BvhNode& node = m.bvh.nodes[n];
+        if (node.leaf()) {
+            for (uint32_t i = node.begin; i < node.end; ++i)
+                omega += solid_angle(q, m.tris[i][0], m.tris[i][1], m.tris[i][2]);
+        } else {
+            stack[top++] = node.left;
+            stack[top++] = node.right;
+        }
+    }
+    return omega / kFourPi;
+}
+
+double winding_number_brute_force(const Mesh& mesh, const Vec3& q) {
+    double omega = 0;
+    for (const Tri& f : mesh.triangles) {
+        if (!detail::triangle_ok(mesh, f)) continue;
+        omega += solid_angle(q, mesh.vertices[f[0]], mesh.vertices[f[1]], mesh.vertices[f[2]]);
+    }
+    return omega / kFourPi;
+}
+
+double signed_volume(const Mesh& mesh) {
+    double v = 0;
+    for (const Tri& f : mesh.triangles) {
+        if (!detail::triangle_ok(mesh, f)) continue;
+        v += mesh.vertices[f[0]].dot(mesh.vertices[f[1]].cross(mesh.vertices[f[2]]));
+    }
+    return v / 6.0;
+}
+
+}  // namespace ca
