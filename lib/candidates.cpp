@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 namespace ca {
 
@@ -53,6 +54,15 @@ Status voronoi_vertices(const std::vector<Vec3>& pts, const Monitor& monitor, Ac
         if (!circumcenter(pts[t[0]], pts[t[1]], pts[t[2]], pts[t[3]], c) || !in_box(c, lo, hi)) continue;
         raw.push_back({c, (c - pts[t[0]]).norm()});
         raw_tets.push_back(t);
+    }
+    // A Voronoi ball is empty: its radius is the distance to the nearest sample. Near-flat
+    // tetrahedra (joggled or co-spherical samples) can give circumradii larger than that, i.e.
+    // balls that stick out of the shape; clamp them.
+    PointTree sample_tree(pts);
+    for (Ball& b : raw) {
+        size_t idx;
+        double d2;
+        if (sample_tree.nearest(b.center, 1, &idx, &d2) == 1) b.radius = std::min(b.radius, std::sqrt(d2));
     }
     std::vector<Vec3> centers(raw.size());
     for (size_t i = 0; i < raw.size(); ++i) centers[i] = raw[i].center;

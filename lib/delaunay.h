@@ -10,7 +10,7 @@ namespace ca {
 
 using Tet = std::array<uint32_t, 4>;
 
-// Delaunay tetrahedra (indices into pts). Tries "d Qbb Qt", then "d Qbb Qt Qz", then "d QJ Qbb".
+// Delaunay tetrahedra (indices into pts). Tries "d QJ Qbb", then "d Qbb Qt", then "d Qbb Qt Qz".
 // Zero-volume tetrahedra (possible with Qt) are dropped. Needs >= 5 points not all coplanar;
 // remove duplicates first.
 Status delaunay_tetrahedra(const std::vector<Vec3>& pts, std::vector<Tet>& tets);
