@@ -49,7 +49,7 @@ struct Args {
 };
 
 int usage_error(const std::string& msg) {
-    std::fprintf(stderr, "coverage-axis: %s\n%s", msg.c_str(), kUsage);
+    std::fprintf(stderr, "coverage-axis: %s (see coverage-axis --help)\n", msg.c_str());
     return 2;
 }
 
@@ -151,7 +151,8 @@ std::string json_escape(const std::string& s) {
 }
 
 int library_error(ca_context* ctx, ca_status st, const char* step) {
-    std::fprintf(stderr, "coverage-axis: %s failed: %s (%s)\n", step, ca_context_last_error(ctx), ca_status_string(st));
+    const char* hint = st == CA_ERROR_UNCOVERABLE ? "; raise --delta, add candidates, or pass --skip-uncoverable" : "";
+    std::fprintf(stderr, "coverage-axis: %s failed: %s%s (%s)\n", step, ca_context_last_error(ctx), hint, ca_status_string(st));
     return 1;
 }
 

@@ -1,0 +1,94 @@
+#!/usr/bin/env bash
+# cli.sh: end-to-end tests of the command-line tool on the bundled models: outputs written and
+# consistent with the JSON summary, deterministic for a seed, clear exit codes and messages for
+# bad input, and no crash on any bundled model (poor ones included).
+# usage: cli.sh PATH/TO/coverage-axis PATH/TO/tests/data
+set -u
+tool=$1
+data=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+pass=0
+fail=0
+check() {  # check "description" command...
+  local what=$1; shift
+  if "$@"; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAILED: $what"; fi
+}
+
+# 1. a normal run: files written, JSON consistent with the .ma header
+"$tool" "$data/fox.obj" -o "$tmp/fox.ma" --obj "$tmp/fox.obj" --ply "$tmp/fox.ply" --json > "$tmp/fox.json" 2> "$tmp/err"
+check "fox run exits 0" test $? -eq 0
+check "fox .ma/.obj/.ply written" test -s "$tmp/fox.ma" -a -s "$tmp/fox.obj" -a -s "$tmp/fox.ply"
+json_field() { grep -o "\"$1\":[^,}]*" "$2" | head -1 | cut -d: -f2; }
+selected=$(json_field selected "$tmp/fox.json")
+optimal=$(json_field optimal "$tmp/fox.json")
+read -r nv ne nf < "$tmp/fox.ma"
+check "JSON 'selected' equals the .ma vertex count ($selected vs $nv)" test "$selected" = "$nv"
+check "fox cover is proven optimal" test "$optimal" = "true"
+check ".ma has nv v lines" test "$(grep -c '^v ' "$tmp/fox.ma")" -eq "$nv"
+check ".ma has ne e lines" test "$(grep -c '^e ' "$tmp/fox.ma")" -eq "$ne"
+check ".ma has nf f lines" test "$(grep -c '^f ' "$tmp/fox.ma")" -eq "$nf"
+check "JSON has per-stage times" grep -q '"time_s":{"read":[0-9.]*,"candidates":[0-9.]*,"select":[0-9.]*,"connect":[0-9.]*' "$tmp/fox.json"
+check "stderr is empty when not a terminal" test ! -s "$tmp/err"
+
+# 2. the same seed gives the same skeleton; another seed gives another sampling
+"$tool" "$data/fox.obj" -o "$tmp/fox2.ma" --quiet
+check "same seed, same skeleton" cmp -s "$tmp/fox.ma" "$tmp/fox2.ma"
+"$tool" "$data/fox.obj" -o "$tmp/fox3.ma" --quiet --seed 7
+differ() { ! cmp -s "$1" "$2"; }
+check "another seed, another skeleton" differ "$tmp/fox.ma" "$tmp/fox3.ma"
+
+# 3. units: a model scaled by 1000 gives the same skeleton scaled by 1000
+awk '/^v /{printf "v %.17g %.17g %.17g\n", $2*1000, $3*1000, $4*1000; next} {print}' "$data/fox.obj" > "$tmp/fox_big.obj"
+"$tool" "$tmp/fox_big.obj" -o "$tmp/fox_big.ma" --quiet
+check "scaled model: same number of balls" test "$(head -1 "$tmp/fox_big.ma")" = "$(head -1 "$tmp/fox.ma")"
+r_small=$(awk '/^v /{print $5; exit}' "$tmp/fox.ma")
+r_big=$(awk '/^v /{print $5; exit}' "$tmp/fox_big.ma")
+check "scaled model: radius scales ($r_small -> $r_big)" awk -v a="$r_small" -v b="$r_big" 'BEGIN{d=b-1000*a; if(d<0)d=-d; exit !(d < 1e-6*b)}'
+
+# 4. options
+"$tool" "$data/fox.obj" -o "$tmp/g.ma" --solver greedy --json > "$tmp/g.json"
+check "greedy solver runs" test $? -eq 0
+check "greedy uses at least as many balls as the optimum" test "$(json_field selected "$tmp/g.json")" -ge "$selected"
+"$tool" "$data/fox.obj" -o "$tmp/r.ma" --candidates random:3000 --skip-uncoverable --export-candidates "$tmp/cand.obj" --export-samples "$tmp/s.obj" --quiet
+check "random candidates run" test $? -eq 0
+check "exported candidates have radii" awk 'NF!=5{exit 1}' "$tmp/cand.obj"
+"$tool" "$data/fox.obj" -o "$tmp/f.ma" --surface-samples "$tmp/s.obj" --candidates "$tmp/cand.obj" --skip-uncoverable --json > "$tmp/f.json"
+check "samples and candidates from files" test "$(json_field candidates "$tmp/f.json")" -eq "$(wc -l < "$tmp/cand.obj")"
+"$tool" "$data/fox.obj" -o "$tmp/sc.ma" --scale 1.5 --skip-uncoverable --quiet
+check "scale dilation runs" test $? -eq 0
+
+# 5. bad input: clear message, documented exit code, no partial output
+expect_fail() {  # expect_fail CODE PATTERN args...
+  local code=$1 pattern=$2; shift 2
+  "$tool" "$@" > "$tmp/out" 2> "$tmp/err"
+  local got=$?
+  check "exit $code for: $*" test "$got" -eq "$code"
+  check "message matches '$pattern' for: $*" grep -qi -- "$pattern" "$tmp/err"
+  check "one-line message for: $*" test "$(wc -l < "$tmp/err")" -eq 1
+}
+expect_fail 3 "no such file\|cannot open" "$tmp/missing.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n' > "$tmp/badindex.obj"
+expect_fail 3 "out of range" "$tmp/badindex.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 nan\nf 1 2 3\nf 1 2 4\nf 1 3 4\nf 2 3 4\n' > "$tmp/nan.obj"
+expect_fail 1 "nan" "$tmp/nan.obj" -o "$tmp/nan.ma"
+check "no output after a failure" test ! -e "$tmp/nan.ma"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n' > "$tmp/flat.obj"
+expect_fail 1 "plane" "$tmp/flat.obj"
+: > "$tmp/empty.obj"
+expect_fail 3 "no vertices" "$tmp/empty.obj"
+expect_fail 2 "unknown option" "$data/fox.obj" --frobnicate 1
+expect_fail 2 "delta" "$data/fox.obj" --delta -1
+expect_fail 2 "solver" "$data/fox.obj" --solver magic
+
+# 6. every bundled model, poor ones included: a skeleton (exit 0) or a clean failure (exit 1),
+# never a crash or a hang
+for m in "$data"/*.obj; do
+  timeout 120 "$tool" "$m" -o "$tmp/m.ma" --quiet --time-limit 2 2> "$tmp/err"
+  code=$?
+  check "$(basename "$m"): exit 0 or 1 (got $code)" test "$code" -eq 0 -o "$code" -eq 1
+  if [ "$code" -eq 1 ]; then check "$(basename "$m"): one-line message" test "$(wc -l < "$tmp/err")" -eq 1; fi
+done
+
+echo "cli: $pass passed, $fail failed"
+test "$fail" -eq 0
