@@ -1,0 +1,108 @@
+// bench_common.h: helpers shared by the benchmark programs: listing model files, timing, and
+// running the whole pipeline through the C ABI on a mesh file.
+#pragma once
+#include "coverage_axis.h"
+#include "mesh_io.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <dirent.h>
+#include <string>
+#include <sys/resource.h>
+#include <vector>
+
+namespace bench {
+
+inline std::vector<std::string> list_files(const std::string& dir, const std::string& ext) {
+    std::vector<std::string> out;
+    if (DIR* d = opendir(dir.c_str())) {
+        while (dirent* e = readdir(d)) {
+            std::string n = e->d_name;
+            if (n.size() > ext.size() && n.compare(n.size() - ext.size(), ext.size(), ext) == 0) out.push_back(dir + "/" + n);
+        }
+        closedir(d);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+inline std::string stem(const std::string& path) {
+    std::string n = path.substr(path.find_last_of('/') + 1);
+    return n.substr(0, n.find_last_of('.'));
+}
+
+inline double seconds_since(std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+inline double peak_rss_mb() {
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    return double(u.ru_maxrss) / 1024.0;
+}
+
+struct PipelineRun {
+    ca_status status = CA_OK;
+    std::string message;
+    size_t samples = 0, candidates = 0, balls = 0, edges = 0, faces = 0, components = 0;
+    long betti1 = 0;
+    int optimal = 0;
+    double gap = 0, t_candidates = 0, t_select = 0, t_connect = 0;
+};
+
+inline PipelineRun run_pipeline(const caio::MeshData& mesh, const ca_candidate_options& co, const ca_select_options& so,
+                                const ca_connect_options& cop) {
+    PipelineRun r;
+    ca_context* ctx = nullptr;
+    ca_context_create(nullptr, &ctx);
+    ca_surface_view v;
+    ca_surface_view_init(&v);
+    v.positions = mesh.positions.data();
+    v.vertex_count = mesh.positions.size() / 3;
+    v.triangles = mesh.triangles.data();
+    v.triangle_count = mesh.triangles.size() / 3;
+    v.normals = mesh.normals.empty() ? nullptr : mesh.normals.data();
+    ca_candidate_set* set = nullptr;
+    ca_selection* sel = nullptr;
+    ca_skeleton* sk = nullptr;
+    auto t = std::chrono::steady_clock::now();
+    r.status = ca_candidates(ctx, &v, &co, &set);
+    r.t_candidates = seconds_since(t);
+    if (r.status == CA_OK) {
+        r.samples = ca_candidate_set_sample_count(set);
+        r.candidates = ca_candidate_set_count(set);
+        t = std::chrono::steady_clock::now();
+        r.status = ca_select(ctx, set, &so, &sel);
+        r.t_select = seconds_since(t);
+    }
+    if (r.status == CA_OK) {
+        ca_select_stats ss;
+        ss.struct_size = sizeof ss;
+        ca_selection_stats(sel, &ss);
+        r.optimal = ss.proven_optimal;
+        r.gap = ss.gap;
+        r.balls = ca_selection_count(sel);
+        t = std::chrono::steady_clock::now();
+        r.status = ca_connect(ctx, set, sel, &cop, &sk);
+        r.t_connect = seconds_since(t);
+    }
+    if (r.status == CA_OK) {
+        ca_skeleton_stats ks;
+        ks.struct_size = sizeof ks;
+        ca_skeleton_stats_get(sk, &ks);
+        r.edges = ks.edges;
+        r.faces = ks.faces;
+        r.components = ks.components;
+        r.betti1 = long(ks.betti1);
+    } else {
+        r.message = ca_context_last_error(ctx);
+    }
+    ca_skeleton_destroy(sk);
+    ca_selection_destroy(sel);
+    ca_candidate_set_destroy(set);
+    ca_context_destroy(ctx);
+    return r;
+}
+
+}  // namespace bench

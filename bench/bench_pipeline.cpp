@@ -1,0 +1,95 @@
+// bench_pipeline.cpp: the whole pipeline at the defaults on every mesh of <data>/meshes/paper:
+// |S|, |P|, |V|, proven optimal?, gap, time per stage. Also the two Coverage Axis reference
+// instances (the reference code's own samples and candidates) against their known optima.
+// usage: bench_pipeline [DATA_ROOT]   (default ../shared/data; skipped when missing)
+#include "bench_common.h"
+
+#include <cmath>
+
+int main(int argc, char** argv) {
+    const std::string root = argc > 1 ? argv[1] : "../shared/data";
+    const auto models = bench::list_files(root + "/meshes/paper", ".obj");
+    if (models.empty()) {
+        std::printf("bench_pipeline: no models under %s/meshes/paper, skipped\n", root.c_str());
+        return 0;
+    }
+    ca_candidate_options co;
+    ca_candidate_options_init(&co);
+    ca_select_options so;
+    ca_select_options_init(&so);
+    ca_connect_options cop;
+    ca_connect_options_init(&cop);
+
+    std::printf("\n## Pipeline at the defaults (|S| 1500, Voronoi candidates of 4000 samples, delta 0.02, exact cover, power connection)\n\n");
+    std::printf("| model | tris | |S| | |P| | |V| | optimal | gap %% | candidates s | select s | connect s | total s |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+    double sum = 0, worst = 0;
+    int n_opt = 0, n = 0;
+    for (const std::string& path : models) {
+        caio::MeshData mesh;
+        std::string err;
+        if (!caio::read_mesh(path, mesh, err)) { std::printf("| %s | read failed: %s |\n", bench::stem(path).c_str(), err.c_str()); continue; }
+        bench::PipelineRun r = bench::run_pipeline(mesh, co, so, cop);
+        if (r.status != CA_OK) {
+            std::printf("| %s | %zu | failed: %s |\n", bench::stem(path).c_str(), mesh.triangles.size() / 3, r.message.c_str());
+            continue;
+        }
+        const double total = r.t_candidates + r.t_select + r.t_connect;
+        sum += total;
+        worst = std::max(worst, total);
+        n_opt += r.optimal;
+        ++n;
+        std::printf("| %s | %zu | %zu | %zu | %zu | %s | %.2f | %.3f | %.3f | %.3f | %.3f |\n", bench::stem(path).c_str(),
+                    mesh.triangles.size() / 3, r.samples, r.candidates, r.balls, r.optimal ? "yes" : "no", 100 * r.gap,
+                    r.t_candidates, r.t_select, r.t_connect, total);
+    }
+    std::printf("\n%d models, %d proven optimal; pipeline mean %.3f s, max %.3f s; peak RSS %.0f MB\n", n, n_opt,
+                n ? sum / n : 0.0, worst, bench::peak_rss_mb());
+
+    // Reference instances: the reference implementation's samples and candidates.
+    struct Ref { const char* mesh; const char* samples; const char* candidates; double delta; int known; };
+    const Ref refs[] = {
+        {"01Ants-12_mesh.off", "01Ants-12_mesh_samples_2000.obj", "01Ants-12_mesh_VD.txt", 0.02, 58},
+        {"01Ants-12_mesh.off", "01Ants-12_mesh_samples_2000.obj", "01Ants-12_mesh_VD.txt", 0.025, 50},
+        {"01Ants-27.off", "01Ants-27_samples_1500.obj", "01Ants-27_VD.txt", 0.03, 41},
+    };
+    const std::string dir = root + "/reference/coverage_axis/";
+    std::printf("\n## Reference instances (samples and candidates of the reference code)\n\n");
+    std::printf("| instance | delta | |S| x |P| | known optimum | ours | proven optimal | select s |\n|---|---|---|---|---|---|---|\n");
+    for (const Ref& ref : refs) {
+        caio::MeshData mesh;
+        std::vector<double> s, r_unused, c, r;
+        std::string err;
+        if (!caio::read_mesh(dir + ref.mesh, mesh, err) || !caio::read_points(dir + ref.samples, s, r_unused, err) ||
+            !caio::read_points(dir + ref.candidates, c, r, err)) {
+            std::printf("| %s | missing: %s |\n", ref.mesh, err.c_str());
+            continue;
+        }
+        double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+        for (size_t i = 0; i < mesh.positions.size(); ++i) {
+            lo[i % 3] = std::min(lo[i % 3], mesh.positions[i]);
+            hi[i % 3] = std::max(hi[i % 3], mesh.positions[i]);
+        }
+        const double longest = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+        ca_context* ctx = nullptr;
+        ca_context_create(nullptr, &ctx);
+        ca_candidate_set* set = nullptr;
+        ca_selection* sel = nullptr;
+        ca_candidates_from_arrays(ctx, s.data(), s.size() / 3, 0, c.data(), 0, r.data(), 0, r.size(), longest, &set);
+        ca_select_options o;
+        ca_select_options_init(&o);
+        o.delta = ref.delta;
+        const auto t = std::chrono::steady_clock::now();
+        const ca_status st = ca_select(ctx, set, &o, &sel);
+        const double secs = bench::seconds_since(t);
+        ca_select_stats ss;
+        ss.struct_size = sizeof ss;
+        if (st == CA_OK) ca_selection_stats(sel, &ss);
+        std::printf("| %s | %.3f | %zu x %zu | %d | %zu | %s | %.3f |\n", ref.candidates, ref.delta, s.size() / 3, r.size(),
+                    ref.known, st == CA_OK ? ca_selection_count(sel) : 0, st == CA_OK && ss.proven_optimal ? "yes" : "no", secs);
+        ca_selection_destroy(sel);
+        ca_candidate_set_destroy(set);
+        ca_context_destroy(ctx);
+    }
+    return 0;
+}

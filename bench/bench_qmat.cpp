@@ -1,0 +1,159 @@
+// bench_qmat.cpp: evaluates Q-MAT's own medial meshes (reference/qmat_matfp/) against their input
+// models with the default evaluation options and prints |V|, h(S->E), h(E->S), the two-sided
+// Hausdorff distance (% of the bbox diagonal) and the time, next to EVALUATION.md's reference.
+// Usage: bench_qmat [data root, default ../shared/data]
+#include "evaluate.h"
+#include "mesh_io.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <map>
+#include <string>
+#include <sys/stat.h>
+
+namespace {
+
+bool is_dir(const std::string& p) {
+    struct stat st;
+    return stat(p.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
+}
+
+ca::Mesh to_mesh(const caio::MeshData& m) {
+    ca::Mesh out;
+    for (size_t i = 0; i + 2 < m.positions.size(); i += 3)
+        out.vertices.emplace_back(m.positions[i], m.positions[i + 1], m.positions[i + 2]);
+    for (size_t i = 0; i + 2 < m.triangles.size(); i += 3)
+        out.triangles.push_back({m.triangles[i], m.triangles[i + 1], m.triangles[i + 2]});
+    return out;
+}
+
+ca::Skeleton to_skeleton(const caio::SkeletonData& s) {
+    ca::Skeleton out;
+    for (size_t i = 0; i < s.radii.size(); ++i)
+        out.balls.push_back({ca::Vec3(s.centers[3 * i], s.centers[3 * i + 1], s.centers[3 * i + 2]),
+                             s.radii[i]});
+    for (size_t i = 0; i + 1 < s.edges.size(); i += 2) out.edges.push_back({s.edges[i], s.edges[i + 1]});
+    for (size_t i = 0; i + 2 < s.faces.size(); i += 3)
+        out.faces.push_back({s.faces[i], s.faces[i + 1], s.faces[i + 2]});
+    ca::canonicalize(out);
+    return out;
+}
+
+// An ellipsoid with semi-axes (2, 1, 0.5) as a subdivided icosahedron (20 * 4^5 = 20480
+// triangles) and a 100-ball strip skeleton inside it (2 rows of 50 balls, 98 slabs).
+void synthetic(ca::Mesh& mesh, ca::Skeleton& sk) {
+    const double g = (1 + std::sqrt(5.0)) / 2;
+    mesh.vertices = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
+                     {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+    mesh.triangles = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9},
+                      {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2},
+                      {3, 2, 6}, {3, 6, 8}, {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10},
+                      {8, 6, 7}, {9, 8, 1}};
+    for (auto& v : mesh.vertices) v.normalize();
+    for (int level = 0; level < 5; ++level) {
+        std::map<std::pair<uint32_t, uint32_t>, uint32_t> mid;
+        auto midpoint = [&](uint32_t a, uint32_t b) {
+            const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+            const auto it = mid.find(key);
+            if (it != mid.end()) return it->second;
+            mesh.vertices.push_back((mesh.vertices[a] + mesh.vertices[b]).normalized());
+            return mid[key] = uint32_t(mesh.vertices.size() - 1);
+        };
+        std::vector<ca::Tri> tris;
+        for (const ca::Tri& t : mesh.triangles) {
+            const uint32_t a = midpoint(t[0], t[1]), b = midpoint(t[1], t[2]), c = midpoint(t[2], t[0]);
+            tris.insert(tris.end(), {{t[0], a, c}, {t[1], b, a}, {t[2], c, b}, {a, b, c}});
+        }
+        mesh.triangles = std::move(tris);
+    }
+    for (auto& v : mesh.vertices) v = ca::Vec3(2 * v.x(), v.y(), 0.5 * v.z());
+    for (int row = 0; row < 2; ++row)
+        for (int i = 0; i < 50; ++i) {
+            const double x = -1.8 + 3.6 * i / 49.0, y = row ? 0.3 : -0.3;
+            const double q = std::max(0.0, 1 - x * x / 4 - y * y);
+            sk.balls.push_back({ca::Vec3(x, y, 0), 0.45 * std::sqrt(q)});
+        }
+    for (uint32_t i = 0; i + 1 < 50; ++i) {
+        sk.faces.push_back({i, i + 1, 50 + i});
+        sk.faces.push_back({i + 1, 50 + i, 51 + i});
+    }
+    ca::canonicalize(sk);
+}
+
+struct Model {
+    const char* name;
+    double ref_se, ref_es;   // EVALUATION.md, this protocol
+};
+
+}  // namespace
+
+double cpu_seconds() { return double(std::clock()) / CLOCKS_PER_SEC; }
+
+// Times one evaluation at the default options; prints wall and CPU time (both threads).
+void timing_row() {
+    ca::Mesh mesh;
+    ca::Skeleton sk;
+    synthetic(mesh, sk);
+    ca::EvaluateResult r;
+    const double c0 = cpu_seconds();
+    const auto t0 = std::chrono::steady_clock::now();
+    const ca::Status st = ca::evaluate(mesh, sk, ca::EvaluateOptions{}, ca::Monitor{}, r);
+    const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double cpu = cpu_seconds() - c0;
+    if (!st.ok()) {
+        std::printf("timing: error: %s\n", st.message.c_str());
+        return;
+    }
+    std::printf("timing: %zu balls vs %zu triangles: %.2f s wall, %.2f s CPU "
+                "(S->E %.3f %%, E->S %.3f %%)\n",
+                sk.balls.size(), mesh.triangles.size(), secs, cpu, r.hd_surface_to_recon,
+                r.hd_recon_to_surface);
+}
+
+int main(int argc, char** argv) {
+    const std::string root = argc > 1 ? argv[1] : "../shared/data";
+    const std::string dir = root + "/reference/qmat_matfp";
+    if (!is_dir(dir)) {
+        std::printf("bench_qmat: %s not found; skipping the Q-MAT models\n", dir.c_str());
+        timing_row();
+        return 0;
+    }
+    const Model models[] = {{"crab", 2.154, 1.571}, {"dog", 3.009, 1.523},
+                            {"fertility", 3.438, 2.451}, {"hand", 0.685, 0.80},
+                            {"vase", 2.944, 2.130}};
+    std::printf("%-10s %5s %9s %9s %9s %8s   %s\n", "model", "|V|", "S->E %", "E->S %",
+                "two-sided", "time s", "reference S->E / E->S");
+    int failures = 0;
+    for (const Model& m : models) {
+        const std::string base = dir + "/01" + m.name;
+        caio::MeshData md;
+        caio::SkeletonData sd;
+        std::string err;
+        if (!caio::read_mesh(base + ".off", md, err) || !caio::read_ma(base + "_QMAT.ma", sd, err)) {
+            std::printf("%-10s error: %s\n", m.name, err.c_str());
+            ++failures;
+            continue;
+        }
+        const ca::Mesh mesh = to_mesh(md);
+        const ca::Skeleton sk = to_skeleton(sd);
+        ca::EvaluateResult r;
+        const auto t0 = std::chrono::steady_clock::now();
+        const ca::Status st = ca::evaluate(mesh, sk, ca::EvaluateOptions{}, ca::Monitor{}, r);
+        const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        if (!st.ok()) {
+            std::printf("%-10s error: %s\n", m.name, st.message.c_str());
+            ++failures;
+            continue;
+        }
+        std::printf("%-10s %5zu %9.3f %9.3f %9.3f %8.2f   %.3f / %.3f\n", m.name, sk.balls.size(),
+                    r.hd_surface_to_recon, r.hd_recon_to_surface, r.hd_two_sided, secs, m.ref_se,
+                    m.ref_es);
+    }
+    timing_row();
+    return failures ? 1 : 0;
+}
