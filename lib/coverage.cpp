@@ -1,0 +1,103 @@
+// coverage.cpp: the sparse sample/ball coverage relation (see coverage.h). One nanoflann
+// radius query per ball over a k-d tree of the samples; both directions stored as sorted
+// compressed lists. Never dense.
+#include "coverage.h"
+
+#include <nanoflann.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <new>
+
+namespace ca {
+
+void Coverage::build_transpose() {
+    sample_ptr.assign(n_samples + 1, 0);
+    for (uint32_t j : ball_samples) sample_ptr[size_t(j) + 1]++;
+    for (size_t j = 0; j < n_samples; ++j) sample_ptr[j + 1] += sample_ptr[j];
+    sample_balls.assign(ball_samples.size(), 0);
+    std::vector<uint32_t> next(sample_ptr.begin(), sample_ptr.end() - 1);
+    // Balls are visited in ascending order, so every sample's list comes out sorted.
+    for (size_t i = 0; i < n_balls; ++i)
+        for (uint32_t k = ball_ptr[i]; k < ball_ptr[i + 1]; ++k)
+            sample_balls[next[ball_samples[k]]++] = uint32_t(i);
+}
+
+namespace {
+
+struct PointsAdaptor {
+    const std::vector<Vec3>& pts;
+    size_t kdtree_get_point_count() const { return pts.size(); }
+    double kdtree_get_pt(size_t idx, size_t dim) const { return pts[idx][int(dim)]; }
+    template <class BBox>
+    bool kdtree_get_bbox(BBox&) const { return false; }
+};
+
+using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PointsAdaptor>,
+                                                 PointsAdaptor, 3, size_t>;
+
+bool finite3(const Vec3& p) { return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()); }
+
+}  // namespace
+
+Status build_coverage(const std::vector<Vec3>& samples, const std::vector<Vec3>& centers,
+                      const std::vector<double>& dilated_radii, const Monitor& monitor, Coverage& out) {
+    if (centers.size() != dilated_radii.size())
+        return fail(Code::invalid_argument, "build_coverage: centers and radii differ in size");
+    if (samples.size() >= size_t(std::numeric_limits<uint32_t>::max()) ||
+        centers.size() >= size_t(std::numeric_limits<uint32_t>::max()))
+        return fail(Code::invalid_argument, "build_coverage: too many samples or balls");
+    for (const Vec3& p : samples)
+        if (!finite3(p)) return fail(Code::invalid_input, "build_coverage: non-finite sample");
+    for (size_t i = 0; i < centers.size(); ++i) {
+        if (!finite3(centers[i])) return fail(Code::invalid_input, "build_coverage: non-finite ball centre");
+        if (!std::isfinite(dilated_radii[i]) || dilated_radii[i] < 0)
+            return fail(Code::invalid_input, "build_coverage: radius must be finite and >= 0");
+    }
+    try {
+        Coverage cov;
+        cov.n_samples = samples.size();
+        cov.n_balls = centers.size();
+        cov.ball_ptr.assign(cov.n_balls + 1, 0);
+        if (!samples.empty() && !centers.empty()) {
+            PointsAdaptor adaptor{samples};
+            Tree tree(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+            tree.buildIndex();
+            std::vector<std::pair<size_t, double>> hits;
+            std::vector<uint32_t> ids;
+            const size_t chunk = 4096;
+            for (size_t i = 0; i < cov.n_balls; ++i) {
+                if (i % chunk == 0 && i > 0 &&
+                    !monitor.report("coverage", double(i) / double(cov.n_balls)))
+                    return fail(Code::cancelled, "build_coverage: cancelled");
+                const double r = dilated_radii[i];
+                // nanoflann keeps d^2 < r^2 (strict, squared): widen by a relative 1e-12 (and one
+                // ulp, for r = 0) so a sample exactly at distance r' counts as covered.
+                double r2 = r * r * (1.0 + 1e-12);
+                r2 = std::nextafter(r2, std::numeric_limits<double>::infinity());
+                const double q[3] = {centers[i].x(), centers[i].y(), centers[i].z()};
+                hits.clear();
+                tree.radiusSearch(q, r2, hits, nanoflann::SearchParams());
+                ids.clear();
+                for (const auto& h : hits) ids.push_back(uint32_t(h.first));
+                std::sort(ids.begin(), ids.end());
+                cov.ball_samples.insert(cov.ball_samples.end(), ids.begin(), ids.end());
+                if (cov.ball_samples.size() >= size_t(std::numeric_limits<uint32_t>::max()))
+                    return fail(Code::out_of_memory, "build_coverage: coverage relation exceeds 2^32 entries");
+                cov.ball_ptr[i + 1] = uint32_t(cov.ball_samples.size());
+            }
+        }
+        cov.build_transpose();
+        if (!monitor.report("coverage", 1.0)) return fail(Code::cancelled, "build_coverage: cancelled");
+        out = std::move(cov);
+    } catch (const std::bad_alloc&) {
+        return fail(Code::out_of_memory, "build_coverage: out of memory");
+    } catch (...) {
+        return fail(Code::internal, "build_coverage: unexpected exception");
+    }
+    return Status::success();
+}
+
+}  // namespace ca

@@ -1,0 +1,819 @@
+// setcover.cpp: minimum set cover of the samples by the candidate balls (see setcover.h).
+//
+// Pipeline: input checks -> reduction to a fixpoint (forced balls, degree-1 samples, dominated
+// samples, dominated balls, empty balls) -> kernel solve (CBC ILP with a greedy MIP start, or a
+// heuristic: greedy / Coverage Axis++) -> redundancy removal -> verification.
+// Reductions never change the optimum value, so forced + a kernel lower bound is a valid lower
+// bound of the original problem.
+#include "setcover.h"
+
+#include <coin/Cbc_C_Interface.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <memory>
+#include <mutex>
+#include <new>
+#include <queue>
+#include <string>
+
+namespace ca {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) {
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Reduction on the original index space. Dead balls / samples keep empty lists.
+class Reducer {
+public:
+    Reducer(size_t n_balls, size_t n_samples) : n_(n_balls), m_(n_samples) {}
+
+    std::vector<uint8_t> s_alive, b_alive;  // sample still to be covered / ball still a candidate
+    // Current lists: either views of the coverage itself (first round, when nothing is masked)
+    // or the reducer's own compacted copies. Dead balls have empty lists once compacted.
+    const uint32_t* bptr = nullptr;  // ball -> alive samples
+    const uint32_t* bs = nullptr;
+    const uint32_t* sptr = nullptr;  // sample -> alive balls (ascending)
+    const uint32_t* sb = nullptr;
+    std::vector<uint32_t> forced;    // selected by the reduction (forced_in + degree 1)
+
+    uint32_t bsize(uint32_t a) const { return bptr[a + 1] - bptr[a]; }
+    uint32_t sdeg(uint32_t j) const { return sptr[j + 1] - sptr[j]; }
+
+    // Initial lists. With every sample required, every ball allowed and a consistent transpose
+    // in `cov`, the coverage's own arrays are used as they are (no copy); otherwise the lists
+    // are copied restricted to the alive sets.
+    void init(const Coverage& cov, bool use_view) {
+        if (use_view) {
+            bptr = cov.ball_ptr.data();
+            bs = cov.ball_samples.data();
+            sptr = cov.sample_ptr.data();
+            sb = cov.sample_balls.data();
+            for (size_t a = 0; a < n_; ++a)
+                if (bptr[a + 1] == bptr[a]) b_alive[a] = 0;
+            return;
+        }
+        own_bptr.assign(n_ + 1, 0);
+        own_bs.clear();
+        for (size_t a = 0; a < n_; ++a) {
+            if (b_alive[a])
+                for (uint32_t k = cov.ball_ptr[a]; k < cov.ball_ptr[a + 1]; ++k)
+                    if (s_alive[cov.ball_samples[k]]) own_bs.push_back(cov.ball_samples[k]);
+            own_bptr[a + 1] = uint32_t(own_bs.size());
+        }
+        finish_rebuild();
+    }
+
+    // Drop dead samples/balls from the lists (cost: the current lists, not the original ones).
+    void rebuild() {
+        std::vector<uint32_t> nptr(n_ + 1, 0), ns;
+        ns.reserve(bptr[n_]);
+        for (size_t a = 0; a < n_; ++a) {
+            if (b_alive[a])
+                for (uint32_t k = bptr[a]; k < bptr[a + 1]; ++k)
+                    if (s_alive[bs[k]]) ns.push_back(bs[k]);
+            nptr[a + 1] = uint32_t(ns.size());
+        }
+        own_bptr.swap(nptr);
+        own_bs.swap(ns);
+        finish_rebuild();
+    }
+
+    void select(uint32_t b) {
+        forced.push_back(b);
+        b_alive[b] = 0;
+        for (uint32_t k = bptr[b]; k < bptr[b + 1]; ++k) s_alive[bs[k]] = 0;
+    }
+
+    // Samples with exactly one candidate ball force that ball.
+    bool force_degree_one() {
+        bool any = false;
+        for (uint32_t j = 0; j < m_; ++j)
+            if (s_alive[j] && sdeg(j) == 1) {
+                select(sb[sptr[j]]);
+                any = true;
+            }
+        return any;
+    }
+
+    // Sample j is dropped if an alive sample k has balls(k) ⊆ balls(j) (equal sets: keep the
+    // lower index): covering k covers j. Candidates k are grouped by their rarest ball, which
+    // must be one of j's balls; the subset test uses a stamp of j's balls, first on a few
+    // inline probes (k's next rarest balls, cache-friendly), then on k's whole list.
+    bool sample_dominance() {
+        std::vector<uint32_t> gptr(n_ + 1, 0);
+        std::vector<Probe> pr(m_);
+        for (uint32_t j = 0; j < m_; ++j) {
+            if (!s_alive[j] || sdeg(j) == 0) continue;
+            make_probe(&sb[sptr[j]], sdeg(j), [&](uint32_t b) { return bsize(b); }, pr[j]);
+            gptr[pr[j].key + 1]++;
+        }
+        for (size_t b = 0; b < n_; ++b) gptr[b + 1] += gptr[b];
+        std::vector<uint32_t> g(gptr[n_]), fill(gptr.begin(), gptr.end() - 1);
+        for (uint32_t j = 0; j < m_; ++j)
+            if (s_alive[j] && sdeg(j) > 0) g[fill[pr[j].key]++] = j;
+        stamp_b_.assign(n_, 0);
+        uint32_t stamp = 0;
+        bool any = false;
+        for (uint32_t j = 0; j < m_; ++j) {
+            if (!s_alive[j]) continue;
+            ++stamp;
+            for (uint32_t k = sptr[j]; k < sptr[j + 1]; ++k) stamp_b_[sb[k]] = stamp;
+            const uint32_t dj = sdeg(j);
+            bool dominated = false;
+            for (uint32_t q = sptr[j]; q < sptr[j + 1] && !dominated; ++q) {
+                const uint32_t b = sb[q];
+                for (uint32_t t = gptr[b]; t < gptr[b + 1]; ++t) {
+                    const uint32_t k = g[t];
+                    const Probe& P = pr[k];
+                    if (k == j || P.size > dj || (P.size == dj && k > j) || !s_alive[k]) continue;
+                    if (!probe_ok(P, stamp_b_, stamp)) continue;
+                    bool subset = true;
+                    for (uint32_t e = sptr[k]; e < sptr[k + 1]; ++e)
+                        if (stamp_b_[sb[e]] != stamp) { subset = false; break; }
+                    if (subset) { dominated = true; break; }
+                }
+            }
+            if (dominated) {
+                s_alive[j] = 0;
+                any = true;
+            }
+        }
+        return any;
+    }
+
+    // Ball a is dropped if an alive ball b has samples(a) ⊆ samples(b) (equal sets: keep the
+    // lower index). Supersets b are visited largest first with their samples stamped; the
+    // candidates a are grouped by their rarest sample (which b must contain); dead candidates
+    // are removed from the groups as they are met. Same probe filter as above.
+    bool ball_dominance() {
+        std::vector<uint32_t> gptr(m_ + 1, 0), order;
+        std::vector<Probe> pr(n_);
+        order.reserve(n_);
+        for (uint32_t a = 0; a < n_; ++a) {
+            if (!b_alive[a]) continue;
+            make_probe(&bs[bptr[a]], bsize(a), [&](uint32_t j) { return sdeg(j); }, pr[a]);
+            gptr[pr[a].key + 1]++;
+            order.push_back(a);
+        }
+        for (size_t j = 0; j < m_; ++j) gptr[j + 1] += gptr[j];
+        std::vector<uint32_t> g(gptr[m_]), gend(gptr.begin(), gptr.end() - 1);
+        for (uint32_t a : order) g[gend[pr[a].key]++] = a;
+        std::sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) {
+            const uint32_t sx = bsize(x), sy = bsize(y);
+            return sx != sy ? sx > sy : x < y;
+        });
+        stamp_s_.assign(m_, 0);
+        uint32_t stamp = 0;
+        bool any = false;
+        for (uint32_t b : order) {
+            if (!b_alive[b]) continue;  // whatever dominates b also dominates b's subsets
+            ++stamp;
+            for (uint32_t k = bptr[b]; k < bptr[b + 1]; ++k) stamp_s_[bs[k]] = stamp;
+            const uint32_t nb = bsize(b);
+            for (uint32_t q = bptr[b]; q < bptr[b + 1]; ++q) {
+                const uint32_t j = bs[q];
+                uint32_t t = gptr[j];
+                while (t < gend[j]) {
+                    const uint32_t a = g[t];
+                    if (!b_alive[a]) { g[t] = g[--gend[j]]; continue; }
+                    const Probe& P = pr[a];
+                    if (a == b || P.size > nb || (P.size == nb && a < b) || !probe_ok(P, stamp_s_, stamp)) {
+                        ++t;
+                        continue;
+                    }
+                    bool subset = true;
+                    for (uint32_t e = bptr[a]; e < bptr[a + 1]; ++e)
+                        if (stamp_s_[bs[e]] != stamp) { subset = false; break; }
+                    if (subset) {
+                        b_alive[a] = 0;
+                        any = true;
+                        g[t] = g[--gend[j]];
+                    } else {
+                        ++t;
+                    }
+                }
+            }
+        }
+        return any;
+    }
+
+private:
+    // Per element: list size, its rarest member (`key`, the group it is filed under) and the
+    // next rarest members (`p`, padded with key), kept inline so most failing subset tests
+    // never touch the element's list.
+    static constexpr int kProbes = 3;
+    struct Probe {
+        uint32_t size = 0, key = 0;
+        uint32_t p[kProbes] = {};
+    };
+    template <class Rarity>
+    static void make_probe(const uint32_t* list, uint32_t len, Rarity rarity, Probe& out) {
+        out.size = len;
+        // the kProbes + 1 rarest members, ties to the lower index (lists are ascending)
+        uint32_t best[kProbes + 1] = {}, rb[kProbes + 1] = {};
+        int cnt = 0;
+        for (uint32_t k = 0; k < len; ++k) {
+            const uint32_t x = list[k], r = rarity(x);
+            if (cnt == kProbes + 1 && r >= rb[kProbes]) continue;
+            int pos = cnt < kProbes + 1 ? cnt++ : kProbes;
+            while (pos > 0 && rb[pos - 1] > r) {
+                best[pos] = best[pos - 1];
+                rb[pos] = rb[pos - 1];
+                --pos;
+            }
+            best[pos] = x;
+            rb[pos] = r;
+        }
+        out.key = best[0];
+        for (int i = 0; i < kProbes; ++i) out.p[i] = i + 1 < cnt ? best[i + 1] : best[0];
+    }
+    static bool probe_ok(const Probe& P, const std::vector<uint32_t>& stamp_arr, uint32_t stamp) {
+        for (int i = 0; i < kProbes; ++i)
+            if (stamp_arr[P.p[i]] != stamp) return false;
+        return true;
+    }
+
+    // Transpose own_bs into own_sptr/own_sb and point the views at the own lists; a ball left
+    // without samples dies.
+    void finish_rebuild() {
+        for (size_t a = 0; a < n_; ++a)
+            if (b_alive[a] && own_bptr[a + 1] == own_bptr[a]) b_alive[a] = 0;
+        own_sptr.assign(m_ + 1, 0);
+        for (uint32_t j : own_bs) own_sptr[j + 1]++;
+        for (size_t j = 0; j < m_; ++j) own_sptr[j + 1] += own_sptr[j];
+        own_sb.resize(own_bs.size());
+        std::vector<uint32_t> next(own_sptr.begin(), own_sptr.end() - 1);
+        for (uint32_t a = 0; a < n_; ++a)
+            for (uint32_t k = own_bptr[a]; k < own_bptr[a + 1]; ++k) own_sb[next[own_bs[k]]++] = a;
+        bptr = own_bptr.data();
+        bs = own_bs.data();
+        sptr = own_sptr.data();
+        sb = own_sb.data();
+    }
+
+    std::vector<uint32_t> own_bptr, own_bs, own_sptr, own_sb;
+    size_t n_, m_;
+    std::vector<uint32_t> stamp_b_, stamp_s_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// A compact set-cover problem: R rows (samples) x C columns (balls), every row coverable.
+struct Problem {
+    uint32_t R = 0, C = 0;
+    std::vector<uint32_t> cptr, crow;  // column -> rows, ascending
+    std::vector<uint32_t> rptr, rcol;  // row -> columns, ascending
+    std::vector<uint32_t> col_id, row_id;  // original ball / sample index
+};
+
+Problem make_kernel(const Reducer& red, size_t n, size_t m) {
+    Problem P;
+    std::vector<uint32_t> row_of(m, UINT32_MAX);
+    for (uint32_t j = 0; j < m; ++j)
+        if (red.s_alive[j]) { row_of[j] = uint32_t(P.row_id.size()); P.row_id.push_back(j); }
+    for (uint32_t a = 0; a < n; ++a)
+        if (red.b_alive[a]) P.col_id.push_back(a);
+    P.R = uint32_t(P.row_id.size());
+    P.C = uint32_t(P.col_id.size());
+    P.cptr.assign(P.C + 1, 0);
+    for (uint32_t c = 0; c < P.C; ++c) {
+        const uint32_t a = P.col_id[c];
+        for (uint32_t k = red.bptr[a]; k < red.bptr[a + 1]; ++k) P.crow.push_back(row_of[red.bs[k]]);
+        P.cptr[c + 1] = uint32_t(P.crow.size());
+    }
+    P.rptr.assign(P.R + 1, 0);
+    for (uint32_t r : P.crow) P.rptr[r + 1]++;
+    for (uint32_t r = 0; r < P.R; ++r) P.rptr[r + 1] += P.rptr[r];
+    P.rcol.resize(P.crow.size());
+    std::vector<uint32_t> next(P.rptr.begin(), P.rptr.end() - 1);
+    for (uint32_t c = 0; c < P.C; ++c)
+        for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) P.rcol[next[P.crow[k]]++] = c;
+    return P;
+}
+
+// Drop selected columns whose required rows are all covered by the others, smallest columns
+// first (ties: lower index); `locked` columns are never dropped. Result ascending.
+void remove_redundant(const std::vector<uint32_t>& ptr, const std::vector<uint32_t>& idx, size_t R,
+                      const std::vector<uint8_t>* required, const std::vector<uint8_t>* locked,
+                      std::vector<uint32_t>& sel) {
+    auto req = [&](uint32_t r) { return !required || (*required)[r]; };
+    std::vector<uint32_t> cnt(R, 0), size(sel.size(), 0);
+    for (size_t s = 0; s < sel.size(); ++s)
+        for (uint32_t k = ptr[sel[s]]; k < ptr[sel[s] + 1]; ++k)
+            if (req(idx[k])) { cnt[idx[k]]++; size[s]++; }
+    std::vector<uint32_t> order(sel.size());
+    for (uint32_t s = 0; s < order.size(); ++s) order[s] = s;
+    std::sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) {
+        return size[x] != size[y] ? size[x] < size[y] : sel[x] < sel[y];
+    });
+    std::vector<uint8_t> drop(sel.size(), 0);
+    for (uint32_t s : order) {
+        const uint32_t c = sel[s];
+        if (locked && (*locked)[c]) continue;
+        bool redundant = true;
+        for (uint32_t k = ptr[c]; k < ptr[c + 1] && redundant; ++k)
+            if (req(idx[k]) && cnt[idx[k]] < 2) redundant = false;
+        if (!redundant) continue;
+        drop[s] = 1;
+        for (uint32_t k = ptr[c]; k < ptr[c + 1]; ++k)
+            if (req(idx[k])) cnt[idx[k]]--;
+    }
+    std::vector<uint32_t> kept;
+    for (size_t s = 0; s < sel.size(); ++s)
+        if (!drop[s]) kept.push_back(sel[s]);
+    std::sort(kept.begin(), kept.end());
+    sel.swap(kept);
+}
+
+// Greedy: most newly covered rows, ties to the lower index (lazy max-heap). Ascending result.
+std::vector<uint32_t> greedy_cover(const Problem& P) {
+    std::vector<uint32_t> cnt(P.C), sel;
+    std::vector<uint8_t> covered(P.R, 0);
+    using Item = std::pair<uint32_t, uint32_t>;  // (count, C-1-col): larger = better
+    std::priority_queue<Item> heap;
+    for (uint32_t c = 0; c < P.C; ++c) {
+        cnt[c] = P.cptr[c + 1] - P.cptr[c];
+        if (cnt[c]) heap.push({cnt[c], P.C - 1 - c});
+    }
+    uint32_t remaining = P.R;
+    while (remaining > 0 && !heap.empty()) {
+        const Item top = heap.top();
+        heap.pop();
+        const uint32_t c = P.C - 1 - top.second;
+        if (top.first != cnt[c]) {
+            if (cnt[c]) heap.push({cnt[c], top.second});
+            continue;
+        }
+        sel.push_back(c);
+        for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) {
+            const uint32_t r = P.crow[k];
+            if (covered[r]) continue;
+            covered[r] = 1;
+            --remaining;
+            for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q) cnt[P.rcol[q]]--;
+        }
+    }
+    std::sort(sel.begin(), sel.end());
+    return sel;
+}
+
+// Coverage Axis++ (Wang et al. 2024) selection on the kernel: each step maximises
+// z(newly covered) + w_u z(distance to the nearest selected centre) - w_c z(0.1 r_max / r),
+// z standardised over the still-eligible columns (unselected, covering something new).
+std::vector<uint32_t> capp_cover(const Problem& P, const std::vector<Vec3>& centers,
+                                 const std::vector<double>& radii, const std::vector<uint32_t>& preselected) {
+    const double wu = 1.0, wc = 1.0;
+    std::vector<uint32_t> cnt(P.C), sel;
+    std::vector<uint8_t> covered(P.R, 0), taken(P.C, 0);
+    std::vector<double> mind(P.C, std::numeric_limits<double>::infinity()), rterm(P.C, 0.1);
+    double rmax = 0;
+    for (uint32_t c = 0; c < P.C; ++c) rmax = std::max(rmax, radii[P.col_id[c]]);
+    for (uint32_t c = 0; c < P.C; ++c) {
+        cnt[c] = P.cptr[c + 1] - P.cptr[c];
+        if (rmax > 0) rterm[c] = 0.1 * rmax / std::max(radii[P.col_id[c]], rmax * 1e-9);
+        for (uint32_t f : preselected)
+            mind[c] = std::min(mind[c], (centers[P.col_id[c]] - centers[f]).norm());
+    }
+    bool any_selected = !preselected.empty();
+    uint32_t remaining = P.R;
+    std::vector<uint32_t> elig;
+    while (remaining > 0) {
+        elig.clear();
+        for (uint32_t c = 0; c < P.C; ++c)
+            if (!taken[c] && cnt[c] > 0) elig.push_back(c);
+        if (elig.empty()) break;
+        auto stats = [&](auto&& f, double& mean, double& sd) {
+            double s = 0, s2 = 0;
+            for (uint32_t c : elig) s += f(c);
+            mean = s / double(elig.size());
+            for (uint32_t c : elig) { const double d = f(c) - mean; s2 += d * d; }
+            sd = std::sqrt(s2 / double(elig.size()));
+        };
+        auto fc = [&](uint32_t c) { return double(cnt[c]); };
+        auto fu = [&](uint32_t c) { return any_selected ? mind[c] : 0.0; };
+        auto fr = [&](uint32_t c) { return rterm[c]; };
+        double mc, sc, mu, su, mr, sr;
+        stats(fc, mc, sc);
+        stats(fu, mu, su);
+        stats(fr, mr, sr);
+        auto z = [](double x, double mean, double sd) { return sd > 1e-300 ? (x - mean) / sd : 0.0; };
+        uint32_t best = elig[0];
+        double best_score = -std::numeric_limits<double>::infinity();
+        for (uint32_t c : elig) {
+            const double s = z(fc(c), mc, sc) + wu * z(fu(c), mu, su) - wc * z(fr(c), mr, sr);
+            if (s > best_score) { best_score = s; best = c; }  // ties: first = lower index
+        }
+        taken[best] = 1;
+        sel.push_back(best);
+        any_selected = true;
+        for (uint32_t k = P.cptr[best]; k < P.cptr[best + 1]; ++k) {
+            const uint32_t r = P.crow[k];
+            if (covered[r]) continue;
+            covered[r] = 1;
+            --remaining;
+            for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q) cnt[P.rcol[q]]--;
+        }
+        const Vec3& cb = centers[P.col_id[best]];
+        for (uint32_t c = 0; c < P.C; ++c) mind[c] = std::min(mind[c], (centers[P.col_id[c]] - cb).norm());
+    }
+    std::sort(sel.begin(), sel.end());
+    return sel;
+}
+
+// Rows pairwise sharing no column need distinct columns: a valid lower bound.
+uint32_t disjoint_bound(const Problem& P) {
+    std::vector<uint32_t> order(P.R);
+    for (uint32_t r = 0; r < P.R; ++r) order[r] = r;
+    std::sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) {
+        const uint32_t dx = P.rptr[x + 1] - P.rptr[x], dy = P.rptr[y + 1] - P.rptr[y];
+        return dx != dy ? dx < dy : x < y;
+    });
+    std::vector<uint8_t> used(P.C, 0);
+    uint32_t count = 0;
+    for (uint32_t r : order) {
+        bool free = true;
+        for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1] && free; ++q)
+            if (used[P.rcol[q]]) free = false;
+        if (!free) continue;
+        ++count;
+        for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q) used[P.rcol[q]] = 1;
+    }
+    return count;
+}
+
+bool covers_problem(const Problem& P, const std::vector<uint32_t>& sel) {
+    std::vector<uint8_t> covered(P.R, 0);
+    for (uint32_t c : sel) {
+        if (c >= P.C) return false;
+        for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) covered[P.crow[k]] = 1;
+    }
+    for (uint8_t v : covered)
+        if (!v) return false;
+    return true;
+}
+
+struct CbcOutcome {
+    bool ok = false;            // CBC ran and returned without error
+    bool has_solution = false;  // a cover better than the cutoff, verified
+    bool proven = false;        // the search finished: `solution` optimal, or none below the cutoff
+    double bound = -std::numeric_limits<double>::infinity();  // valid for solutions below the cutoff
+    std::vector<uint32_t> solution;  // columns, ascending
+};
+
+// Solves the kernel with CBC, looking only for covers smaller than `incumbent` (the greedy
+// cover): the cutoff incumbent - 0.5 prunes exactly as a MIP start would (objective values
+// are integral). A MIP start (Cbc_setMIPStartI) is deliberately not used: in CBC 2.10 its
+// processing ("Reduced search") ignored the time limit and took over a minute on a dense
+// 1500 x 2000 kernel where the cutoff alone gives the same result in seconds.
+CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int threads) {
+    // CBC parses its options through process-wide globals and is not thread-safe: every CBC
+    // call sequence in the process goes through this one mutex. It is the library's only
+    // process-wide state.
+    static std::mutex cbc_mutex;
+    CbcOutcome out;
+    std::vector<CoinBigIndex> colstart(P.C + 1);
+    std::vector<int> rowidx(P.crow.begin(), P.crow.end());
+    for (uint32_t c = 0; c <= P.C; ++c) colstart[c] = CoinBigIndex(P.cptr[c]);
+    std::vector<double> val(P.crow.size(), 1.0), lb(P.C, 0.0), ub(P.C, 1.0), obj(P.C, 1.0), rlb(P.R, 1.0);
+    char buf[64];
+
+    std::lock_guard<std::mutex> lock(cbc_mutex);
+    struct Deleter { void operator()(Cbc_Model* m) const { Cbc_deleteModel(m); } };
+    std::unique_ptr<Cbc_Model, Deleter> model(Cbc_newModel());
+    if (!model) return out;
+    Cbc_Model* m = model.get();
+    Cbc_loadProblem(m, int(P.C), int(P.R), colstart.data(), rowidx.data(), val.data(), lb.data(), ub.data(),
+                    obj.data(), rlb.data(), nullptr);
+    for (uint32_t c = 0; c < P.C; ++c) Cbc_setInteger(m, int(c));
+    Cbc_setParameter(m, "log", "0");  // otherwise CBC prints to stdout
+    Cbc_setParameter(m, "slog", "0");
+    Cbc_setParameter(m, "timeMode", "elapsed");
+    if (time_limit_s > 0 && std::isfinite(time_limit_s)) {
+        std::snprintf(buf, sizeof buf, "%.6f", time_limit_s);
+        Cbc_setParameter(m, "sec", buf);
+    }
+    std::snprintf(buf, sizeof buf, "%d", std::max(1, threads));
+    Cbc_setParameter(m, "threads", buf);
+    std::snprintf(buf, sizeof buf, "%.1f", double(incumbent) - 0.5);
+    Cbc_setParameter(m, "cutoff", buf);
+    Cbc_solve(m);
+    out.ok = true;
+    const bool finished = Cbc_status(m) == 0;
+    out.bound = Cbc_getBestPossibleObjValue(m);
+    const double* x = Cbc_bestSolution(m) ? Cbc_getColSolution(m) : nullptr;
+    if (x) {
+        for (uint32_t c = 0; c < P.C; ++c)
+            if (x[c] > 0.5) out.solution.push_back(c);
+        out.has_solution = covers_problem(P, out.solution) && out.solution.size() < incumbent;
+        if (!out.has_solution) out.solution.clear();
+    }
+    // Optimal below the cutoff, or proven that nothing beats the incumbent.
+    if (out.has_solution)
+        out.proven = Cbc_isProvenOptimal(m) != 0;
+    else
+        out.proven = finished && Cbc_isProvenInfeasible(m) != 0;
+    return out;
+}
+
+std::string uncoverable_message(const std::vector<uint32_t>& unc, size_t m) {
+    std::string msg = std::to_string(unc.size()) + " of " + std::to_string(m) +
+                      " samples are covered by no candidate ball (first: ";
+    for (size_t i = 0; i < unc.size() && i < 10; ++i) {
+        if (i) msg += ", ";
+        msg += std::to_string(unc[i]);
+    }
+    if (unc.size() > 10) msg += ", ...";
+    msg += ")";
+    return msg;
+}
+
+Status check_coverage(const Coverage& cov) {
+    const size_t n = cov.n_balls, m = cov.n_samples;
+    if (m >= UINT32_MAX || n >= UINT32_MAX) return fail(Code::invalid_input, "set cover: too many samples or balls");
+    if (cov.ball_ptr.size() != n + 1 || cov.ball_ptr[0] != 0 || cov.ball_ptr[n] != cov.ball_samples.size())
+        return fail(Code::invalid_input, "set cover: malformed coverage (ball_ptr)");
+    for (size_t a = 0; a < n; ++a) {
+        if (cov.ball_ptr[a + 1] < cov.ball_ptr[a]) return fail(Code::invalid_input, "set cover: malformed coverage (ball_ptr)");
+        for (uint32_t k = cov.ball_ptr[a]; k < cov.ball_ptr[a + 1]; ++k) {
+            if (cov.ball_samples[k] >= m) return fail(Code::invalid_input, "set cover: sample index out of range");
+            if (k > cov.ball_ptr[a] && cov.ball_samples[k] <= cov.ball_samples[k - 1])
+                return fail(Code::invalid_input, "set cover: ball sample list not strictly ascending");
+        }
+    }
+    return Status::success();
+}
+
+// Cheap check that cov's sample -> ball direction can be trusted: right sizes, per-sample
+// counts match the ball -> sample direction, lists ascending and in range.
+bool transpose_consistent(const Coverage& cov) {
+    const size_t n = cov.n_balls, m = cov.n_samples;
+    if (cov.sample_ptr.size() != m + 1 || cov.sample_ptr[0] != 0 || cov.sample_ptr[m] != cov.ball_samples.size() ||
+        cov.sample_balls.size() != cov.ball_samples.size())
+        return false;
+    std::vector<uint32_t> cnt(m, 0);
+    for (uint32_t j : cov.ball_samples) cnt[j]++;
+    for (size_t j = 0; j < m; ++j) {
+        if (cov.sample_ptr[j + 1] < cov.sample_ptr[j] || cov.sample_ptr[j + 1] - cov.sample_ptr[j] != cnt[j]) return false;
+        for (uint32_t k = cov.sample_ptr[j]; k < cov.sample_ptr[j + 1]; ++k)
+            if (cov.sample_balls[k] >= n || (k > cov.sample_ptr[j] && cov.sample_balls[k] <= cov.sample_balls[k - 1]))
+                return false;
+    }
+    return true;
+}
+
+// Shared front part: checks, masks, uncoverable samples, reduction.
+struct Prepared {
+    std::vector<uint8_t> required, allowed, locked;
+    std::vector<uint32_t> uncovered;
+    size_t rows_before = 0, cols_before = 0;
+};
+
+Status prepare(const Coverage& cov, const CoverOptions& opt, bool skip_uncoverable, Prepared& pr) {
+    const size_t n = cov.n_balls, m = cov.n_samples;
+    Status st = check_coverage(cov);
+    if (!st.ok()) return st;
+    if (!opt.ignorable_samples.empty() && opt.ignorable_samples.size() != m)
+        return fail(Code::invalid_argument, "set cover: ignorable_samples must have 0 or n_samples entries");
+    if (!opt.forced_in.empty() && opt.forced_in.size() != n)
+        return fail(Code::invalid_argument, "set cover: forced_in must have 0 or n_balls entries");
+    if (!opt.forced_out.empty() && opt.forced_out.size() != n)
+        return fail(Code::invalid_argument, "set cover: forced_out must have 0 or n_balls entries");
+    pr.required.assign(m, 1);
+    pr.allowed.assign(n, 1);
+    pr.locked.assign(n, 0);
+    for (size_t j = 0; j < opt.ignorable_samples.size(); ++j)
+        if (opt.ignorable_samples[j]) pr.required[j] = 0;
+    for (size_t a = 0; a < opt.forced_out.size(); ++a)
+        if (opt.forced_out[a]) pr.allowed[a] = 0;
+    for (size_t a = 0; a < opt.forced_in.size(); ++a)
+        if (opt.forced_in[a]) {
+            if (!pr.allowed[a]) return fail(Code::invalid_argument, "set cover: a ball is both forced in and forced out");
+            pr.locked[a] = 1;
+        }
+    std::vector<uint8_t> reachable(m, 0);
+    for (size_t a = 0; a < n; ++a)
+        if (pr.allowed[a])
+            for (uint32_t k = cov.ball_ptr[a]; k < cov.ball_ptr[a + 1]; ++k) reachable[cov.ball_samples[k]] = 1;
+    for (uint32_t j = 0; j < m; ++j)
+        if (pr.required[j] && !reachable[j]) pr.uncovered.push_back(j);
+    if (!pr.uncovered.empty()) {
+        if (!skip_uncoverable) return fail(Code::uncoverable, uncoverable_message(pr.uncovered, m));
+        for (uint32_t j : pr.uncovered) pr.required[j] = 0;
+    }
+    for (uint8_t v : pr.required) pr.rows_before += v;
+    for (uint8_t v : pr.allowed) pr.cols_before += v;
+    return Status::success();
+}
+
+// Reduce to the fixpoint. On success `red` holds the forced balls and the kernel.
+Status reduce(const Coverage& cov, const Prepared& pr, const Monitor& monitor, Reducer& red) {
+    const size_t n = cov.n_balls;
+    red.s_alive = pr.required;
+    red.b_alive = pr.allowed;
+    bool plain = cov.sample_ptr.size() == cov.n_samples + 1 && transpose_consistent(cov);
+    for (size_t j = 0; j < cov.n_samples && plain; ++j) plain = pr.required[j] != 0;
+    for (size_t a = 0; a < n && plain; ++a) plain = pr.allowed[a] && !pr.locked[a];
+    red.init(cov, plain);
+    bool any_forced_in = false;
+    for (uint32_t a = 0; a < n; ++a)
+        if (pr.locked[a]) {
+            // select even if it covers nothing required (it was asked for)
+            red.forced.push_back(a);
+            red.b_alive[a] = 0;
+            for (uint32_t k = red.bptr[a]; k < red.bptr[a + 1]; ++k) red.s_alive[red.bs[k]] = 0;
+            any_forced_in = true;
+        }
+    if (any_forced_in) red.rebuild();
+    // Ball dominance only changes when sample sets change and vice versa: rerun a phase only
+    // when the other one (or forcing) changed something. Ball dominance first: it usually
+    // removes most columns, which makes every later phase cheap.
+    bool need_balls = true, need_samples = true;
+    for (;;) {
+        if (monitor.cancelled()) return fail(Code::cancelled, "set cover: cancelled");
+        if (red.force_degree_one()) {
+            red.rebuild();
+            need_balls = need_samples = true;
+            continue;
+        }
+        if (need_balls) {
+            need_balls = false;
+            if (red.ball_dominance()) {
+                red.rebuild();
+                need_samples = true;
+            }
+            continue;
+        }
+        if (need_samples) {
+            need_samples = false;
+            if (red.sample_dominance()) {
+                red.rebuild();
+                need_balls = true;
+            }
+            continue;
+        }
+        break;
+    }
+    return Status::success();
+}
+
+Status solve_impl(const Coverage& cov, const CoverOptions& opt, bool skip_uncoverable, const Monitor& monitor,
+                  CoverResult& result) {
+    const auto t0 = Clock::now();
+    const size_t n = cov.n_balls, m = cov.n_samples;
+    if (opt.solver != Solver::exact && opt.solver != Solver::greedy && opt.solver != Solver::capp)
+        return fail(Code::invalid_argument, "set cover: unknown solver");
+    if (std::isnan(opt.time_limit_s)) return fail(Code::invalid_argument, "set cover: time limit is NaN");
+    if (opt.solver == Solver::capp) {
+        if (!opt.centers || !opt.radii || opt.centers->size() != n || opt.radii->size() != n)
+            return fail(Code::invalid_argument, "set cover: the capp solver needs centers and radii for every ball");
+        for (size_t a = 0; a < n; ++a) {
+            const Vec3& c = (*opt.centers)[a];
+            if (!std::isfinite(c.x()) || !std::isfinite(c.y()) || !std::isfinite(c.z()) ||
+                !std::isfinite((*opt.radii)[a]))
+                return fail(Code::invalid_input, "set cover: non-finite ball centre or radius");
+        }
+    }
+    Prepared pr;
+    Status st = prepare(cov, opt, skip_uncoverable, pr);
+    if (!st.ok()) return st;
+    result.uncovered = pr.uncovered;
+    result.rows_before = pr.rows_before;
+    result.cols_before = pr.cols_before;
+    if (monitor.cancelled()) return fail(Code::cancelled, "set cover: cancelled");
+
+    Reducer red(n, m);
+    st = reduce(cov, pr, monitor, red);
+    if (!st.ok()) return st;
+    const Problem P = make_kernel(red, n, m);
+    result.rows_after = P.R;
+    result.cols_after = P.C;
+    result.forced = red.forced.size();
+    result.time_reduce_s = seconds_since(t0);
+    if (monitor.cancelled()) return fail(Code::cancelled, "set cover: cancelled");
+
+    // Kernel solve.
+    const auto t1 = Clock::now();
+    std::vector<uint32_t> ksel;
+    double klb = P.R > 0 ? double(disjoint_bound(P)) : 0.0;
+    bool proven = false;
+    if (opt.solver == Solver::capp) {
+        ksel = capp_cover(P, *opt.centers, *opt.radii, red.forced);
+        remove_redundant(P.cptr, P.crow, P.R, nullptr, nullptr, ksel);
+    } else {
+        ksel = greedy_cover(P);
+        remove_redundant(P.cptr, P.crow, P.R, nullptr, nullptr, ksel);
+        if (opt.solver == Solver::exact) {
+            const double greedy_obj = double(ksel.size());
+            if (P.C == 0 || klb >= greedy_obj) {
+                proven = true;  // empty kernel, or the disjoint-rows bound meets the greedy cover
+                klb = greedy_obj;
+            } else {
+                if (monitor.cancelled()) return fail(Code::cancelled, "set cover: cancelled");
+                CbcOutcome cbc;
+                try {
+                    cbc = run_cbc(P, ksel.size(), opt.time_limit_s, opt.threads);
+                } catch (const std::bad_alloc&) {
+                    throw;
+                } catch (...) {
+                    cbc = CbcOutcome{};  // CBC failure: keep the greedy cover
+                }
+                if (cbc.ok) {
+                    if (cbc.has_solution) ksel = cbc.solution;  // strictly better than greedy
+                    const double obj = double(ksel.size());
+                    if (cbc.proven) {
+                        // trust CBC's proof even when its reported bound lags the objective
+                        proven = true;
+                        klb = obj;
+                    } else if (std::isfinite(cbc.bound)) {
+                        // optimum >= incumbent, or optimum < cutoff and >= bound
+                        const double b = std::ceil(cbc.bound - 1e-6);
+                        klb = std::max(klb, std::min(b, obj));
+                    }
+                }
+            }
+        }
+    }
+    if (!covers_problem(P, ksel)) return fail(Code::internal, "set cover: kernel selection does not cover the kernel");
+
+    // Combine, drop redundant balls on the full problem (never forced-in ones), verify.
+    std::vector<uint32_t> sel = red.forced;
+    for (uint32_t c : ksel) sel.push_back(P.col_id[c]);
+    std::sort(sel.begin(), sel.end());
+    remove_redundant(cov.ball_ptr, cov.ball_samples, m, &pr.required, &pr.locked, sel);
+    {
+        std::vector<uint8_t> covered(m, 0), chosen(n, 0);
+        for (uint32_t a : sel) {
+            if (!pr.allowed[a]) return fail(Code::internal, "set cover: a forced-out ball was selected");
+            chosen[a] = 1;
+            for (uint32_t k = cov.ball_ptr[a]; k < cov.ball_ptr[a + 1]; ++k) covered[cov.ball_samples[k]] = 1;
+        }
+        for (size_t a = 0; a < n; ++a)
+            if (pr.locked[a] && !chosen[a]) return fail(Code::internal, "set cover: a forced-in ball was dropped");
+        for (size_t j = 0; j < m; ++j)
+            if (pr.required[j] && !covered[j])
+                return fail(Code::internal, "set cover: the selection leaves sample " + std::to_string(j) + " uncovered");
+    }
+    result.selected = sel;
+    result.objective = double(sel.size());
+    result.lower_bound = std::min(result.objective, double(red.forced.size()) + klb);
+    result.proven_optimal = (opt.solver == Solver::exact && proven) ? 1 : 0;
+    if (result.proven_optimal) result.lower_bound = result.objective;
+    result.gap = result.objective > 0 ? (result.objective - result.lower_bound) / result.objective : 0.0;
+    result.time_solve_s = seconds_since(t1);
+    return Status::success();
+}
+
+}  // namespace
+
+namespace detail {
+Status reduce_set_cover(const Coverage& cov, const CoverOptions& opt, bool skip_uncoverable, const Monitor& monitor,
+                        std::vector<uint32_t>& forced, Coverage& kernel, std::vector<uint32_t>& kernel_balls,
+                        std::vector<uint32_t>& kernel_samples) {
+    try {
+        Prepared pr;
+        Status st = prepare(cov, opt, skip_uncoverable, pr);
+        if (!st.ok()) return st;
+        Reducer red(cov.n_balls, cov.n_samples);
+        st = reduce(cov, pr, monitor, red);
+        if (!st.ok()) return st;
+        const Problem P = make_kernel(red, cov.n_balls, cov.n_samples);
+        forced = red.forced;
+        std::sort(forced.begin(), forced.end());
+        kernel = Coverage{};
+        kernel.n_samples = P.R;
+        kernel.n_balls = P.C;
+        kernel.ball_ptr = P.cptr;
+        kernel.ball_samples = P.crow;
+        kernel.sample_ptr = P.rptr;
+        kernel.sample_balls = P.rcol;
+        kernel_balls = P.col_id;
+        kernel_samples = P.row_id;
+        return Status::success();
+    } catch (const std::bad_alloc&) {
+        return fail(Code::out_of_memory, "set cover: out of memory");
+    } catch (...) {
+        return fail(Code::internal, "set cover: unexpected exception");
+    }
+}
+}  // namespace detail
+
+Status solve_set_cover(const Coverage& cov, const CoverOptions& opt, bool skip_uncoverable, const Monitor& monitor,
+                       CoverResult& result) {
+    result = CoverResult{};
+    try {
+        return solve_impl(cov, opt, skip_uncoverable, monitor, result);
+    } catch (const std::bad_alloc&) {
+        return fail(Code::out_of_memory, "set cover: out of memory");
+    } catch (...) {
+        return fail(Code::internal, "set cover: unexpected exception");
+    }
+}
+
+}  // namespace ca

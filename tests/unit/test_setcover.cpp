@@ -1,0 +1,474 @@
+// test_setcover.cpp: the coverage relation (vs brute-force distances) and the set-cover solver
+// (vs an independent brute-force minimum on small random instances): exactness, reduction
+// soundness, heuristics' validity, masks, uncoverable samples, time limits, cancellation.
+#include <doctest/doctest.h>
+
+#include "coverage.h"
+#include "setcover.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <set>
+#include <string>
+#include <vector>
+
+#if defined(__unix__)
+#include <unistd.h>
+#endif
+
+using namespace ca;
+
+namespace {
+
+// Random coverage: ball i covers sample j with probability p; every sample gets at least one
+// ball unless `allow_uncovered`.
+Coverage random_cover(Rng& rng, size_t m, size_t n, double p, bool allow_uncovered = false) {
+    std::vector<std::vector<uint32_t>> lists(n);
+    std::vector<uint8_t> hit(m, 0);
+    for (size_t i = 0; i < n; ++i)
+        for (size_t j = 0; j < m; ++j)
+            if (rng.uniform() < p) { lists[i].push_back(uint32_t(j)); hit[j] = 1; }
+    if (!allow_uncovered)
+        for (size_t j = 0; j < m; ++j)
+            if (!hit[j]) {
+                auto& l = lists[rng.below(n)];
+                l.insert(std::upper_bound(l.begin(), l.end(), uint32_t(j)), uint32_t(j));
+            }
+    Coverage c;
+    c.n_samples = m;
+    c.n_balls = n;
+    c.ball_ptr.push_back(0);
+    for (auto& l : lists) {
+        c.ball_samples.insert(c.ball_samples.end(), l.begin(), l.end());
+        c.ball_ptr.push_back(uint32_t(c.ball_samples.size()));
+    }
+    c.build_transpose();
+    return c;
+}
+
+uint32_t ball_mask(const Coverage& c, size_t i) {
+    uint32_t mask = 0;
+    for (uint32_t k = c.ball_ptr[i]; k < c.ball_ptr[i + 1]; ++k) mask |= 1u << c.ball_samples[k];
+    return mask;
+}
+
+// Independent brute force (m <= 31): smallest number of allowed balls, including every forced_in
+// one, covering every required sample; -1 if infeasible. Subsets by increasing size.
+int brute_min(const Coverage& c, const std::vector<uint8_t>& ignorable = {},
+              const std::vector<uint8_t>& forced_in = {}, const std::vector<uint8_t>& forced_out = {}) {
+    uint32_t need = 0;
+    for (size_t j = 0; j < c.n_samples; ++j)
+        if (ignorable.empty() || !ignorable[j]) need |= 1u << j;
+    uint32_t base = 0;
+    int nforced = 0;
+    std::vector<uint32_t> free;
+    for (size_t i = 0; i < c.n_balls; ++i) {
+        if (!forced_in.empty() && forced_in[i]) { base |= ball_mask(c, i); ++nforced; continue; }
+        if (!forced_out.empty() && forced_out[i]) continue;
+        free.push_back(ball_mask(c, i));
+    }
+    const int F = int(free.size());
+    for (int k = 0; k <= F; ++k) {
+        // enumerate k-subsets of free
+        std::vector<int> idx(k);
+        for (int t = 0; t < k; ++t) idx[t] = t;
+        for (;;) {
+            uint32_t m = base;
+            for (int t = 0; t < k; ++t) m |= free[idx[t]];
+            if ((m & need) == need) return nforced + k;
+            int t = k - 1;
+            while (t >= 0 && idx[t] == F - k + t) --t;
+            if (t < 0) break;
+            ++idx[t];
+            for (int u = t + 1; u < k; ++u) idx[u] = idx[u - 1] + 1;
+        }
+    }
+    return -1;
+}
+
+bool valid_cover(const Coverage& c, const std::vector<uint32_t>& sel, const std::vector<uint8_t>& ignorable = {},
+                 const std::vector<uint32_t>& also_ignored = {}) {
+    std::vector<uint8_t> cov(c.n_samples, 0);
+    for (uint32_t a : sel) {
+        if (a >= c.n_balls) return false;
+        for (uint32_t k = c.ball_ptr[a]; k < c.ball_ptr[a + 1]; ++k) cov[c.ball_samples[k]] = 1;
+    }
+    for (uint32_t j : also_ignored) cov[j] = 1;
+    for (size_t j = 0; j < c.n_samples; ++j)
+        if (!cov[j] && (ignorable.empty() || !ignorable[j])) return false;
+    return std::is_sorted(sel.begin(), sel.end()) && std::adjacent_find(sel.begin(), sel.end()) == sel.end();
+}
+
+struct Instance {
+    Coverage cov;
+    std::vector<Vec3> centers;
+    std::vector<double> radii;
+};
+
+// A few hundred small instances of several sizes and densities, fixed seeds.
+std::vector<Instance> small_instances(uint64_t seed, int count) {
+    Rng rng(seed);
+    const double dens[] = {0.08, 0.15, 0.25, 0.4};
+    std::vector<Instance> out;
+    for (int t = 0; t < count; ++t) {
+        const size_t m = 12 + rng.below(9), n = 10 + rng.below(9);
+        Instance in;
+        in.cov = random_cover(rng, m, n, dens[t % 4]);
+        for (size_t i = 0; i < n; ++i) {
+            in.centers.emplace_back(rng.uniform(), rng.uniform(), rng.uniform());
+            in.radii.push_back(0.05 + rng.uniform());
+        }
+        out.push_back(std::move(in));
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("set cover: exact equals the brute-force minimum and is proven optimal") {
+    const auto insts = small_instances(1234, 320);
+    int nontrivial = 0;
+    for (size_t t = 0; t < insts.size(); ++t) {
+        const Coverage& c = insts[t].cov;
+        const int best = brute_min(c);
+        REQUIRE(best >= 0);
+        CoverOptions opt;
+        CoverResult res;
+        Status st = solve_set_cover(c, opt, false, Monitor{}, res);
+        INFO("instance " << t << " m=" << c.n_samples << " n=" << c.n_balls);
+        REQUIRE(st.ok());
+        CHECK(valid_cover(c, res.selected));
+        CHECK(res.objective == double(res.selected.size()));
+        CHECK(int(res.objective) == best);
+        CHECK(res.proven_optimal == 1);
+        CHECK(res.lower_bound == res.objective);
+        CHECK(res.gap == 0.0);
+        CHECK(res.rows_before == c.n_samples);
+        CHECK(res.cols_before == c.n_balls);
+        CHECK(res.rows_after <= res.rows_before);
+        CHECK(res.cols_after <= res.cols_before);
+        if (res.cols_after > 0) ++nontrivial;
+    }
+    CHECK(nontrivial > 20);  // the kernel (and so CBC) is exercised, not only the reduction
+}
+
+TEST_CASE("set cover: the reduction alone keeps the optimum") {
+    const auto insts = small_instances(99, 320);
+    for (size_t t = 0; t < insts.size(); ++t) {
+        const Coverage& c = insts[t].cov;
+        std::vector<uint32_t> forced, kb, ks;
+        Coverage ker;
+        REQUIRE(detail::reduce_set_cover(c, CoverOptions{}, false, Monitor{}, forced, ker, kb, ks).ok());
+        INFO("instance " << t);
+        REQUIRE(ker.n_balls == kb.size());
+        REQUIRE(ker.n_samples == ks.size());
+        const int kopt = ker.n_samples == 0 ? 0 : brute_min(ker);
+        REQUIRE(kopt >= 0);
+        CHECK(int(forced.size()) + kopt == brute_min(c));
+        // kernel balls keep their samples (restricted to kernel rows)
+        for (size_t a = 0; a < ker.n_balls; ++a)
+            for (uint32_t k = ker.ball_ptr[a]; k < ker.ball_ptr[a + 1]; ++k) {
+                const uint32_t j = ks[ker.ball_samples[k]];
+                const uint32_t* b0 = &c.ball_samples[c.ball_ptr[kb[a]]];
+                const uint32_t* b1 = b0 + (c.ball_ptr[kb[a] + 1] - c.ball_ptr[kb[a]]);
+                CHECK(std::binary_search(b0, b1, j));
+            }
+        // forced balls plus any kernel cover (here: all kernel balls) cover the original
+        std::vector<uint32_t> sel = forced;
+        sel.insert(sel.end(), kb.begin(), kb.end());
+        std::sort(sel.begin(), sel.end());
+        CHECK(valid_cover(c, sel));
+        std::set<uint32_t> fs(forced.begin(), forced.end()), ks2(kb.begin(), kb.end());
+        for (uint32_t f : forced) CHECK(ks2.count(f) == 0);
+    }
+}
+
+TEST_CASE("set cover: greedy and capp give valid covers with valid bounds") {
+    const auto insts = small_instances(777, 240);
+    for (size_t t = 0; t < insts.size(); ++t) {
+        const Instance& in = insts[t];
+        const int best = brute_min(in.cov);
+        for (Solver s : {Solver::greedy, Solver::capp}) {
+            CoverOptions opt;
+            opt.solver = s;
+            opt.centers = &in.centers;
+            opt.radii = &in.radii;
+            CoverResult res;
+            INFO("instance " << t << " solver " << int(s));
+            REQUIRE(solve_set_cover(in.cov, opt, false, Monitor{}, res).ok());
+            CHECK(valid_cover(in.cov, res.selected));
+            CHECK(res.objective >= best);
+            CHECK(res.lower_bound <= best);
+            CHECK(res.lower_bound >= 0);
+            CHECK(res.proven_optimal == 0);
+            CHECK(res.gap >= 0.0);
+            CHECK(res.gap <= 1.0);
+            // redundancy removal: no selected ball can be dropped
+            for (size_t k = 0; k < res.selected.size(); ++k) {
+                std::vector<uint32_t> less = res.selected;
+                less.erase(less.begin() + long(k));
+                CHECK_FALSE(valid_cover(in.cov, less));
+            }
+            // deterministic
+            CoverResult again;
+            REQUIRE(solve_set_cover(in.cov, opt, false, Monitor{}, again).ok());
+            CHECK(again.selected == res.selected);
+        }
+    }
+}
+
+TEST_CASE("set cover: capp needs centres and radii") {
+    Rng rng(5);
+    Coverage c = random_cover(rng, 10, 8, 0.3);
+    CoverOptions opt;
+    opt.solver = Solver::capp;
+    CoverResult res;
+    CHECK(solve_set_cover(c, opt, false, Monitor{}, res).code == Code::invalid_argument);
+    std::vector<Vec3> centers(7, Vec3::Zero());
+    std::vector<double> radii(7, 1.0);
+    opt.centers = &centers;
+    opt.radii = &radii;
+    CHECK(solve_set_cover(c, opt, false, Monitor{}, res).code == Code::invalid_argument);  // wrong size
+}
+
+TEST_CASE("set cover: ignorable samples, forced_in and forced_out are honoured") {
+    Rng rng(4242);
+    int checked = 0;
+    for (int t = 0; t < 200; ++t) {
+        const size_t m = 12 + rng.below(7), n = 10 + rng.below(7);
+        Coverage c = random_cover(rng, m, n, 0.2 + 0.2 * rng.uniform());
+        std::vector<uint8_t> ign(m, 0), fin(n, 0), fout(n, 0);
+        for (auto& v : ign) v = rng.uniform() < 0.2;
+        for (size_t i = 0; i < n; ++i) {
+            const double u = rng.uniform();
+            if (u < 0.12) fin[i] = 1;
+            else if (u < 0.35) fout[i] = 1;
+        }
+        const int best = brute_min(c, ign, fin, fout);
+        for (Solver s : {Solver::exact, Solver::greedy}) {
+            CoverOptions opt;
+            opt.solver = s;
+            opt.ignorable_samples = ign;
+            opt.forced_in = fin;
+            opt.forced_out = fout;
+            CoverResult res;
+            Status st = solve_set_cover(c, opt, false, Monitor{}, res);
+            INFO("instance " << t << " solver " << int(s));
+            if (best < 0) {
+                CHECK(st.code == Code::uncoverable);
+                continue;
+            }
+            REQUIRE(st.ok());
+            ++checked;
+            CHECK(valid_cover(c, res.selected, ign));
+            for (size_t i = 0; i < n; ++i) {
+                const bool in = std::binary_search(res.selected.begin(), res.selected.end(), uint32_t(i));
+                if (fin[i]) CHECK(in);
+                if (fout[i]) CHECK_FALSE(in);
+            }
+            CHECK(res.lower_bound <= best);
+            if (s == Solver::exact) {
+                CHECK(int(res.objective) == best);
+                CHECK(res.proven_optimal == 1);
+            } else {
+                CHECK(res.objective >= best);
+            }
+        }
+    }
+    CHECK(checked > 150);
+
+    // A sample covered only by a forced-out ball is fine when ignorable.
+    Coverage c;
+    c.n_samples = 3;
+    c.n_balls = 2;
+    c.ball_ptr = {0, 2, 3};
+    c.ball_samples = {0, 1, 2};
+    c.build_transpose();
+    CoverOptions opt;
+    opt.forced_out = {1, 0};
+    CoverResult res;
+    CHECK(solve_set_cover(c, opt, false, Monitor{}, res).code == Code::uncoverable);
+    opt.ignorable_samples = {1, 1, 0};
+    REQUIRE(solve_set_cover(c, opt, false, Monitor{}, res).ok());
+    CHECK(res.selected == std::vector<uint32_t>{1});
+    // a ball both forced in and forced out, or masks of the wrong size, are rejected
+    opt.forced_in = {0, 1};
+    opt.forced_out = {0, 1};
+    CHECK(solve_set_cover(c, opt, false, Monitor{}, res).code == Code::invalid_argument);
+    opt.forced_in = {1};
+    opt.forced_out.clear();
+    CHECK(solve_set_cover(c, opt, false, Monitor{}, res).code == Code::invalid_argument);
+    opt.forced_in.clear();
+    opt.ignorable_samples = {0, 0};
+    CHECK(solve_set_cover(c, opt, false, Monitor{}, res).code == Code::invalid_argument);
+}
+
+TEST_CASE("set cover: uncoverable samples are reported, or skipped on request") {
+    Rng rng(31);
+    for (size_t n_unc : {size_t(3), size_t(12)}) {
+        const size_t m = 40, n = 30;
+        Coverage c = random_cover(rng, m, n, 0.1);
+        // remove samples 5, 8, ... from every ball
+        std::vector<uint32_t> unc;
+        for (size_t k = 0; k < n_unc; ++k) unc.push_back(uint32_t(5 + 3 * k) % uint32_t(m));
+        std::sort(unc.begin(), unc.end());
+        Coverage d;
+        d.n_samples = m;
+        d.n_balls = n;
+        d.ball_ptr.push_back(0);
+        for (size_t a = 0; a < n; ++a) {
+            for (uint32_t k = c.ball_ptr[a]; k < c.ball_ptr[a + 1]; ++k)
+                if (!std::binary_search(unc.begin(), unc.end(), c.ball_samples[k])) d.ball_samples.push_back(c.ball_samples[k]);
+            d.ball_ptr.push_back(uint32_t(d.ball_samples.size()));
+        }
+        d.build_transpose();
+        CoverResult res;
+        Status st = solve_set_cover(d, CoverOptions{}, false, Monitor{}, res);
+        CHECK(st.code == Code::uncoverable);
+        const std::string head = std::to_string(n_unc) + " of " + std::to_string(m) + " samples are covered by no candidate ball (first: ";
+        CHECK(st.message.rfind(head, 0) == 0);
+        CHECK(st.message.find(std::to_string(unc[0]) + ", " + std::to_string(unc[1])) != std::string::npos);
+        CHECK((st.message.find(", ...)") != std::string::npos) == (n_unc > 10));
+        st = solve_set_cover(d, CoverOptions{}, true, Monitor{}, res);
+        REQUIRE(st.ok());
+        CHECK(res.uncovered == unc);
+        CHECK(valid_cover(d, res.selected, {}, unc));
+        CHECK(res.rows_before == m - n_unc);
+    }
+}
+
+TEST_CASE("set cover: a time-limited solve returns a valid cover and an honest bound") {
+    Rng rng(2024);
+    Coverage c = random_cover(rng, 300, 2000, 0.03);
+    CoverOptions opt;
+    opt.time_limit_s = 0.05;
+    CoverResult res;
+    REQUIRE(solve_set_cover(c, opt, false, Monitor{}, res).ok());
+    CHECK(valid_cover(c, res.selected));
+    CHECK(res.lower_bound <= res.objective);
+    CHECK(res.lower_bound >= 1);
+    CHECK(res.gap >= 0.0);
+    CHECK(res.gap < 1.0);
+    if (res.proven_optimal) CHECK(res.lower_bound == res.objective);
+    CoverOptions g;
+    g.solver = Solver::greedy;
+    CoverResult gr;
+    REQUIRE(solve_set_cover(c, g, false, Monitor{}, gr).ok());
+    CHECK(res.objective <= gr.objective);  // never worse than greedy
+    CHECK(gr.lower_bound <= res.objective);
+}
+
+TEST_CASE("set cover: cancellation and malformed coverage") {
+    Rng rng(8);
+    Coverage c = random_cover(rng, 20, 15, 0.2);
+    std::atomic<int> flag{1};
+    Monitor mon;
+    mon.cancel_flag = &flag;
+    CoverResult res;
+    CHECK(solve_set_cover(c, CoverOptions{}, false, mon, res).code == Code::cancelled);
+    Coverage bad = c;
+    bad.ball_samples[0] = 99;  // out of range
+    CHECK(solve_set_cover(bad, CoverOptions{}, false, Monitor{}, res).code == Code::invalid_input);
+    bad = c;
+    bad.ball_ptr.pop_back();
+    CHECK(solve_set_cover(bad, CoverOptions{}, false, Monitor{}, res).code == Code::invalid_input);
+    // an inconsistent transpose is not trusted: the answer stays right
+    bad = c;
+    std::reverse(bad.sample_balls.begin(), bad.sample_balls.end());
+    REQUIRE(solve_set_cover(bad, CoverOptions{}, false, Monitor{}, res).ok());
+    CHECK(int(res.objective) == brute_min(c));
+    // no transpose at all is fine too
+    bad = c;
+    bad.sample_ptr.clear();
+    bad.sample_balls.clear();
+    REQUIRE(solve_set_cover(bad, CoverOptions{}, false, Monitor{}, res).ok());
+    CHECK(int(res.objective) == brute_min(c));
+    // empty problem
+    Coverage e;
+    e.ball_ptr = {0};
+    REQUIRE(solve_set_cover(e, CoverOptions{}, false, Monitor{}, res).ok());
+    CHECK(res.selected.empty());
+    CHECK(res.proven_optimal == 1);
+}
+
+#if defined(__unix__)
+TEST_CASE("set cover: the exact solver prints nothing") {
+    Rng rng(77);
+    Coverage c = random_cover(rng, 60, 80, 0.08);
+    std::fflush(stdout);
+    char path[] = "/tmp/ca_setcover_stdoutXXXXXX";
+    const int fd = mkstemp(path);
+    REQUIRE(fd >= 0);
+    const int saved = dup(1);
+    dup2(fd, 1);
+    CoverResult res;
+    const Status st = solve_set_cover(c, CoverOptions{}, false, Monitor{}, res);
+    std::fflush(stdout);
+    dup2(saved, 1);
+    close(saved);
+    const off_t size = lseek(fd, 0, SEEK_END);
+    close(fd);
+    unlink(path);
+    REQUIRE(st.ok());
+    CHECK(res.cols_after > 0);  // CBC was called
+    CHECK(size == 0);
+}
+#endif
+
+TEST_CASE("coverage: k-d tree query equals brute-force distances") {
+    Rng rng(11);
+    for (int t = 0; t < 5; ++t) {
+        const size_t m = 300 + rng.below(200), n = 150;
+        std::vector<Vec3> S, C;
+        std::vector<double> R;
+        for (size_t j = 0; j < m; ++j) S.emplace_back(rng.uniform(), rng.uniform(), rng.uniform());
+        for (size_t i = 0; i < n; ++i) {
+            C.emplace_back(rng.uniform(), rng.uniform(), rng.uniform());
+            R.push_back(0.3 * rng.uniform());
+        }
+        // a sample exactly on a sphere counts as covered, and a zero radius covers a coincident point
+        C.push_back(S[0] - Vec3(0.25, 0, 0));
+        R.push_back(0.25);
+        C.push_back(S[1]);
+        R.push_back(0.0);
+        Coverage cov;
+        REQUIRE(build_coverage(S, C, R, Monitor{}, cov).ok());
+        REQUIRE(cov.n_samples == m);
+        REQUIRE(cov.n_balls == n + 2);
+        REQUIRE(cov.ball_ptr.size() == n + 3);
+        for (size_t i = 0; i < cov.n_balls; ++i) {
+            std::vector<uint32_t> want;
+            for (size_t j = 0; j < m; ++j)
+                if ((S[j] - C[i]).norm() <= R[i] * (1 + 1e-12)) want.push_back(uint32_t(j));
+            std::vector<uint32_t> got(cov.ball_samples.begin() + cov.ball_ptr[i], cov.ball_samples.begin() + cov.ball_ptr[i + 1]);
+            CHECK(got == want);
+        }
+        CHECK(std::binary_search(cov.ball_samples.begin() + cov.ball_ptr[n], cov.ball_samples.begin() + cov.ball_ptr[n + 1], 0u));
+        CHECK(std::binary_search(cov.ball_samples.begin() + cov.ball_ptr[n + 1], cov.ball_samples.begin() + cov.ball_ptr[n + 2], 1u));
+        // transpose: sorted and consistent
+        REQUIRE(cov.sample_ptr.size() == m + 1);
+        for (size_t j = 0; j < m; ++j) {
+            CHECK(std::is_sorted(cov.sample_balls.begin() + cov.sample_ptr[j], cov.sample_balls.begin() + cov.sample_ptr[j + 1]));
+            for (uint32_t k = cov.sample_ptr[j]; k < cov.sample_ptr[j + 1]; ++k) {
+                const uint32_t i = cov.sample_balls[k];
+                CHECK(std::binary_search(cov.ball_samples.begin() + cov.ball_ptr[i], cov.ball_samples.begin() + cov.ball_ptr[i + 1], uint32_t(j)));
+            }
+        }
+    }
+}
+
+TEST_CASE("coverage: bad input and cancellation") {
+    std::vector<Vec3> S{Vec3(0, 0, 0)}, C{Vec3(0, 0, 0)};
+    Coverage cov;
+    CHECK(build_coverage(S, C, {}, Monitor{}, cov).code == Code::invalid_argument);
+    CHECK(build_coverage(S, C, {-1.0}, Monitor{}, cov).code == Code::invalid_input);
+    CHECK(build_coverage({Vec3(0, 0, std::nan(""))}, C, {1.0}, Monitor{}, cov).code == Code::invalid_input);
+    REQUIRE(build_coverage({}, C, {1.0}, Monitor{}, cov).ok());
+    CHECK(cov.ball_ptr == std::vector<uint32_t>{0, 0});
+    std::atomic<int> flag{1};
+    Monitor mon;
+    mon.cancel_flag = &flag;
+    CHECK(build_coverage(S, C, {1.0}, mon, cov).code == Code::cancelled);
+}
