@@ -6,6 +6,7 @@
 
 #include "candidates.h"
 #include "connect.h"
+#include "evaluate.h"
 #include "selection.h"
 
 #include <atomic>
@@ -165,6 +166,31 @@ Status read_points(const double* base, size_t count, size_t stride, const char* 
     return Status::success();
 }
 
+// Reads a surface view into raw arrays (no validation of values: prepare_surface does that).
+Status read_surface(const ca_surface_view* surface, bool want_normals, ca::Mesh& raw, std::vector<Vec3>& normals) {
+    if (surface->struct_size != sizeof(ca_surface_view))
+        return ca::fail(Code::struct_size, "ca_surface_view.struct_size is " + std::to_string(surface->struct_size) +
+                                               ", this library expects " + std::to_string(sizeof(ca_surface_view)) +
+                                               " (fill it with ca_surface_view_init)");
+    if (surface->vertex_count > 0 && !surface->positions) return null_pointer("surface->positions");
+    if (surface->triangle_count > 0 && !surface->triangles) return null_pointer("surface->triangles");
+    if (surface->vertex_count > UINT32_MAX) return ca::fail(Code::invalid_argument, "more than 2^32 - 1 vertices");
+    Status st = read_points(surface->positions, surface->vertex_count, surface->position_stride,
+                            "surface->position_stride", raw.vertices);
+    if (!st.ok()) return st;
+    size_t ts;
+    st = check_stride(surface->triangle_stride, 3 * sizeof(uint32_t), "surface->triangle_stride", ts);
+    if (!st.ok()) return st;
+    raw.triangles.resize(surface->triangle_count);
+    for (size_t t = 0; t < surface->triangle_count; ++t) {
+        const uint32_t* f = reinterpret_cast<const uint32_t*>(reinterpret_cast<const char*>(surface->triangles) + t * ts);
+        raw.triangles[t] = {f[0], f[1], f[2]};
+    }
+    if (want_normals && surface->triangle_count == 0 && surface->normals)
+        return read_points(surface->normals, surface->vertex_count, surface->normal_stride, "surface->normal_stride", normals);
+    return Status::success();
+}
+
 void fill(Array<double>& a, const Allocator& al, const std::vector<Vec3>& pts, const ca::Normalization& n) {
     a.assign(al, 3 * pts.size());
     for (size_t i = 0; i < pts.size(); ++i) {
@@ -314,38 +340,15 @@ ca_status ca_candidates(ca_context* ctx, const ca_surface_view* surface, const c
     return guarded(ctx, [&]() -> Status {
         if (!out) return null_pointer("out");
         if (!surface) return null_pointer("surface");
-        if (surface->struct_size != sizeof(ca_surface_view))
-            return ca::fail(Code::struct_size, "ca_surface_view.struct_size is " + std::to_string(surface->struct_size) +
-                                                   ", this library expects " + std::to_string(sizeof(ca_surface_view)) +
-                                                   " (fill it with ca_surface_view_init)");
         ca_candidate_options o;
         Status st = read_options(options, o, ca_candidate_options_init, "ca_candidate_options");
         if (!st.ok()) return st;
         if (o.generator != CA_CANDIDATES_VORONOI && o.generator != CA_CANDIDATES_RANDOM)
             return ca::fail(Code::invalid_argument, "unknown candidate generator " + std::to_string(o.generator));
-        if (surface->vertex_count > 0 && !surface->positions) return null_pointer("surface->positions");
-        if (surface->triangle_count > 0 && !surface->triangles) return null_pointer("surface->triangles");
-        if (surface->vertex_count > UINT32_MAX)
-            return ca::fail(Code::invalid_argument, "more than 2^32 - 1 vertices");
-
         ca::Mesh raw;
-        st = read_points(surface->positions, surface->vertex_count, surface->position_stride,
-                         "surface->position_stride", raw.vertices);
-        if (!st.ok()) return st;
-        size_t ts;
-        st = check_stride(surface->triangle_stride, 3 * sizeof(uint32_t), "surface->triangle_stride", ts);
-        if (!st.ok()) return st;
-        raw.triangles.resize(surface->triangle_count);
-        for (size_t t = 0; t < surface->triangle_count; ++t) {
-            const uint32_t* f = reinterpret_cast<const uint32_t*>(reinterpret_cast<const char*>(surface->triangles) + t * ts);
-            raw.triangles[t] = {f[0], f[1], f[2]};
-        }
         std::vector<Vec3> normals;
-        if (surface->triangle_count == 0 && surface->normals) {
-            st = read_points(surface->normals, surface->vertex_count, surface->normal_stride,
-                             "surface->normal_stride", normals);
-            if (!st.ok()) return st;
-        }
+        st = read_surface(surface, true, raw, normals);
+        if (!st.ok()) return st;
         ca::Surface surf;
         st = ca::prepare_surface(std::move(raw), std::move(normals), surf);
         if (!st.ok()) return st;
@@ -604,6 +607,116 @@ ca_status ca_skeleton_stats_get(const ca_skeleton* sk, ca_skeleton_stats* stats)
     if (stats->struct_size != sizeof(ca_skeleton_stats)) return CA_ERROR_STRUCT_SIZE;
     *stats = sk->stats;
     return CA_OK;
+}
+
+// ---- evaluation ----------------------------------------------------------------------------------
+
+void ca_skeleton_view_init(ca_skeleton_view* v) {
+    if (!v) return;
+    std::memset(v, 0, sizeof *v);
+    v->struct_size = sizeof *v;
+}
+
+ca_status ca_skeleton_get_view(const ca_skeleton* sk, ca_skeleton_view* v) {
+    if (!sk || !v) return CA_ERROR_NULL_POINTER;
+    if (v->struct_size != sizeof(ca_skeleton_view)) return CA_ERROR_STRUCT_SIZE;
+    v->centers = sk->centers.data;
+    v->radii = sk->radii.data;
+    v->vertex_count = sk->radii.size;
+    v->edges = sk->edges.data;
+    v->edge_count = sk->edges.size / 2;
+    v->faces = sk->faces.data;
+    v->face_count = sk->faces.size / 3;
+    return CA_OK;
+}
+
+void ca_evaluate_options_init(ca_evaluate_options* o) {
+    if (!o) return;
+    std::memset(o, 0, sizeof *o);
+    o->struct_size = sizeof *o;
+    o->surface_samples = 30000;
+    o->envelope_samples = 100000;
+    o->seed = 1;
+}
+
+ca_status ca_evaluate(ca_context* ctx, const ca_surface_view* surface, const ca_skeleton_view* skeleton,
+                      const ca_evaluate_options* options, ca_evaluation* result) {
+    return guarded(ctx, [&]() -> Status {
+        if (!surface) return null_pointer("surface");
+        if (!skeleton) return null_pointer("skeleton");
+        if (!result) return null_pointer("result");
+        if (result->struct_size != sizeof(ca_evaluation))
+            return ca::fail(Code::struct_size, "ca_evaluation.struct_size is " + std::to_string(result->struct_size) +
+                                                   ", this library expects " + std::to_string(sizeof(ca_evaluation)));
+        if (skeleton->struct_size != sizeof(ca_skeleton_view))
+            return ca::fail(Code::struct_size, "ca_skeleton_view.struct_size is " + std::to_string(skeleton->struct_size) +
+                                                   ", this library expects " + std::to_string(sizeof(ca_skeleton_view)) +
+                                                   " (fill it with ca_skeleton_view_init)");
+        ca_evaluate_options o;
+        Status st = read_options(options, o, ca_evaluate_options_init, "ca_evaluate_options");
+        if (!st.ok()) return st;
+        if (o.surface_samples == 0 || o.envelope_samples == 0)
+            return ca::fail(Code::invalid_argument, "surface_samples and envelope_samples must be at least 1");
+        ca::Mesh raw;
+        std::vector<Vec3> normals;
+        st = read_surface(surface, false, raw, normals);
+        if (!st.ok()) return st;
+        ca::Surface surf;
+        st = ca::prepare_surface(std::move(raw), {}, surf, false);
+        if (!st.ok()) return st;
+
+        const size_t nv = skeleton->vertex_count;
+        if (nv == 0) return ca::fail(Code::degenerate_input, "the skeleton has no vertices");
+        if (!skeleton->centers) return null_pointer("skeleton->centers");
+        if (!skeleton->radii) return null_pointer("skeleton->radii");
+        if (skeleton->edge_count && !skeleton->edges) return null_pointer("skeleton->edges");
+        if (skeleton->face_count && !skeleton->faces) return null_pointer("skeleton->faces");
+        ca::Skeleton sk;
+        const ca::Normalization& n = surf.norm;
+        for (size_t i = 0; i < nv; ++i) {
+            const Vec3 c(skeleton->centers[3 * i], skeleton->centers[3 * i + 1], skeleton->centers[3 * i + 2]);
+            const double r = skeleton->radii[i];
+            if (!c.allFinite() || !(std::isfinite(r) && r >= 0))
+                return ca::fail(Code::invalid_input, "skeleton ball " + std::to_string(i) + " has a NaN, infinite or negative value");
+            sk.balls.push_back({n.to_internal(c), r / n.scale});
+        }
+        for (size_t e = 0; e < skeleton->edge_count; ++e) {
+            const uint32_t a = skeleton->edges[2 * e], b = skeleton->edges[2 * e + 1];
+            if (a >= nv || b >= nv)
+                return ca::fail(Code::invalid_input, "skeleton edge " + std::to_string(e) + " references vertex " +
+                                                         std::to_string(std::max(a, b)) + " of " + std::to_string(nv));
+            sk.edges.push_back({a, b});
+        }
+        for (size_t f = 0; f < skeleton->face_count; ++f) {
+            ca::Tri t{skeleton->faces[3 * f], skeleton->faces[3 * f + 1], skeleton->faces[3 * f + 2]};
+            for (uint32_t v : t)
+                if (v >= nv)
+                    return ca::fail(Code::invalid_input, "skeleton face " + std::to_string(f) + " references vertex " +
+                                                             std::to_string(v) + " of " + std::to_string(nv));
+            sk.faces.push_back(t);
+        }
+        ca::EvaluateOptions eo;
+        eo.surface_samples = o.surface_samples;
+        eo.envelope_samples = o.envelope_samples;
+        eo.seed = o.seed;
+        const auto t0 = std::chrono::steady_clock::now();
+        ca::EvaluateResult er;
+        st = ca::evaluate(surf.mesh, sk, eo, ctx->monitor(), er);
+        if (!st.ok()) return st;
+        ca_evaluation out{};
+        out.struct_size = sizeof out;
+        out.hd_surface_to_recon = er.hd_surface_to_recon;
+        out.mean_surface_to_recon = er.mean_surface_to_recon;
+        out.hd_recon_to_surface = er.hd_recon_to_surface;
+        out.mean_recon_to_surface = er.mean_recon_to_surface;
+        out.hd_two_sided = er.hd_two_sided;
+        out.diagonal = er.diagonal * n.scale;
+        out.surface_samples_used = er.surface_samples_used;
+        out.envelope_samples_used = er.envelope_samples_used;
+        out.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        *result = out;
+        return Status::success();
+    });
 }
 
 }  // extern "C"

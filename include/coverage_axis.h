@@ -276,6 +276,52 @@ typedef struct ca_skeleton_stats {
 
 CA_API ca_status ca_skeleton_stats_get(const ca_skeleton* skeleton, ca_skeleton_stats* stats);
 
+/* ---- evaluation: how far is a skeleton from the shape? ----------------------------------- */
+/* The reconstruction is the union of the skeleton's balls, the medial cones of its edges and the
+   medial slabs of its faces (exact signed distances). Reported: one-sided Hausdorff distances
+   surface -> reconstruction and reconstruction -> surface (maximum and mean) and the two-sided
+   maximum, all in percent of the input's bounding-box diagonal. */
+typedef struct ca_skeleton_view {
+    uint32_t struct_size;        /* sizeof(ca_skeleton_view) */
+    const double* centers;       /* x y z per ball, packed */
+    const double* radii;         /* one per ball */
+    size_t vertex_count;
+    const uint32_t* edges;       /* i j per edge, packed; may be NULL if edge_count == 0 */
+    size_t edge_count;
+    const uint32_t* faces;       /* i j k per face, packed; may be NULL if face_count == 0 */
+    size_t face_count;
+} ca_skeleton_view;
+
+CA_API void ca_skeleton_view_init(ca_skeleton_view* view);
+/* A view of a skeleton result (valid while the skeleton lives). */
+CA_API ca_status ca_skeleton_get_view(const ca_skeleton* skeleton, ca_skeleton_view* view);
+
+typedef struct ca_evaluate_options {
+    uint32_t struct_size;        /* sizeof(ca_evaluate_options) */
+    uint32_t surface_samples;    /* area-uniform samples of the input, plus its vertices; default 30000 */
+    uint32_t envelope_samples;   /* samples of the reconstruction's boundary; default 100000 */
+    uint64_t seed;               /* default 1 */
+} ca_evaluate_options;
+
+CA_API void ca_evaluate_options_init(ca_evaluate_options* options);
+
+typedef struct ca_evaluation {
+    uint32_t struct_size;        /* set by the caller: sizeof(ca_evaluation) */
+    double hd_surface_to_recon;  /* max over surface samples of the distance to the reconstruction, % */
+    double mean_surface_to_recon;
+    double hd_recon_to_surface;  /* max over reconstruction boundary samples of the distance to the surface, % */
+    double mean_recon_to_surface;
+    double hd_two_sided;         /* max of the two, % */
+    double diagonal;             /* the input's bounding-box diagonal, caller's units */
+    uint64_t surface_samples_used, envelope_samples_used;
+    double time_s;
+} ca_evaluation;
+
+/* surface: the input mesh (or a point cloud: triangle_count 0, normals not needed; distances
+   then go to the nearest point). Fills *result; no allocation to free. */
+CA_API ca_status ca_evaluate(ca_context* ctx, const ca_surface_view* surface, const ca_skeleton_view* skeleton,
+                             const ca_evaluate_options* options, ca_evaluation* result);
+
 #ifdef __cplusplus
 }
 #endif

@@ -27,7 +27,7 @@ static bool all_in_one_plane(const std::vector<Vec3>& pts, double longest) {
     return std::sqrt(std::max(0.0, es.eigenvalues()[0])) <= 1e-9 * longest;
 }
 
-Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out) {
+Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool require_normals) {
     out = Surface{};
     const size_t nv = raw.vertices.size();
     if (nv == 0) return fail(Code::degenerate_input, "the input has no vertices");
@@ -40,7 +40,8 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out) {
                 return fail(Code::invalid_input, "triangle " + std::to_string(t) + " references vertex " +
                                                      std::to_string(v) + " of " + std::to_string(nv));
     const bool cloud = raw.triangles.empty();
-    if (cloud) {
+    if (cloud && !require_normals) normals.clear();
+    if (cloud && require_normals) {
         if (normals.size() != nv)
             return fail(Code::invalid_input, "a point cloud (no triangles) needs one normal per point (" +
                                                  std::to_string(normals.size()) + " normals for " +

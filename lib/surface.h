@@ -24,8 +24,9 @@ struct Surface {
 
 // Validates raw caller data (finite coordinates, indices in range, non-degenerate, not all in
 // one plane, unit normals for point clouds) and normalises it. `mesh.triangles` empty means a
-// point cloud, which needs `normals` (one per vertex). Takes its arguments by value (moved in).
-Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out);
+// point cloud, which needs `normals` (one per vertex) unless `require_normals` is false (the
+// evaluation only measures distances). Takes its arguments by value (moved in).
+Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool require_normals = true);
 
 // Axis-aligned bounding box of points (min, max); empty input gives (0, 0).
 std::pair<Vec3, Vec3> bounding_box(const std::vector<Vec3>& pts);
