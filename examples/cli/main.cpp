@@ -2,8 +2,7 @@
 // (.ma / .obj / .ply), through the library's C ABI only. Prints a one-screen summary, or one
 // JSON object with --json. Exit codes: 0 success, 1 the library refused or failed (message on
 // stderr), 2 bad command line, 3 a file could not be read or written.
-#include "coverage_axis.h"
-#include "mesh_io.h"
+#include "cli.h"
 
 #include <algorithm>
 #include <chrono>
@@ -19,6 +18,7 @@ namespace {
 
 const char* kUsage =
     "usage: coverage-axis INPUT [options]\n"
+    "       coverage-axis evaluate INPUT SKELETON.ma [--json]   (see coverage-axis evaluate --help)\n"
     "  INPUT                     .obj .off .ply (mesh) or .xyz / .obj with vn (oriented point cloud)\n"
     "  -o, --output OUT.ma       write the skeleton as .ma (default: INPUT stem + .ma)\n"
     "  --obj OUT.obj             also write .obj (v, l, f)\n"
@@ -36,6 +36,7 @@ const char* kUsage =
     "  --threads N               worker threads (default 0 = all cores)\n"
     "  --export-samples FILE     write the covered surface samples (v x y z)\n"
     "  --export-candidates FILE  write the candidate balls (v x y z r)\n"
+    "  --evaluate                measure the skeleton: Hausdorff distances in % of the bbox diagonal\n"
     "  --json                    print one JSON object on stdout\n"
     "  --quiet                   no summary, no progress bar\n";
 
@@ -45,7 +46,7 @@ struct Args {
     double delta = 0.02, scale = 0, time_limit = 60;
     long samples = 1500, voronoi_samples = 4000, random_count = 10000, threads = 0;
     unsigned long long seed = 1;
-    bool json = false, quiet = false, skip_uncoverable = false;
+    bool json = false, quiet = false, skip_uncoverable = false, evaluate = false;
 };
 
 int usage_error(const std::string& msg) {
@@ -76,6 +77,7 @@ int parse_args(int argc, char** argv, Args& a) {
         double d;
         if (k == "-h" || k == "--help") { std::fputs(kUsage, stdout); return -1; }
         else if (k == "--json") a.json = true;
+        else if (k == "--evaluate") a.evaluate = true;
         else if (k == "--quiet") a.quiet = true;
         else if (k == "--skip-uncoverable") a.skip_uncoverable = true;
         else if (k[0] == '-' && k.size() > 1) {
@@ -159,6 +161,7 @@ int library_error(ca_context* ctx, ca_status st, const char* step) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    if (argc > 1 && std::strcmp(argv[1], "evaluate") == 0) return cli::evaluate_command(argc, argv);
     Args a;
     const int pr = parse_args(argc, argv, a);
     if (pr < 0) return 0;
@@ -202,13 +205,7 @@ int main(int argc, char** argv) {
     // Generate unless both the samples and the candidates come from files; files then replace
     // the generated parts.
     if (!(candidates_from_file && !a.surface_samples.empty())) {
-        ca_surface_view view;
-        ca_surface_view_init(&view);
-        view.positions = mesh.positions.data();
-        view.vertex_count = mesh.positions.size() / 3;
-        view.triangles = mesh.triangles.data();
-        view.triangle_count = mesh.triangles.size() / 3;
-        view.normals = mesh.normals.empty() ? nullptr : mesh.normals.data();
+        const ca_surface_view view = cli::surface_view(mesh);
         ca_candidate_options co;
         ca_candidate_options_init(&co);
         co.generator = a.candidates == "random" ? CA_CANDIDATES_RANDOM : CA_CANDIDATES_VORONOI;
@@ -285,20 +282,35 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "coverage-axis: %s\n", err.c_str());
         return 3;
     }
-    const double t_write = since(t0), t_total = since(t_start);
+    const double t_write = since(t0);
+    ca_evaluation ev{};
+    double t_evaluate = 0;
+    if (a.evaluate) {
+        t0 = Clock::now();
+        ca_skeleton_view view;
+        ca_skeleton_view_init(&view);
+        ca_skeleton_get_view(owned.sk, &view);
+        ca_evaluate_options eo;
+        ca_evaluate_options_init(&eo);
+        if (!cli::evaluate(ctx, mesh, view, eo, ev)) return 1;
+        t_evaluate = since(t0);
+    }
+    const double t_total = since(t_start);
 
     const size_t uncovered = ca_selection_uncovered_count(owned.sel);
     if (a.json) {
         std::printf("{\"input\":\"%s\",\"surface_samples\":%zu,\"candidates\":%zu,\"selected\":%zu,\"edges\":%llu,"
                     "\"faces\":%llu,\"components\":%llu,\"isolated\":%llu,\"betti1\":%lld,\"uncovered\":%zu,"
                     "\"optimal\":%s,\"objective\":%.0f,\"lower_bound\":%.0f,\"gap\":%.6g,\"delta\":%.9g,"
-                    "\"solver\":\"%s\",\"output\":\"%s\","
-                    "\"time_s\":{\"read\":%.4f,\"candidates\":%.4f,\"select\":%.4f,\"connect\":%.4f,\"write\":%.4f,\"total\":%.4f}}\n",
+                    "\"solver\":\"%s\",\"output\":\"%s\",%s%s"
+                    "\"time_s\":{\"read\":%.4f,\"candidates\":%.4f,\"select\":%.4f,\"connect\":%.4f,\"write\":%.4f,"
+                    "\"evaluate\":%.4f,\"total\":%.4f}}\n",
                     json_escape(a.input).c_str(), n_samples, n_candidates, nv, (unsigned long long)ks.edges,
                     (unsigned long long)ks.faces, (unsigned long long)ks.components, (unsigned long long)ks.isolated,
                     (long long)ks.betti1, uncovered, ss.proven_optimal ? "true" : "false", ss.objective, ss.lower_bound,
-                    ss.gap, ss.delta_absolute, a.solver.c_str(), json_escape(a.out_ma).c_str(), t_read, t_candidates,
-                    t_select, t_connect, t_write, t_total);
+                    ss.gap, ss.delta_absolute, a.solver.c_str(), json_escape(a.out_ma).c_str(),
+                    a.evaluate ? cli::evaluation_json(ev).c_str() : "", a.evaluate ? "," : "", t_read, t_candidates,
+                    t_select, t_connect, t_write, t_evaluate, t_total);
     } else if (!a.quiet) {
         std::printf("input       %s (%zu vertices, %zu triangles)\n", a.input.c_str(), mesh.positions.size() / 3, mesh.triangles.size() / 3);
         std::printf("samples     %zu surface samples, %zu candidate balls (%s)\n", n_samples, n_candidates, a.candidates.c_str());
@@ -315,6 +327,9 @@ int main(int argc, char** argv) {
         std::printf("skeleton    %zu vertices, %llu edges, %llu faces, %llu component(s), %llu isolated, b1 = %lld\n", nv,
                     (unsigned long long)ks.edges, (unsigned long long)ks.faces, (unsigned long long)ks.components,
                     (unsigned long long)ks.isolated, (long long)ks.betti1);
+        if (a.evaluate)
+            std::printf("hausdorff   surface->skeleton %.3f %%, skeleton->surface %.3f %%, two-sided %.3f %% of the bbox diagonal\n",
+                        ev.hd_surface_to_recon, ev.hd_recon_to_surface, ev.hd_two_sided);
         std::printf("time        read %.3f s, candidates %.3f s, select %.3f s, connect %.3f s, total %.3f s\n", t_read,
                     t_candidates, t_select, t_connect, t_total);
         std::printf("wrote       %s", a.out_ma.c_str());

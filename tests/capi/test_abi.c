@@ -327,6 +327,49 @@ static void test_box_pipeline(void) {
     ca_context_destroy(ctx);
 }
 
+/* Evaluation: known answer for one ball in the box, and bad input. */
+static void test_evaluate(void) {
+    ca_context* ctx = NULL;
+    ca_surface_view v = box_view();
+    ca_skeleton_view sk;
+    ca_evaluate_options eo;
+    ca_evaluation e;
+    const double center[] = {1, 0.5, 0.5}, radius[] = {0.5};
+    const uint32_t bad_edge[] = {0, 3};
+    const double diag = sqrt(6.0);
+    CHECK(ca_context_create(NULL, &ctx) == CA_OK);
+    ca_skeleton_view_init(&sk);
+    sk.centers = center;
+    sk.radii = radius;
+    sk.vertex_count = 1;
+    ca_evaluate_options_init(&eo);
+    eo.surface_samples = 20000;
+    eo.envelope_samples = 50000;
+    e.struct_size = sizeof e;
+    CHECK(ca_evaluate(ctx, &v, &sk, &eo, &e) == CA_OK);
+    /* surface -> ball: the box corners, |(1, .5, .5)| - .5; ball -> surface: the ball's tips at x = .5, 1.5 */
+    CHECK(fabs(e.hd_surface_to_recon - 100 * (sqrt(1.5) - 0.5) / diag) < 0.01);
+    CHECK(fabs(e.hd_recon_to_surface - 100 * 0.5 / diag) < 0.3);
+    CHECK(e.hd_recon_to_surface <= 100 * 0.5 / diag + 1e-9);
+    CHECK(fabs(e.hd_two_sided - e.hd_surface_to_recon) < 1e-12);
+    CHECK(fabs(e.diagonal - diag) < 1e-12);
+    CHECK(e.surface_samples_used >= 20000 && e.envelope_samples_used >= 50000);
+
+    CHECK(ca_evaluate(ctx, NULL, &sk, &eo, &e) == CA_ERROR_NULL_POINTER);
+    CHECK(ca_evaluate(ctx, &v, &sk, &eo, NULL) == CA_ERROR_NULL_POINTER);
+    e.struct_size = 1;
+    CHECK(ca_evaluate(ctx, &v, &sk, &eo, &e) == CA_ERROR_STRUCT_SIZE);
+    e.struct_size = sizeof e;
+    sk.edges = bad_edge;
+    sk.edge_count = 1;
+    CHECK(ca_evaluate(ctx, &v, &sk, &eo, &e) == CA_ERROR_INVALID_INPUT);
+    CHECK(strstr(ca_context_last_error(ctx), "edge 0 references vertex 3 of 1") != NULL);
+    sk.edge_count = 0;
+    sk.vertex_count = 0;
+    CHECK(ca_evaluate(ctx, &v, &sk, &eo, &e) == CA_ERROR_DEGENERATE_INPUT);
+    ca_context_destroy(ctx);
+}
+
 int main(void) {
     test_versions();
     test_null_and_sizes();
@@ -334,6 +377,7 @@ int main(void) {
     test_arrays_uncoverable_and_copy();
     test_cancel();
     test_box_pipeline();
+    test_evaluate();
     printf("test_abi: %d passed, %d failed\n", checks - failures, failures);
     return failures ? 1 : 0;
 }

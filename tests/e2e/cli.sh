@@ -58,7 +58,18 @@ check "samples and candidates from files" test "$(json_field candidates "$tmp/f.
 "$tool" "$data/fox.obj" -o "$tmp/sc.ma" --scale 1.5 --skip-uncoverable --quiet
 check "scale dilation runs" test $? -eq 0
 
-# 5. bad input: clear message, documented exit code, no partial output
+# 5. evaluation: of our own skeleton and as a separate command on the written .ma
+"$tool" "$data/fox.obj" -o "$tmp/e.ma" --evaluate --json > "$tmp/e.json"
+check "--evaluate runs" test $? -eq 0
+check "--evaluate adds the Hausdorff distances" grep -q '"hd_two_sided":[0-9.]*' "$tmp/e.json"
+"$tool" evaluate "$data/fox.obj" "$tmp/e.ma" --json > "$tmp/e2.json"
+check "evaluate command runs" test $? -eq 0
+check "evaluate command gives the same two-sided distance" test "$(json_field hd_two_sided "$tmp/e.json")" = "$(json_field hd_two_sided "$tmp/e2.json")"
+printf '2 0 0\nv 0 0 0 1\n' > "$tmp/bad.ma"
+"$tool" evaluate "$data/fox.obj" "$tmp/bad.ma" > /dev/null 2> "$tmp/err"
+check "evaluate: a malformed .ma is a clear failure" test $? -eq 3 -a -s "$tmp/err"
+
+# 6. bad input: clear message, documented exit code, no partial output
 expect_fail() {  # expect_fail CODE PATTERN args...
   local code=$1 pattern=$2; shift 2
   "$tool" "$@" > "$tmp/out" 2> "$tmp/err"
@@ -81,7 +92,7 @@ expect_fail 2 "unknown option" "$data/fox.obj" --frobnicate 1
 expect_fail 2 "delta" "$data/fox.obj" --delta -1
 expect_fail 2 "solver" "$data/fox.obj" --solver magic
 
-# 6. every bundled model, poor ones included: a skeleton (exit 0) or a clean failure (exit 1),
+# 7. every bundled model, poor ones included: a skeleton (exit 0) or a clean failure (exit 1),
 # never a crash or a hang
 for m in "$data"/*.obj; do
   timeout 120 "$tool" "$m" -o "$tmp/m.ma" --quiet --time-limit 2 2> "$tmp/err"
