@@ -58,6 +58,12 @@ check "samples and candidates from files" test "$(json_field candidates "$tmp/f.
 "$tool" "$data/fox.obj" -o "$tmp/sc.ma" --scale 1.5 --skip-uncoverable --quiet
 check "scale dilation runs" test $? -eq 0
 
+# oriented point cloud input
+"$tool" "$data/fish_points.xyz" -o "$tmp/pc.ma" --json --time-limit 5 > "$tmp/pc.json"
+check "point cloud run exits 0" test $? -eq 0
+check "point cloud skeleton has balls" test "$(json_field selected "$tmp/pc.json")" -ge 5
+check "point cloud skeleton is connected" test "$(json_field components "$tmp/pc.json")" -eq 1
+
 # 5. evaluation: of our own skeleton and as a separate command on the written .ma
 "$tool" "$data/fox.obj" -o "$tmp/e.ma" --evaluate --json > "$tmp/e.json"
 check "--evaluate runs" test $? -eq 0
