@@ -49,10 +49,12 @@ struct PipelineRun {
     long betti1 = 0;
     int optimal = 0;
     double gap = 0, t_candidates = 0, t_select = 0, t_connect = 0;
+    ca_evaluation eval{};   // filled when run_pipeline is asked to evaluate
+    double t_evaluate = 0;
 };
 
 inline PipelineRun run_pipeline(const caio::MeshData& mesh, const ca_candidate_options& co, const ca_select_options& so,
-                                const ca_connect_options& cop) {
+                                const ca_connect_options& cop, bool evaluate = false) {
     PipelineRun r;
     ca_context* ctx = nullptr;
     ca_context_create(nullptr, &ctx);
@@ -95,6 +97,18 @@ inline PipelineRun run_pipeline(const caio::MeshData& mesh, const ca_candidate_o
         r.faces = ks.faces;
         r.components = ks.components;
         r.betti1 = long(ks.betti1);
+        if (evaluate) {
+            ca_skeleton_view view;
+            ca_skeleton_view_init(&view);
+            ca_skeleton_get_view(sk, &view);
+            ca_evaluate_options eo;
+            ca_evaluate_options_init(&eo);
+            r.eval.struct_size = sizeof r.eval;
+            t = std::chrono::steady_clock::now();
+            r.status = ca_evaluate(ctx, &v, &view, &eo, &r.eval);
+            r.t_evaluate = seconds_since(t);
+            if (r.status != CA_OK) r.message = ca_context_last_error(ctx);
+        }
     } else {
         r.message = ca_context_last_error(ctx);
     }

@@ -1,5 +1,6 @@
 // bench_pipeline.cpp: the whole pipeline at the defaults on every mesh of <data>/meshes/paper:
-// |S|, |P|, |V|, proven optimal?, gap, time per stage. Also the two Coverage Axis reference
+// |S|, |P|, |V|, proven optimal?, gap, time per stage, and the skeleton's Hausdorff distances to
+// the input (evaluation protocol of EVALUATION.md, % of the bbox diagonal). Also the two Coverage Axis reference
 // instances (the reference code's own samples and candidates) against their known optima.
 // usage: bench_pipeline [DATA_ROOT]   (default ../shared/data; skipped when missing)
 #include "bench_common.h"
@@ -21,15 +22,15 @@ int main(int argc, char** argv) {
     ca_connect_options_init(&cop);
 
     std::printf("\n## Pipeline at the defaults (|S| 1500, Voronoi candidates of 4000 samples, delta 0.02, exact cover, power connection)\n\n");
-    std::printf("| model | tris | |S| | |P| | |V| | optimal | gap %% | candidates s | select s | connect s | total s |\n");
-    std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
-    double sum = 0, worst = 0;
+    std::printf("| model | tris | |S| | |P| | |V| | optimal | gap %% | candidates s | select s | connect s | total s | S->E %% | E->S %% | HD %% |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    double sum = 0, worst = 0, hd_sum = 0;
     int n_opt = 0, n = 0;
     for (const std::string& path : models) {
         caio::MeshData mesh;
         std::string err;
         if (!caio::read_mesh(path, mesh, err)) { std::printf("| %s | read failed: %s |\n", bench::stem(path).c_str(), err.c_str()); continue; }
-        bench::PipelineRun r = bench::run_pipeline(mesh, co, so, cop);
+        bench::PipelineRun r = bench::run_pipeline(mesh, co, so, cop, true);
         if (r.status != CA_OK) {
             std::printf("| %s | %zu | failed: %s |\n", bench::stem(path).c_str(), mesh.triangles.size() / 3, r.message.c_str());
             continue;
@@ -39,12 +40,14 @@ int main(int argc, char** argv) {
         worst = std::max(worst, total);
         n_opt += r.optimal;
         ++n;
-        std::printf("| %s | %zu | %zu | %zu | %zu | %s | %.2f | %.3f | %.3f | %.3f | %.3f |\n", bench::stem(path).c_str(),
-                    mesh.triangles.size() / 3, r.samples, r.candidates, r.balls, r.optimal ? "yes" : "no", 100 * r.gap,
-                    r.t_candidates, r.t_select, r.t_connect, total);
+        hd_sum += r.eval.hd_two_sided;
+        std::printf("| %s | %zu | %zu | %zu | %zu | %s | %.2f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f |\n",
+                    bench::stem(path).c_str(), mesh.triangles.size() / 3, r.samples, r.candidates, r.balls,
+                    r.optimal ? "yes" : "no", 100 * r.gap, r.t_candidates, r.t_select, r.t_connect, total,
+                    r.eval.hd_surface_to_recon, r.eval.hd_recon_to_surface, r.eval.hd_two_sided);
     }
-    std::printf("\n%d models, %d proven optimal; pipeline mean %.3f s, max %.3f s; peak RSS %.0f MB\n", n, n_opt,
-                n ? sum / n : 0.0, worst, bench::peak_rss_mb());
+    std::printf("\n%d models, %d proven optimal; pipeline mean %.3f s, max %.3f s; mean two-sided Hausdorff %.3f %%; "
+                "peak RSS %.0f MB\n", n, n_opt, n ? sum / n : 0.0, worst, n ? hd_sum / n : 0.0, bench::peak_rss_mb());
 
     // Reference instances: the reference implementation's samples and candidates.
     struct Ref { const char* mesh; const char* samples; const char* candidates; double delta; int known; };
