@@ -31,6 +31,9 @@ const char* kUsage =
     "  --surface-samples FILE    cover these samples (v x y z, input units) instead of sampling\n"
     "  --solver NAME             exact (default) | greedy | capp\n"
     "  --skip-uncoverable        ignore samples no ball covers instead of failing\n"
+    "  --ignore-samples FILE     indices (0-based) of samples that need not be covered\n"
+    "  --force-in FILE           indices of candidate balls that must be selected\n"
+    "  --force-out FILE          indices of candidate balls that must not be selected\n"
     "  --seed N                  random seed (default 1)\n"
     "  --time-limit SEC          exact solver budget in seconds (default 60)\n"
     "  --threads N               worker threads (default 0 = all cores)\n"
@@ -43,6 +46,7 @@ const char* kUsage =
 struct Args {
     std::string input, out_ma, out_obj, out_ply, candidates = "voronoi", surface_samples;
     std::string export_samples, export_candidates, solver = "exact";
+    std::string ignore_samples, force_in, force_out;
     double delta = 0.02, scale = 0, time_limit = 60;
     long samples = 1500, voronoi_samples = 4000, random_count = 10000, threads = 0;
     unsigned long long seed = 1;
@@ -98,6 +102,9 @@ int parse_args(int argc, char** argv, Args& a) {
             else if (k == "--seed") { char* e; a.seed = std::strtoull(v, &e, 10); if (*e || e == v) return usage_error("--seed takes a non-negative integer"); }
             else if (k == "--time-limit") { if (!parse_number(v, d)) return usage_error("--time-limit takes seconds"); a.time_limit = d; }
             else if (k == "--threads") { if (!parse_count(v, a.threads, 0)) return usage_error("--threads takes a count >= 0"); }
+            else if (k == "--ignore-samples") a.ignore_samples = v;
+            else if (k == "--force-in") a.force_in = v;
+            else if (k == "--force-out") a.force_out = v;
             else if (k == "--export-samples") a.export_samples = v;
             else if (k == "--export-candidates") a.export_candidates = v;
             else return usage_error("unknown option " + k);
@@ -253,6 +260,25 @@ int main(int argc, char** argv) {
     so.solver = a.solver == "greedy" ? CA_SOLVER_GREEDY : a.solver == "capp" ? CA_SOLVER_CAPP : CA_SOLVER_EXACT;
     so.time_limit_s = a.time_limit;
     so.skip_uncoverable = a.skip_uncoverable ? 1 : 0;
+    // user control (paper 8.2): index files become per-sample / per-ball masks
+    std::vector<uint8_t> ignorable, forced_in, forced_out;
+    struct MaskFile { const std::string& path; size_t size; std::vector<uint8_t>& mask; const uint8_t** field; const char* what; };
+    for (MaskFile m : {MaskFile{a.ignore_samples, n_samples, ignorable, &so.ignorable_samples, "sample"},
+                       MaskFile{a.force_in, n_candidates, forced_in, &so.forced_in, "candidate"},
+                       MaskFile{a.force_out, n_candidates, forced_out, &so.forced_out, "candidate"}}) {
+        if (m.path.empty()) continue;
+        std::vector<uint32_t> idx;
+        if (!caio::read_indices(m.path, idx, err)) { std::fprintf(stderr, "coverage-axis: %s\n", err.c_str()); return 3; }
+        m.mask.assign(m.size, 0);
+        for (uint32_t i : idx) {
+            if (i >= m.size) {
+                std::fprintf(stderr, "coverage-axis: %s: %s index %u out of range (%zu %ss)\n", m.path.c_str(), m.what, i, m.size, m.what);
+                return 3;
+            }
+            m.mask[i] = 1;
+        }
+        *m.field = m.mask.data();
+    }
     if ((st = ca_select(ctx, owned.set, &so, &owned.sel)) != CA_OK) return library_error(ctx, st, "selection");
     const double t_select = since(t0);
     ca_select_stats ss;

@@ -58,6 +58,28 @@ check "samples and candidates from files" test "$(json_field candidates "$tmp/f.
 "$tool" "$data/fox.obj" -o "$tmp/sc.ma" --scale 1.5 --skip-uncoverable --quiet
 check "scale dilation runs" test $? -eq 0
 
+# user control: forced-in / forced-out balls and ignorable samples are honoured
+"$tool" "$data/fox.obj" -o "$tmp/u0.ma" --export-candidates "$tmp/fc.obj" --quiet
+echo "0 1 2" > "$tmp/in.txt"
+"$tool" "$data/fox.obj" -o "$tmp/u1.ma" --force-in "$tmp/in.txt" --quiet
+for i in 0 1 2; do
+  ball=$(sed -n "$((i + 1))p" "$tmp/fc.obj" | cut -d' ' -f2-5)
+  check "forced-in ball $i is in the skeleton" grep -qF "v $ball" "$tmp/u1.ma"
+done
+grep '^v ' "$tmp/u0.ma" | head -3 | while read -r _ x y z r; do grep -nF "v $x $y $z $r" "$tmp/fc.obj" | head -1 | cut -d: -f1; done | awk '{print $1-1}' > "$tmp/out.txt"
+"$tool" "$data/fox.obj" -o "$tmp/u2.ma" --force-out "$tmp/out.txt" --skip-uncoverable --quiet
+check "forced-out run succeeds" test $? -eq 0 -a -s "$tmp/u2.ma" -a "$(wc -l < "$tmp/out.txt")" -eq 3
+while read -r i; do
+  ball=$(sed -n "$((i + 1))p" "$tmp/fc.obj" | cut -d' ' -f2-5)
+  check "forced-out ball $i is not in the skeleton" test -z "$(grep -F "v $ball" "$tmp/u2.ma")"
+done < "$tmp/out.txt"
+seq 0 1499 > "$tmp/all.txt"
+"$tool" "$data/fox.obj" -o "$tmp/u3.ma" --ignore-samples "$tmp/all.txt" --json > "$tmp/u3.json"
+check "every sample ignorable: nothing to cover" test "$(json_field selected "$tmp/u3.json")" -eq 0
+echo 99999 > "$tmp/bad.txt"
+"$tool" "$data/fox.obj" -o "$tmp/u4.ma" --force-in "$tmp/bad.txt" --quiet 2> "$tmp/err"
+check "out-of-range ball index is a clear failure" test $? -eq 3 -a -s "$tmp/err"
+
 # oriented point cloud input
 "$tool" "$data/fish_points.xyz" -o "$tmp/pc.ma" --json --time-limit 5 > "$tmp/pc.json"
 check "point cloud run exits 0" test $? -eq 0
