@@ -39,13 +39,15 @@
 extern "C" {
 #endif
 
+/* The library is built with hidden symbols; only the ca_* functions are exported from the
+   shared library (libcoverage_axis.so). Windows DLL users define CA_SHARED_LIBRARY. */
 #if defined(_WIN32) && defined(CA_SHARED_LIBRARY)
 #  ifdef CA_BUILDING_LIBRARY
 #    define CA_API __declspec(dllexport)
 #  else
 #    define CA_API __declspec(dllimport)
 #  endif
-#elif defined(__GNUC__) && defined(CA_SHARED_LIBRARY)
+#elif defined(__GNUC__) && defined(CA_BUILDING_LIBRARY)
 #  define CA_API __attribute__((visibility("default")))
 #else
 #  define CA_API
