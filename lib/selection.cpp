@@ -1,50 +1,339 @@
-// selection.cpp: dilation, coverage and the set-cover solve, glued together.
+// selection.cpp: dilation, coverage and the set-cover solve, glued together (see selection.h):
+// the plain solve, divide and conquer over spatial parts of the samples, and the bisection on
+// the dilation for a target size.
 #include "selection.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
+#include <new>
 
 namespace ca {
 
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+double dilate_with(double radius, Dilation d, double value) { return d == Dilation::offset ? radius + value : radius * value; }
+
+// Same inclusion test as build_coverage (distance <= r', with its relative 1e-12 widening).
+bool covered(const Vec3& c, double r, const Vec3& s) {
+    double r2 = r * r * (1.0 + 1e-12);
+    r2 = std::nextafter(r2, std::numeric_limits<double>::infinity());
+    return (c - s).squaredNorm() < r2;
+}
+
+// The coverage for smaller radii, filtered from one built for larger (or equal) radii.
+Coverage shrink_coverage(const Coverage& big, const std::vector<Vec3>& samples, const std::vector<Vec3>& centers,
+                         const std::vector<double>& radii) {
+    Coverage c;
+    c.n_samples = big.n_samples;
+    c.n_balls = big.n_balls;
+    c.ball_ptr.assign(c.n_balls + 1, 0);
+    c.ball_samples.reserve(big.ball_samples.size());
+    for (size_t i = 0; i < c.n_balls; ++i) {
+        for (uint32_t k = big.ball_ptr[i]; k < big.ball_ptr[i + 1]; ++k)
+            if (covered(centers[i], radii[i], samples[big.ball_samples[k]])) c.ball_samples.push_back(big.ball_samples[k]);
+        c.ball_ptr[i + 1] = uint32_t(c.ball_samples.size());
+    }
+    c.build_transpose();
+    return c;
+}
+
+// Median cuts along the longest side of the parts' boxes until every part is small enough.
+void split_parts(const std::vector<Vec3>& pts, std::vector<uint32_t> ids, size_t max_part,
+                 std::vector<std::vector<uint32_t>>& parts) {
+    if (ids.size() <= max_part) {
+        std::sort(ids.begin(), ids.end());
+        parts.push_back(std::move(ids));
+        return;
+    }
+    Vec3 lo = pts[ids[0]], hi = lo;
+    for (uint32_t i : ids) { lo = lo.cwiseMin(pts[i]); hi = hi.cwiseMax(pts[i]); }
+    int axis = 0;
+    (hi - lo).maxCoeff(&axis);
+    const size_t mid = ids.size() / 2;
+    std::nth_element(ids.begin(), ids.begin() + long(mid), ids.end(), [&](uint32_t a, uint32_t b) {
+        return pts[a][axis] != pts[b][axis] ? pts[a][axis] < pts[b][axis] : a < b;
+    });
+    std::vector<uint32_t> left(ids.begin(), ids.begin() + long(mid)), right(ids.begin() + long(mid), ids.end());
+    split_parts(pts, std::move(left), max_part, parts);
+    split_parts(pts, std::move(right), max_part, parts);
+}
+
+// Divide and conquer (see SelectOptions::dc_threshold).
+Status solve_parts(const Coverage& cov, const std::vector<Vec3>& samples, const SelectOptions& opt,
+                   const CoverOptions& cover, const Monitor& monitor, CoverResult& res, uint32_t& n_parts) {
+    const size_t m = cov.n_samples, n = cov.n_balls;
+    const auto t0 = Clock::now();
+    res = CoverResult{};
+    // Global feasibility first, so that errors name global sample indices.
+    std::vector<uint8_t> required(m, 1), allowed(n, 1), locked(n, 0);
+    for (size_t j = 0; j < cover.ignorable_samples.size() && j < m; ++j) required[j] = !cover.ignorable_samples[j];
+    for (size_t a = 0; a < cover.forced_out.size() && a < n; ++a) allowed[a] = !cover.forced_out[a];
+    for (size_t a = 0; a < cover.forced_in.size() && a < n; ++a) locked[a] = cover.forced_in[a] != 0;
+    if ((!cover.ignorable_samples.empty() && cover.ignorable_samples.size() != m) ||
+        (!cover.forced_in.empty() && cover.forced_in.size() != n) || (!cover.forced_out.empty() && cover.forced_out.size() != n))
+        return fail(Code::invalid_argument, "set cover: mask sizes do not match the problem");
+    for (size_t a = 0; a < n; ++a)
+        if (locked[a] && !allowed[a]) return fail(Code::invalid_argument, "set cover: a ball is both forced in and forced out");
+    for (uint32_t j = 0; j < m; ++j) {
+        if (!required[j]) continue;
+        bool ok = false;
+        for (uint32_t k = cov.sample_ptr[j]; k < cov.sample_ptr[j + 1] && !ok; ++k) ok = allowed[cov.sample_balls[k]] != 0;
+        if (!ok) res.uncovered.push_back(j);
+    }
+    if (!res.uncovered.empty()) {
+        if (!opt.skip_uncoverable)
+            return fail(Code::uncoverable, std::to_string(res.uncovered.size()) + " of " + std::to_string(m) +
+                                               " samples are covered by no candidate ball (first: " +
+                                               std::to_string(res.uncovered[0]) + ")");
+        for (uint32_t j : res.uncovered) required[j] = 0;
+    }
+    for (uint8_t v : required) res.rows_before += v;
+    for (uint8_t v : allowed) res.cols_before += v;
+
+    std::vector<uint32_t> all(m);
+    for (uint32_t j = 0; j < m; ++j) all[j] = j;
+    std::vector<std::vector<uint32_t>> parts;
+    split_parts(samples, std::move(all), std::max<size_t>(1, opt.dc_part_samples), parts);
+    n_parts = uint32_t(parts.size());
+
+    CoverOptions pc = cover;
+    pc.centers = nullptr;
+    pc.radii = nullptr;
+    if (pc.time_limit_s > 0 && std::isfinite(pc.time_limit_s)) pc.time_limit_s = cover.time_limit_s / double(parts.size());
+    std::vector<uint32_t> selected, local_of(m, UINT32_MAX), ball_local(n, UINT32_MAX);
+    std::vector<Vec3> sub_centers;
+    std::vector<double> sub_radii;
+    bool all_proven = true;
+    for (const auto& part : parts) {
+        if (monitor.cancelled()) return fail(Code::cancelled, "set cover: cancelled");
+        // The part's sub-problem: its samples, every ball covering one of them.
+        Coverage sub;
+        sub.n_samples = part.size();
+        std::vector<uint32_t> balls;
+        for (uint32_t l = 0; l < part.size(); ++l) {
+            local_of[part[l]] = l;
+            for (uint32_t k = cov.sample_ptr[part[l]]; k < cov.sample_ptr[part[l] + 1]; ++k) {
+                const uint32_t a = cov.sample_balls[k];
+                if (ball_local[a] == UINT32_MAX) { ball_local[a] = 0; balls.push_back(a); }
+            }
+        }
+        std::sort(balls.begin(), balls.end());
+        sub.n_balls = balls.size();
+        sub.ball_ptr.assign(balls.size() + 1, 0);
+        for (uint32_t b = 0; b < balls.size(); ++b) {
+            const uint32_t a = balls[b];
+            ball_local[a] = b;
+            for (uint32_t k = cov.ball_ptr[a]; k < cov.ball_ptr[a + 1]; ++k)
+                if (local_of[cov.ball_samples[k]] != UINT32_MAX) sub.ball_samples.push_back(local_of[cov.ball_samples[k]]);
+            sub.ball_ptr[b + 1] = uint32_t(sub.ball_samples.size());
+        }
+        sub.build_transpose();
+        pc.ignorable_samples.assign(part.size(), 0);
+        for (uint32_t l = 0; l < part.size(); ++l) pc.ignorable_samples[l] = !required[part[l]];
+        pc.forced_in.assign(balls.size(), 0);
+        pc.forced_out.assign(balls.size(), 0);
+        for (uint32_t b = 0; b < balls.size(); ++b) {
+            pc.forced_in[b] = locked[balls[b]];
+            pc.forced_out[b] = !allowed[balls[b]];
+        }
+        if (cover.solver == Solver::capp && cover.centers && cover.radii) {
+            sub_centers.clear();
+            sub_radii.clear();
+            for (uint32_t a : balls) { sub_centers.push_back((*cover.centers)[a]); sub_radii.push_back((*cover.radii)[a]); }
+            pc.centers = &sub_centers;
+            pc.radii = &sub_radii;
+        }
+        CoverResult pr;
+        Status st = solve_set_cover(sub, pc, false, monitor, pr);
+        for (uint32_t j : part) local_of[j] = UINT32_MAX;
+        for (uint32_t a : balls) ball_local[a] = UINT32_MAX;
+        if (!st.ok()) return st;
+        for (uint32_t b : pr.selected) selected.push_back(balls[b]);
+        res.lower_bound = std::max(res.lower_bound, pr.lower_bound);  // each part relaxes the whole
+        res.time_reduce_s += pr.time_reduce_s;
+        res.rows_after += pr.rows_after;
+        res.cols_after += pr.cols_after;
+        res.forced += pr.forced;
+        res.components += pr.components;
+        res.cbc_components += pr.cbc_components;
+        all_proven = all_proven && pr.proven_optimal;
+    }
+    (void)all_proven;  // parts proven optimal do not make the union optimal
+    for (uint32_t a = 0; a < n; ++a)
+        if (locked[a]) selected.push_back(a);
+    remove_redundant_balls(cov, required, locked, selected);
+    // A global bound (forced balls of the whole reduction + disjoint kernel rows), and the
+    // global greedy cover when it is smaller than the merged one.
+    CoverOptions gc = cover;
+    gc.solver = Solver::greedy;
+    CoverResult g;
+    if (monitor.cancelled()) return fail(Code::cancelled, "set cover: cancelled");
+    if (solve_set_cover(cov, gc, opt.skip_uncoverable, monitor, g).ok()) {
+        res.lower_bound = std::max(res.lower_bound, g.lower_bound);
+        if (g.selected.size() < selected.size()) selected = g.selected;
+    }
+    res.selected = selected;
+    res.objective = double(selected.size());
+    res.lower_bound = std::min(res.lower_bound, res.objective);
+    res.proven_optimal = cover.solver == Solver::exact && res.lower_bound >= res.objective ? 1 : 0;
+    res.gap = res.objective > 0 ? (res.objective - res.lower_bound) / res.objective : 0.0;
+    res.time_solve_s = seconds_since(t0) - res.time_reduce_s;
+    return Status::success();
+}
+
+// One selection at a fixed coverage.
+Status solve_coverage(const Coverage& cov, const CandidateSet& set, const SelectOptions& opt, const CoverOptions& cover,
+                      const Monitor& monitor, CoverResult& res, uint32_t& parts) {
+    parts = 0;
+    if (opt.dc_threshold > 0 && cov.n_samples > opt.dc_threshold)
+        return solve_parts(cov, set.cover_samples, opt, cover, monitor, res, parts);
+    return solve_set_cover(cov, cover, opt.skip_uncoverable, monitor, res);
+}
+
+}  // namespace
+
 double dilate(double radius, const SelectOptions& opt) {
-    return opt.dilation == Dilation::offset ? radius + opt.delta : radius * opt.scale;
+    return dilate_with(radius, opt.dilation, opt.dilation == Dilation::offset ? opt.delta : opt.scale);
 }
 
 Status select_balls(const CandidateSet& set, const SelectOptions& opt, const Monitor& monitor, Selection& out) {
-    using Clock = std::chrono::steady_clock;
     const auto t0 = Clock::now();
     out = Selection{};
     if (opt.dilation == Dilation::offset && !(std::isfinite(opt.delta) && opt.delta >= 0))
         return fail(Code::invalid_argument, "delta must be a finite number >= 0");
     if (opt.dilation == Dilation::scale && !(std::isfinite(opt.scale) && opt.scale >= 1))
         return fail(Code::invalid_argument, "scale must be a finite number >= 1");
+    if (opt.target_count > 0 && !(std::isfinite(opt.target_tolerance) && opt.target_tolerance > 0))
+        return fail(Code::invalid_argument, "target_tolerance must be a finite number > 0");
     if (set.balls.empty()) return fail(Code::no_candidates, "the candidate set has no balls");
     if (set.cover_samples.empty()) return fail(Code::degenerate_input, "the candidate set has no surface samples");
 
-    std::vector<Vec3> centers(set.balls.size());
-    std::vector<double> radii(set.balls.size()), dilated(set.balls.size());
-    for (size_t i = 0; i < set.balls.size(); ++i) {
-        centers[i] = set.balls[i].center;
-        radii[i] = set.balls[i].radius;
-        dilated[i] = dilate(radii[i], opt);
-    }
-    Coverage cov;
-    Status st = build_coverage(set.cover_samples, centers, dilated, monitor, cov);
-    if (!st.ok()) return st;
-    out.time_coverage_s = std::chrono::duration<double>(Clock::now() - t0).count();
+    try {
+        const size_t n = set.balls.size();
+        std::vector<Vec3> centers(n);
+        std::vector<double> radii(n), dilated(n);
+        for (size_t i = 0; i < n; ++i) {
+            centers[i] = set.balls[i].center;
+            radii[i] = set.balls[i].radius;
+        }
+        CoverOptions cover = opt.cover;
+        cover.centers = &centers;
+        cover.radii = &radii;
+        const Dilation dil = opt.dilation;
+        auto make_radii = [&](double value) {
+            for (size_t i = 0; i < n; ++i) dilated[i] = dilate_with(radii[i], dil, value);
+        };
+        auto finish = [&](double value, const std::vector<double>& dil_radii) {
+            out.indices = out.cover.selected;
+            out.dilated_radii.clear();
+            for (uint32_t i : out.indices) out.dilated_radii.push_back(dil_radii[i]);
+            out.delta = dil == Dilation::offset ? value : 0;
+            out.scale = dil == Dilation::scale ? value : 0;
+            out.time_total_s = seconds_since(t0);
+        };
+        if (!monitor.report("selection", 0)) return fail(Code::cancelled, "cancelled");
 
-    CoverOptions cover = opt.cover;
-    cover.centers = &centers;
-    cover.radii = &radii;
-    if (!monitor.report("selection", 0)) return fail(Code::cancelled, "cancelled");
-    st = solve_set_cover(cov, cover, opt.skip_uncoverable, monitor, out.cover);
-    if (!st.ok()) return st;
-    if (!monitor.report("selection", 1)) return fail(Code::cancelled, "cancelled");
-    out.indices = out.cover.selected;
-    for (uint32_t i : out.indices) out.dilated_radii.push_back(dilated[i]);
-    out.delta = opt.dilation == Dilation::offset ? opt.delta : 0;
-    out.time_total_s = std::chrono::duration<double>(Clock::now() - t0).count();
-    return Status::success();
+        if (opt.target_count == 0) {
+            const double value = dil == Dilation::offset ? opt.delta : opt.scale;
+            make_radii(value);
+            Coverage cov;
+            Status st = build_coverage(set.cover_samples, centers, dilated, monitor, cov);
+            if (!st.ok()) return st;
+            out.time_coverage_s = seconds_since(t0);
+            if (monitor.cancelled()) return fail(Code::cancelled, "cancelled");
+            st = solve_coverage(cov, set, opt, cover, monitor, out.cover, out.parts);
+            if (!st.ok()) return st;
+            out.probes = 1;
+            if (!monitor.report("selection", 1)) return fail(Code::cancelled, "cancelled");
+            finish(value, dilated);
+            return Status::success();
+        }
+
+        // Target size: bracket, then bisect. `big` is the coverage at the upper end of the
+        // bracket; every probe below it is filtered from it (coverage grows with the dilation).
+        const uint32_t K = opt.target_count;
+        const double lowest = dil == Dilation::offset ? 0.0 : 1.0;
+        const double highest = dil == Dilation::offset ? 4.0 : 1e6;  // offset 4 > the unit cube's diagonal
+        Coverage big;
+        double t_cov = 0;
+        // Solves at `value`: fits = cover found with <= K balls; an uncoverable sample counts as
+        // "too many balls".
+        CoverResult best;
+        uint32_t best_parts = 0;
+        double best_value = -1;
+        std::vector<double> best_radii;
+        auto probe = [&](double value, bool rebuild, bool& fits) -> Status {
+            if (monitor.cancelled()) return fail(Code::cancelled, "cancelled");
+            make_radii(value);
+            const auto tc = Clock::now();
+            Coverage cov;
+            if (rebuild) {
+                Status st = build_coverage(set.cover_samples, centers, dilated, monitor, big);
+                if (!st.ok()) return st;
+            } else {
+                cov = shrink_coverage(big, set.cover_samples, centers, dilated);
+            }
+            t_cov += seconds_since(tc);
+            CoverResult res;
+            uint32_t parts = 0;
+            ++out.probes;
+            Status st = solve_coverage(rebuild ? big : cov, set, opt, cover, monitor, res, parts);
+            if (st.code == Code::uncoverable) { fits = false; return Status::success(); }
+            if (!st.ok()) return st;
+            fits = res.objective <= double(K);
+            if (fits) {
+                best = std::move(res);
+                best_parts = parts;
+                best_value = value;
+                best_radii = dilated;
+            }
+            return Status::success();
+        };
+        double lo = lowest, hi = dil == Dilation::offset ? opt.delta : opt.scale;
+        bool fits = false;
+        Status st = probe(hi, true, fits);
+        if (!st.ok()) return st;
+        if (fits) {
+            bool fits_lo = false;
+            if (hi > lowest) {
+                // the lower end may already fit
+                st = probe(lowest, false, fits_lo);
+                if (!st.ok()) return st;
+            }
+            if (fits_lo || hi <= lowest) hi = lo = lowest;
+        } else {
+            for (;;) {
+                lo = hi;
+                hi = dil == Dilation::offset ? std::max(2 * hi, 0.01) : std::max(2 * hi, 1.1);
+                if (hi > highest) return fail(Code::invalid_argument, "no dilation gives a cover with target_count balls");
+                st = probe(hi, true, fits);
+                if (!st.ok()) return st;
+                if (fits) break;
+            }
+        }
+        while (hi - lo > opt.target_tolerance) {
+            const double mid = 0.5 * (lo + hi);
+            st = probe(mid, false, fits);
+            if (!st.ok()) return st;
+            if (fits) hi = mid; else lo = mid;
+        }
+        if (best_value < 0) return fail(Code::internal, "target size: no probe fitted");
+        out.cover = std::move(best);
+        out.parts = best_parts;
+        out.time_coverage_s = t_cov;
+        if (!monitor.report("selection", 1)) return fail(Code::cancelled, "cancelled");
+        finish(best_value, best_radii);
+        return Status::success();
+    } catch (const std::bad_alloc&) {
+        return fail(Code::out_of_memory, "selection: out of memory");
+    } catch (...) {
+        return fail(Code::internal, "selection: unexpected exception");
+    }
 }
 
 }  // namespace ca

@@ -1,8 +1,13 @@
 // setcover.cpp: minimum set cover of the samples by the candidate balls (see setcover.h).
 //
 // Pipeline: input checks -> reduction to a fixpoint (forced balls, degree-1 samples, dominated
-// samples, dominated balls, empty balls) -> kernel solve (CBC ILP with a greedy MIP start, or a
-// heuristic: greedy / Coverage Axis++) -> redundancy removal -> verification.
+// samples, dominated balls, empty balls) -> kernel solve -> redundancy removal -> verification.
+// Exact kernel solve, per connected component of the kernel (components share no rows and no
+// columns, so optima and bounds add): greedy cover -> Lagrangian subgradient (bound, and a
+// reduced-cost greedy that improves the incumbent) -> done if ceil(bound) meets the incumbent;
+// otherwise reduced-cost fixing (drop every column that no cover smaller than the incumbent can
+// contain), reduction again, and CBC on what is left with the incumbent as cutoff.
+// Heuristic kernel solve: greedy / Coverage Axis++.
 // Reductions never change the optimum value, so forced + a kernel lower bound is a valid lower
 // bound of the original problem.
 #include "setcover.h"
@@ -459,6 +464,216 @@ bool covers_problem(const Problem& P, const std::vector<uint32_t>& sel) {
     return true;
 }
 
+// ---------------------------------------------------------------------------------------------
+// Connected components: rows linked by a shared column. Components share neither rows nor
+// columns, so their optima (and lower bounds) add up.
+std::vector<Problem> split_components(const Problem& P) {
+    std::vector<uint32_t> parent(P.R);
+    for (uint32_t r = 0; r < P.R; ++r) parent[r] = r;
+    auto find = [&](uint32_t x) {
+        while (parent[x] != x) x = parent[x] = parent[parent[x]];
+        return x;
+    };
+    for (uint32_t c = 0; c < P.C; ++c)
+        for (uint32_t k = P.cptr[c] + 1; k < P.cptr[c + 1]; ++k) {
+            const uint32_t a = find(P.crow[P.cptr[c]]), b = find(P.crow[k]);
+            if (a != b) parent[std::max(a, b)] = std::min(a, b);
+        }
+    std::vector<uint32_t> comp_of(P.R), local(P.R);
+    std::vector<Problem> out;
+    std::vector<uint32_t> root_comp(P.R, UINT32_MAX);
+    for (uint32_t r = 0; r < P.R; ++r) {
+        const uint32_t root = find(r);
+        if (root_comp[root] == UINT32_MAX) { root_comp[root] = uint32_t(out.size()); out.emplace_back(); }
+        Problem& Q = out[root_comp[root]];
+        comp_of[r] = root_comp[root];
+        local[r] = Q.R++;
+        Q.row_id.push_back(r);  // local ids into P for now
+    }
+    for (uint32_t c = 0; c < P.C; ++c) {
+        if (P.cptr[c] == P.cptr[c + 1]) continue;
+        Problem& Q = out[comp_of[P.crow[P.cptr[c]]]];
+        if (Q.cptr.empty()) Q.cptr.push_back(0);
+        for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) Q.crow.push_back(local[P.crow[k]]);
+        Q.cptr.push_back(uint32_t(Q.crow.size()));
+        Q.col_id.push_back(c);
+    }
+    for (Problem& Q : out) {
+        Q.C = uint32_t(Q.col_id.size());
+        if (Q.cptr.empty()) Q.cptr.push_back(0);
+        Q.rptr.assign(Q.R + 1, 0);
+        for (uint32_t r : Q.crow) Q.rptr[r + 1]++;
+        for (uint32_t r = 0; r < Q.R; ++r) Q.rptr[r + 1] += Q.rptr[r];
+        Q.rcol.resize(Q.crow.size());
+        std::vector<uint32_t> next(Q.rptr.begin(), Q.rptr.end() - 1);
+        for (uint32_t c = 0; c < Q.C; ++c)
+            for (uint32_t k = Q.cptr[c]; k < Q.cptr[c + 1]; ++k) Q.rcol[next[Q.crow[k]]++] = c;
+    }
+    // largest first: the time budget goes to the hard parts while it lasts
+    std::stable_sort(out.begin(), out.end(), [](const Problem& a, const Problem& b) { return a.crow.size() > b.crow.size(); });
+    return out;
+}
+
+// Columns restricted to `keep` (local ids of P), rows all kept; col_id = P-local column ids.
+Problem restrict_columns(const Problem& P, const std::vector<uint8_t>& keep) {
+    Problem Q;
+    Q.R = P.R;
+    Q.row_id.resize(P.R);
+    for (uint32_t r = 0; r < P.R; ++r) Q.row_id[r] = r;
+    Q.cptr.push_back(0);
+    for (uint32_t c = 0; c < P.C; ++c) {
+        if (!keep[c]) continue;
+        Q.crow.insert(Q.crow.end(), P.crow.begin() + P.cptr[c], P.crow.begin() + P.cptr[c + 1]);
+        Q.cptr.push_back(uint32_t(Q.crow.size()));
+        Q.col_id.push_back(c);
+    }
+    Q.C = uint32_t(Q.col_id.size());
+    Q.rptr.assign(Q.R + 1, 0);
+    for (uint32_t r : Q.crow) Q.rptr[r + 1]++;
+    for (uint32_t r = 0; r < Q.R; ++r) Q.rptr[r + 1] += Q.rptr[r];
+    Q.rcol.resize(Q.crow.size());
+    std::vector<uint32_t> next(Q.rptr.begin(), Q.rptr.end() - 1);
+    for (uint32_t c = 0; c < Q.C; ++c)
+        for (uint32_t k = Q.cptr[c]; k < Q.cptr[c + 1]; ++k) Q.rcol[next[Q.crow[k]]++] = c;
+    return Q;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Lagrangian relaxation of the covering rows (multipliers u >= 0):
+//   L(u) = sum_i u_i + sum_j min(0, c_j(u)),  c_j(u) = 1 - sum_{i in j} u_i,
+// a lower bound on the optimum for every u >= 0; L(u) + c_j(u) (c_j >= 0) bounds every cover
+// that contains column j. Subgradient ascent (Held-Karp step, halving on stalls), with a
+// primal heuristic on the reduced costs (Caprara-Fischetti-Toth score) every few steps.
+struct Lagrange {
+    double bound = 0;               // best L(u) found
+    std::vector<double> u, cost;    // multipliers of the best bound and their reduced costs
+    std::vector<uint32_t> best;     // best cover found (ascending), possibly improved on entry's
+};
+
+// Greedy completion scored on reduced costs: gamma_j = c_j - sum of u over uncovered rows,
+// mu_j = newly covered rows; score gamma/mu if gamma > 0 else gamma*mu (smaller is better).
+// Scores only grow as rows get covered, so a lazy min-heap is exact.
+std::vector<uint32_t> lagrange_greedy(const Problem& P, const std::vector<double>& u) {
+    std::vector<uint32_t> mu(P.C), sel;
+    std::vector<double> gamma(P.C);
+    std::vector<uint8_t> covered(P.R, 0), taken(P.C, 0);
+    auto score = [&](uint32_t c) { return gamma[c] > 0 ? gamma[c] / mu[c] : gamma[c] * mu[c]; };
+    using Item = std::pair<double, uint32_t>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> heap;
+    for (uint32_t c = 0; c < P.C; ++c) {
+        mu[c] = P.cptr[c + 1] - P.cptr[c];
+        double g = 1.0;
+        for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) g -= u[P.crow[k]];
+        gamma[c] = g;
+        if (mu[c]) heap.push({score(c), c});
+    }
+    uint32_t remaining = P.R;
+    while (remaining > 0 && !heap.empty()) {
+        const Item top = heap.top();
+        heap.pop();
+        const uint32_t c = top.second;
+        if (taken[c] || mu[c] == 0) continue;
+        const double s = score(c);
+        if (s > top.first + 1e-12) { heap.push({s, c}); continue; }
+        taken[c] = 1;
+        sel.push_back(c);
+        for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) {
+            const uint32_t r = P.crow[k];
+            if (covered[r]) continue;
+            covered[r] = 1;
+            --remaining;
+            for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q) {
+                const uint32_t d = P.rcol[q];
+                mu[d]--;
+                gamma[d] += u[r];
+            }
+        }
+    }
+    // redundancy: drop the columns of largest reduced cost first
+    std::vector<uint32_t> cnt(P.R, 0);
+    for (uint32_t c : sel)
+        for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) cnt[P.crow[k]]++;
+    std::vector<double> cj(P.C, 1.0);
+    for (uint32_t c : sel)
+        for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) cj[c] -= u[P.crow[k]];
+    std::sort(sel.begin(), sel.end(), [&](uint32_t a, uint32_t b) { return cj[a] != cj[b] ? cj[a] > cj[b] : a < b; });
+    std::vector<uint32_t> kept;
+    for (uint32_t c : sel) {
+        bool redundant = true;
+        for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1] && redundant; ++k)
+            if (cnt[P.crow[k]] < 2) redundant = false;
+        if (redundant) {
+            for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) cnt[P.crow[k]]--;
+        } else {
+            kept.push_back(c);
+        }
+    }
+    std::sort(kept.begin(), kept.end());
+    return kept;
+}
+
+// `incumbent`: a cover of P (ascending). Stops early once ceil(bound) >= |best|.
+Lagrange lagrangian(const Problem& P, std::vector<uint32_t> incumbent, int max_iter, Clock::time_point deadline) {
+    Lagrange L;
+    L.best = std::move(incumbent);
+    std::vector<double> u(P.R), cost(P.C), g(P.R);
+    std::vector<uint8_t> x(P.C);
+    for (uint32_t r = 0; r < P.R; ++r) {
+        double v = 1.0;
+        for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q) {
+            const uint32_t c = P.rcol[q];
+            v = std::min(v, 1.0 / double(P.cptr[c + 1] - P.cptr[c]));
+        }
+        u[r] = v;
+    }
+    L.bound = -1;
+    double lambda = 2.0;
+    const int stall_max = 20;
+    int stall = 0;
+    for (int it = 0; it < max_iter; ++it) {
+        double val = 0;
+        for (uint32_t r = 0; r < P.R; ++r) val += u[r];
+        for (uint32_t c = 0; c < P.C; ++c) {
+            double cc = 1.0;
+            for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) cc -= u[P.crow[k]];
+            cost[c] = cc;
+            x[c] = cc < 0;
+            if (cc < 0) val += cc;
+        }
+        if (val > L.bound + 1e-9) {
+            L.bound = val;
+            L.u = u;
+            L.cost = cost;
+            stall = 0;
+        } else if (++stall >= stall_max) {
+            lambda *= 0.5;
+            stall = 0;
+        }
+        const double ub = double(L.best.size());
+        if (std::ceil(L.bound - 1e-6) >= ub || lambda < 2e-3) break;
+        if (it % 8 == 0) {
+            std::vector<uint32_t> h = lagrange_greedy(P, u);
+            if (h.size() < L.best.size()) L.best.swap(h);
+            if (std::ceil(L.bound - 1e-6) >= double(L.best.size())) break;
+        }
+        if ((it & 15) == 15 && Clock::now() > deadline) break;
+        // subgradient g_i = 1 - #selected columns covering i
+        double norm = 0;
+        for (uint32_t r = 0; r < P.R; ++r) {
+            int cnt = 0;
+            for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q) cnt += x[P.rcol[q]];
+            double gi = 1.0 - cnt;
+            if (gi < 0 && u[r] <= 0) gi = 0;  // projected: u stays at 0
+            g[r] = gi;
+            norm += gi * gi;
+        }
+        if (norm == 0) break;  // x(u) is a cover with complementary slackness: L(u) is optimal
+        const double step = lambda * (double(L.best.size()) - val) / norm;
+        for (uint32_t r = 0; r < P.R; ++r) u[r] = std::max(0.0, u[r] + step * g[r]);
+    }
+    return L;
+}
+
 struct CbcOutcome {
     bool ok = false;            // CBC ran and returned without error
     bool has_solution = false;  // a cover better than the cutoff, verified
@@ -612,25 +827,8 @@ Status prepare(const Coverage& cov, const CoverOptions& opt, bool skip_uncoverab
     return Status::success();
 }
 
-// Reduce to the fixpoint. On success `red` holds the forced balls and the kernel.
-Status reduce(const Coverage& cov, const Prepared& pr, const Monitor& monitor, Reducer& red) {
-    const size_t n = cov.n_balls;
-    red.s_alive = pr.required;
-    red.b_alive = pr.allowed;
-    bool plain = cov.sample_ptr.size() == cov.n_samples + 1 && transpose_consistent(cov);
-    for (size_t j = 0; j < cov.n_samples && plain; ++j) plain = pr.required[j] != 0;
-    for (size_t a = 0; a < n && plain; ++a) plain = pr.allowed[a] && !pr.locked[a];
-    red.init(cov, plain);
-    bool any_forced_in = false;
-    for (uint32_t a = 0; a < n; ++a)
-        if (pr.locked[a]) {
-            // select even if it covers nothing required (it was asked for)
-            red.forced.push_back(a);
-            red.b_alive[a] = 0;
-            for (uint32_t k = red.bptr[a]; k < red.bptr[a + 1]; ++k) red.s_alive[red.bs[k]] = 0;
-            any_forced_in = true;
-        }
-    if (any_forced_in) red.rebuild();
+// Reduce to the fixpoint from the reducer's current state.
+Status reduce_fixpoint(Reducer& red, const Monitor& monitor) {
     // Ball dominance only changes when sample sets change and vice versa: rerun a phase only
     // when the other one (or forcing) changed something. Ball dominance first: it usually
     // removes most columns, which makes every later phase cheap.
@@ -661,6 +859,133 @@ Status reduce(const Coverage& cov, const Prepared& pr, const Monitor& monitor, R
         break;
     }
     return Status::success();
+}
+
+// Reduce to the fixpoint. On success `red` holds the forced balls and the kernel.
+Status reduce(const Coverage& cov, const Prepared& pr, const Monitor& monitor, Reducer& red) {
+    const size_t n = cov.n_balls;
+    red.s_alive = pr.required;
+    red.b_alive = pr.allowed;
+    bool plain = cov.sample_ptr.size() == cov.n_samples + 1 && transpose_consistent(cov);
+    for (size_t j = 0; j < cov.n_samples && plain; ++j) plain = pr.required[j] != 0;
+    for (size_t a = 0; a < n && plain; ++a) plain = pr.allowed[a] && !pr.locked[a];
+    red.init(cov, plain);
+    bool any_forced_in = false;
+    for (uint32_t a = 0; a < n; ++a)
+        if (pr.locked[a]) {
+            // select even if it covers nothing required (it was asked for)
+            red.forced.push_back(a);
+            red.b_alive[a] = 0;
+            for (uint32_t k = red.bptr[a]; k < red.bptr[a + 1]; ++k) red.s_alive[red.bs[k]] = 0;
+            any_forced_in = true;
+        }
+    if (any_forced_in) red.rebuild();
+    return reduce_fixpoint(red, monitor);
+}
+
+// The reduction on a compact problem (every row required, every column allowed). `forced` gets
+// P-local columns; the kernel's col_id / row_id are P-local too.
+Status reduce_problem(const Problem& P, const Monitor& monitor, std::vector<uint32_t>& forced, Problem& kernel) {
+    Coverage cov;
+    cov.n_samples = P.R;
+    cov.n_balls = P.C;
+    cov.ball_ptr = P.cptr;
+    cov.ball_samples = P.crow;
+    cov.sample_ptr = P.rptr;
+    cov.sample_balls = P.rcol;
+    Reducer red(P.C, P.R);
+    red.s_alive.assign(P.R, 1);
+    red.b_alive.assign(P.C, 1);
+    red.init(cov, true);
+    Status st = reduce_fixpoint(red, monitor);
+    if (!st.ok()) return st;
+    forced = red.forced;
+    kernel = make_kernel(red, P.C, P.R);
+    return Status::success();
+}
+
+// Exact solve of one connected component: greedy -> Lagrangian bound and heuristic ->
+// reduced-cost fixing (drop every column that no cover smaller than the incumbent can use) ->
+// reduction of what is left -> CBC on that, with the incumbent as cutoff.
+struct ComponentResult {
+    std::vector<uint32_t> sel;  // P-local columns, ascending
+    double lb = 0;
+    bool proven = false;
+    bool used_cbc = false;
+};
+
+ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bool has_deadline, int threads,
+                                const Monitor& monitor) {
+    ComponentResult out;
+    out.sel = greedy_cover(P);
+    remove_redundant(P.cptr, P.crow, P.R, nullptr, nullptr, out.sel);
+    out.lb = double(disjoint_bound(P));
+    auto done = [&]() {
+        if (out.lb >= double(out.sel.size())) { out.lb = double(out.sel.size()); out.proven = true; }
+        return out.proven;
+    };
+    if (done()) return out;
+    // The subgradient phase gets at most a quarter of what is left of the budget.
+    Clock::time_point lag_deadline = deadline;
+    if (has_deadline) lag_deadline = Clock::now() + (deadline - Clock::now()) / 4;
+    const Lagrange L = lagrangian(P, out.sel, 1000, lag_deadline);
+    if (L.best.size() < out.sel.size()) out.sel = L.best;
+    out.lb = std::max(out.lb, std::ceil(L.bound - 1e-6));
+    if (done() || monitor.cancelled()) return out;
+
+    // Covers smaller than the incumbent have value <= target; a column j with
+    // L(u) + c_j(u) > target is in none of them.
+    const double target = double(out.sel.size()) - 1.0;
+    std::vector<uint8_t> keep(P.C, 0);
+    for (uint32_t c = 0; c < P.C; ++c) keep[c] = L.bound + std::max(0.0, L.cost[c]) <= target + 1e-6;
+    const Problem Q = restrict_columns(P, keep);
+    for (uint32_t r = 0; r < Q.R; ++r)
+        if (Q.rptr[r] == Q.rptr[r + 1]) { out.lb = double(out.sel.size()); out.proven = true; return out; }
+    std::vector<uint32_t> qforced;
+    Problem K;
+    if (!reduce_problem(Q, monitor, qforced, K).ok()) return out;
+    auto to_p = [&](uint32_t kcol) { return Q.col_id[K.col_id[kcol]]; };
+    const size_t inc = out.sel.size();
+    if (qforced.size() >= inc) { out.lb = double(inc); out.proven = true; return out; }
+    if (K.R == 0) {  // the forced columns alone cover everything: smaller than the incumbent
+        out.sel.clear();
+        for (uint32_t c : qforced) out.sel.push_back(Q.col_id[c]);
+        std::sort(out.sel.begin(), out.sel.end());
+        out.lb = double(out.sel.size());
+        out.proven = true;
+        return out;
+    }
+    double remaining = 0;
+    if (has_deadline) {
+        remaining = std::chrono::duration<double>(deadline - Clock::now()).count();
+        if (remaining <= 0) return out;
+    }
+    out.used_cbc = true;
+    CbcOutcome cbc;
+    try {
+        cbc = run_cbc(K, inc - qforced.size(), has_deadline ? remaining : 0.0, threads);
+    } catch (const std::bad_alloc&) {
+        throw;
+    } catch (...) {
+        cbc = CbcOutcome{};  // CBC failure: keep the incumbent
+    }
+    if (!cbc.ok) return out;
+    if (cbc.has_solution) {
+        out.sel.clear();
+        for (uint32_t c : qforced) out.sel.push_back(Q.col_id[c]);
+        for (uint32_t c : cbc.solution) out.sel.push_back(to_p(c));
+        std::sort(out.sel.begin(), out.sel.end());
+    }
+    const double obj = double(out.sel.size());
+    if (cbc.proven) {
+        out.lb = obj;
+        out.proven = true;
+    } else if (std::isfinite(cbc.bound)) {
+        // every cover below the old incumbent lies in K (+ forced): optimum >= min(obj, forced + bound)
+        out.lb = std::max(out.lb, std::min(obj, double(qforced.size()) + std::ceil(cbc.bound - 1e-6)));
+    }
+    done();
+    return out;
 }
 
 Status solve_impl(const Coverage& cov, const CoverOptions& opt, bool skip_uncoverable, const Monitor& monitor,
@@ -707,37 +1032,26 @@ Status solve_impl(const Coverage& cov, const CoverOptions& opt, bool skip_uncove
         ksel = capp_cover(P, *opt.centers, *opt.radii, red.forced);
         remove_redundant(P.cptr, P.crow, P.R, nullptr, nullptr, ksel);
     } else {
-        ksel = greedy_cover(P);
-        remove_redundant(P.cptr, P.crow, P.R, nullptr, nullptr, ksel);
         if (opt.solver == Solver::exact) {
-            const double greedy_obj = double(ksel.size());
-            if (P.C == 0 || klb >= greedy_obj) {
-                proven = true;  // empty kernel, or the disjoint-rows bound meets the greedy cover
-                klb = greedy_obj;
-            } else {
+            const bool has_deadline = opt.time_limit_s > 0 && std::isfinite(opt.time_limit_s);
+            const auto deadline = has_deadline ? t0 + std::chrono::duration_cast<Clock::duration>(
+                                                          std::chrono::duration<double>(opt.time_limit_s))
+                                               : Clock::time_point::max();
+            proven = true;
+            klb = 0;
+            for (const Problem& Q : split_components(P)) {
                 if (monitor.cancelled()) return fail(Code::cancelled, "set cover: cancelled");
-                CbcOutcome cbc;
-                try {
-                    cbc = run_cbc(P, ksel.size(), opt.time_limit_s, opt.threads);
-                } catch (const std::bad_alloc&) {
-                    throw;
-                } catch (...) {
-                    cbc = CbcOutcome{};  // CBC failure: keep the greedy cover
-                }
-                if (cbc.ok) {
-                    if (cbc.has_solution) ksel = cbc.solution;  // strictly better than greedy
-                    const double obj = double(ksel.size());
-                    if (cbc.proven) {
-                        // trust CBC's proof even when its reported bound lags the objective
-                        proven = true;
-                        klb = obj;
-                    } else if (std::isfinite(cbc.bound)) {
-                        // optimum >= incumbent, or optimum < cutoff and >= bound
-                        const double b = std::ceil(cbc.bound - 1e-6);
-                        klb = std::max(klb, std::min(b, obj));
-                    }
-                }
+                const ComponentResult cr = solve_component(Q, deadline, has_deadline, opt.threads, monitor);
+                for (uint32_t c : cr.sel) ksel.push_back(Q.col_id[c]);
+                klb += cr.lb;
+                proven = proven && cr.proven;
+                result.components++;
+                result.cbc_components += cr.used_cbc;
             }
+            std::sort(ksel.begin(), ksel.end());
+        } else {
+            ksel = greedy_cover(P);
+            remove_redundant(P.cptr, P.crow, P.R, nullptr, nullptr, ksel);
         }
     }
     if (!covers_problem(P, ksel)) return fail(Code::internal, "set cover: kernel selection does not cover the kernel");
@@ -771,6 +1085,14 @@ Status solve_impl(const Coverage& cov, const CoverOptions& opt, bool skip_uncove
 }
 
 }  // namespace
+
+void remove_redundant_balls(const Coverage& cov, const std::vector<uint8_t>& required,
+                            const std::vector<uint8_t>& locked, std::vector<uint32_t>& selected) {
+    std::sort(selected.begin(), selected.end());
+    selected.erase(std::unique(selected.begin(), selected.end()), selected.end());
+    remove_redundant(cov.ball_ptr, cov.ball_samples, cov.n_samples, required.empty() ? nullptr : &required,
+                     locked.empty() ? nullptr : &locked, selected);
+}
 
 namespace detail {
 Status reduce_set_cover(const Coverage& cov, const CoverOptions& opt, bool skip_uncoverable, const Monitor& monitor,

@@ -14,7 +14,12 @@ enum class Solver : int32_t { exact = 0, greedy = 1, capp = 2 };
 
 struct CoverOptions {
     Solver solver = Solver::exact;
-    double time_limit_s = 60.0;   // CBC wall-clock budget; <= 0 means no limit
+    // Wall-clock budget of the whole solve (reduction included); <= 0 means no limit. Anytime:
+    // on expiry the best cover found so far (never worse than greedy) is returned with a valid
+    // lower bound and gap. Overshoot: the reduction and the first greedy always run to the end,
+    // and CBC checks its limit only between nodes, so its root LP and cut loop on a large
+    // kernel can overrun the budget (seconds on dense kernels of ~1000 x 2000).
+    double time_limit_s = 60.0;
     int32_t threads = 1;          // CBC threads (1 = serial, deterministic)
     // Optional per-sample / per-ball masks (empty = none). Non-zero = set.
     std::vector<uint8_t> ignorable_samples;   // need not be covered
@@ -33,6 +38,8 @@ struct CoverResult {
     double gap = 0;                        // (objective - lower_bound) / objective
     size_t rows_before = 0, cols_before = 0, rows_after = 0, cols_after = 0, forced = 0;
     double time_reduce_s = 0, time_solve_s = 0;
+    size_t components = 0;                 // connected components of the kernel (exact solver)
+    size_t cbc_components = 0;             // of which needed CBC (the rest: bound met the incumbent)
     std::vector<uint32_t> uncovered;       // samples no allowed ball covers (only when allowed)
 };
 
@@ -41,6 +48,12 @@ struct CoverResult {
 // which case those samples are reported in result.uncovered and treated as ignorable.
 Status solve_set_cover(const Coverage& cov, const CoverOptions& opt, bool skip_uncoverable,
                        const Monitor& monitor, CoverResult& result);
+
+// Drops balls of `selected` (ascending on return) whose required samples are all covered by the
+// other selected balls, smallest lists first (ties: lower index). Empty `required` = every
+// sample required; balls with a non-zero `locked` entry (if given) are never dropped.
+void remove_redundant_balls(const Coverage& cov, const std::vector<uint8_t>& required,
+                            const std::vector<uint8_t>& locked, std::vector<uint32_t>& selected);
 
 namespace detail {
 // The reduction alone (exposed for tests): same checks as solve_set_cover; on success `forced`

@@ -1,0 +1,148 @@
+// bench_select.cpp: the selection engine alone, per instance: size before/after the reduction,
+// kernel components, |V| for exact / greedy / Coverage Axis++, lower bound and gap of the exact
+// solve, time per phase (coverage, reduction, solve) and the peak memory of the instance (each
+// instance runs in its own forked child; the peak includes candidate generation).
+// Instances: the Ant references, every paper model at the defaults and with 10 000 random
+// candidates, and three models with |S| = 30 000 (divide and conquer).
+// usage: bench_select [DATA_ROOT] [TIME_LIMIT_S]   (default ../shared/data, 5 s; skipped when missing)
+#include "bench_common.h"
+#include "candidates.h"
+#include "selection.h"
+#include "surface.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <ctime>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace {
+
+double g_time_limit = 5.0;
+
+double cpu_seconds() { return double(std::clock()) / CLOCKS_PER_SEC; }
+
+// One instance: exact, greedy, capp on the same candidates; prints one table row.
+void run_instance(const std::string& name, const ca::CandidateSet& set, double delta) {
+    ca::SelectOptions o;
+    o.delta = delta;
+    o.cover.time_limit_s = g_time_limit;
+    o.skip_uncoverable = true;  // random candidates may miss a few samples: benchmark the rest
+    ca::Selection ex, gr, cp;
+    const double c0 = cpu_seconds();
+    const auto t0 = std::chrono::steady_clock::now();
+    ca::Status st = ca::select_balls(set, o, ca::Monitor{}, ex);
+    const double wall = bench::seconds_since(t0), cpu = cpu_seconds() - c0;
+    if (!st.ok()) {
+        std::printf("| %s | %zu x %zu | failed: %s |\n", name.c_str(), set.cover_samples.size(), set.balls.size(), st.message.c_str());
+        return;
+    }
+    o.cover.solver = ca::Solver::greedy;
+    const bool g_ok = ca::select_balls(set, o, ca::Monitor{}, gr).ok();
+    o.cover.solver = ca::Solver::capp;
+    const bool c_ok = ca::select_balls(set, o, ca::Monitor{}, cp).ok();
+    const ca::CoverResult& r = ex.cover;
+    std::printf("| %s | %zu x %zu | %zu x %zu | %zu | %zu | %s | %zu | %zu | %.0f | %.2f | %s | %.3f | %.4f | %.3f | %.3f / %.3f | %.0f |\n",
+                name.c_str(), r.rows_before, r.cols_before, r.rows_after, r.cols_after,
+                ex.parts ? size_t(ex.parts) : r.components, ex.indices.size(), r.proven_optimal ? "yes" : "no",
+                g_ok ? gr.indices.size() : 0, c_ok ? cp.indices.size() : 0, r.lower_bound, 100 * r.gap,
+                ex.parts ? "d&c" : (r.cbc_components ? "cbc" : "bound"), ex.time_coverage_s, r.time_reduce_s,
+                r.time_solve_s, wall, cpu, bench::peak_rss_mb());
+}
+
+// Runs `fn` in a forked child so that the peak memory is per instance.
+template <class F>
+void in_child(F fn) {
+    std::fflush(stdout);
+    const pid_t pid = fork();
+    if (pid == 0) {
+        fn();
+        std::fflush(stdout);
+        _exit(0);
+    }
+    int status = 0;
+    if (pid > 0) waitpid(pid, &status, 0);
+}
+
+bool load_model(const std::string& path, ca::Surface& s) {
+    caio::MeshData md;
+    std::string err;
+    if (!caio::read_mesh(path, md, err)) return false;
+    ca::Mesh m;
+    for (size_t i = 0; i + 2 < md.positions.size(); i += 3)
+        m.vertices.emplace_back(md.positions[i], md.positions[i + 1], md.positions[i + 2]);
+    for (size_t i = 0; i + 2 < md.triangles.size(); i += 3)
+        m.triangles.push_back({md.triangles[i], md.triangles[i + 1], md.triangles[i + 2]});
+    return ca::prepare_surface(std::move(m), {}, s).ok();
+}
+
+void model_instance(const std::string& path, ca::Generator gen, uint32_t samples) {
+    in_child([&] {
+        ca::Surface s;
+        const std::string name = bench::stem(path) + (gen == ca::Generator::random ? " (random)" : "") +
+                                 (samples != 1500 ? " |S| " + std::to_string(samples) : "");
+        if (!load_model(path, s)) { std::printf("| %s | read failed |\n", name.c_str()); return; }
+        ca::CandidateOptions co;
+        co.generator = gen;
+        co.random_candidates = 10000;
+        co.cover_samples = samples;
+        ca::CandidateSet set;
+        const ca::Status st = ca::generate_candidates(std::move(s), co, ca::Monitor{}, set);
+        if (!st.ok()) { std::printf("| %s | candidates failed: %s |\n", name.c_str(), st.message.c_str()); return; }
+        run_instance(name, set, 0.02);
+    });
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const std::string root = argc > 1 ? argv[1] : "../shared/data";
+    if (argc > 2) g_time_limit = std::atof(argv[2]);
+    const auto models = bench::list_files(root + "/meshes/paper", ".obj");
+    const std::string dir = root + "/reference/coverage_axis/";
+    if (models.empty()) {
+        std::printf("bench_select: no models under %s/meshes/paper, skipped\n", root.c_str());
+        return 0;
+    }
+    std::printf("\n## Selection engine (exact time limit %.1f s; times in s; peak MB per instance incl. candidates)\n\n", g_time_limit);
+    std::printf("| instance | rows x cols | kernel | comps/parts | exact | optimal | greedy | capp | bound | gap %% | how | "
+                "coverage | reduce | solve | wall / cpu | peak MB |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+
+    struct Ref { const char* mesh; const char* samples; const char* candidates; double delta; const char* name; };
+    const Ref refs[] = {
+        {"01Ants-12_mesh.off", "01Ants-12_mesh_samples_2000.obj", "01Ants-12_mesh_VD.txt", 0.02, "Ant-12 d.02 (opt 58)"},
+        {"01Ants-12_mesh.off", "01Ants-12_mesh_samples_2000.obj", "01Ants-12_mesh_VD.txt", 0.025, "Ant-12 d.025 (opt 50)"},
+        {"01Ants-27.off", "01Ants-27_samples_1500.obj", "01Ants-27_VD.txt", 0.03, "Ant-27 d.03 (opt 41)"},
+    };
+    for (const Ref& ref : refs) {
+        in_child([&] {
+            caio::MeshData mesh;
+            std::vector<double> s, r_unused, c, r;
+            std::string err;
+            if (!caio::read_mesh(dir + ref.mesh, mesh, err) || !caio::read_points(dir + ref.samples, s, r_unused, err) ||
+                !caio::read_points(dir + ref.candidates, c, r, err)) {
+                std::printf("| %s | missing: %s |\n", ref.name, err.c_str());
+                return;
+            }
+            // the normalisation of bench_pipeline: min corner at 0, longest side 1
+            double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+            for (size_t i = 0; i < mesh.positions.size(); ++i) {
+                lo[i % 3] = std::min(lo[i % 3], mesh.positions[i]);
+                hi[i % 3] = std::max(hi[i % 3], mesh.positions[i]);
+            }
+            const double L = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+            const ca::Vec3 o(lo[0], lo[1], lo[2]);
+            ca::CandidateSet set;
+            for (size_t i = 0; i + 2 < s.size(); i += 3) set.cover_samples.push_back((ca::Vec3(s[i], s[i + 1], s[i + 2]) - o) / L);
+            for (size_t i = 0; i + 2 < c.size(); i += 3)
+                set.balls.push_back(ca::Ball{(ca::Vec3(c[i], c[i + 1], c[i + 2]) - o) / L, r[i / 3] / L});
+            run_instance(ref.name, set, ref.delta);
+        });
+    }
+    for (const std::string& m : models) model_instance(m, ca::Generator::voronoi, 1500);
+    for (const std::string& m : models) model_instance(m, ca::Generator::random, 1500);
+    for (const char* big : {"bunny", "armadillo", "fertility"})
+        model_instance(root + "/meshes/paper/" + big + ".obj", ca::Generator::voronoi, 30000);
+    return 0;
+}
