@@ -34,11 +34,12 @@ Status cancelled() { return fail(Code::cancelled, "cancelled"); }
 
 // Circumcentres of the Delaunay tetrahedra of pts, de-duplicated, within the (slightly grown)
 // bounding box; `accept(center, tet)` decides which are inner.
+// `accept(unique, raw, raw_tets, keep)` sees the candidate centres (raw, one per tetrahedron
+// in raw_tets) and fills keep[k] for raw[unique[k]]. The tetrahedra are left in `tets`.
 template <class Accept>
 Status voronoi_vertices(const std::vector<Vec3>& pts, const Monitor& monitor, Accept&& accept,
-                        std::vector<Ball>& balls) {
+                        std::vector<Ball>& balls, std::vector<Tet>& tets) {
     if (!monitor.report("delaunay", 0)) return cancelled();
-    std::vector<Tet> tets;
     Status st = delaunay_tetrahedra(pts, tets);
     if (!st.ok()) return st;
     if (!monitor.report("delaunay", 1)) return cancelled();
@@ -107,6 +108,7 @@ Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monito
     for (size_t i = 0; i < unique.size(); ++i) { upts[i] = pts[unique[i]]; unrm[i] = nrm[unique[i]]; }
     out.dense_samples = upts;
     std::vector<Ball> balls;
+    std::vector<Tet> tets_unused;
     Status st = voronoi_vertices(upts, monitor,
         [&](const std::vector<uint32_t>& ids, const std::vector<Ball>& raw, const std::vector<Tet>& tets,
             std::vector<uint8_t>& keep) {
@@ -117,7 +119,7 @@ Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monito
                 keep[k] = inner;
             }
             return Status::success();
-        }, balls);
+        }, balls, tets_unused);
     if (!st.ok()) return st;
     out.balls = cluster_filter(balls);
     return Status::success();
@@ -129,14 +131,32 @@ Status mesh_voronoi_candidates(const CandidateOptions& opt, const Monitor& monit
     std::vector<Vec3> unique;
     for (uint32_t i : remove_near_duplicates(samples, kDuplicateTolerance)) unique.push_back(samples[i]);
     out.dense_samples = unique;
-    return voronoi_vertices(unique, monitor,
-        [&](const std::vector<uint32_t>& ids, const std::vector<Ball>& raw, const std::vector<Tet>&,
+    // Every tetrahedron's circumcentre is tested (not only the de-duplicated candidates) so the
+    // connection step gets the inner flags of the whole Voronoi diagram; the candidates keep
+    // exactly the flags they had.
+    std::vector<uint8_t> raw_inner;
+    std::vector<Tet> raw_tets_kept;
+    Status st = voronoi_vertices(unique, monitor,
+        [&](const std::vector<uint32_t>& ids, const std::vector<Ball>& raw, const std::vector<Tet>& raw_tets,
             std::vector<uint8_t>& keep) {
-            const bool done = parallel_for(ids.size(), threads, 8192, monitor, "inside", [&](size_t b, size_t e) {
-                for (size_t k = b; k < e; ++k) keep[k] = winding.inside(raw[ids[k]].center);
+            raw_inner.assign(raw.size(), 0);
+            const bool done = parallel_for(raw.size(), threads, 8192, monitor, "inside", [&](size_t b, size_t e) {
+                for (size_t k = b; k < e; ++k) raw_inner[k] = winding.inside(raw[k].center);
             });
-            return done ? Status::success() : cancelled();
-        }, out.balls);
+            if (!done) return cancelled();
+            for (size_t k = 0; k < ids.size(); ++k) keep[k] = raw_inner[ids[k]];
+            raw_tets_kept = raw_tets;
+            return Status::success();
+        }, out.balls, out.voronoi_tets);
+    if (!st.ok()) return st;
+    // Tetrahedra without a usable circumcentre (flat, or far outside the box) are outer.
+    out.voronoi_inner.assign(out.voronoi_tets.size(), 0);
+    {
+        size_t r = 0;
+        for (size_t t = 0; t < out.voronoi_tets.size() && r < raw_tets_kept.size(); ++t)
+            if (out.voronoi_tets[t] == raw_tets_kept[r]) out.voronoi_inner[t] = raw_inner[r++];
+    }
+    return Status::success();
 }
 
 Status mesh_random_candidates(const CandidateOptions& opt, const Monitor& monitor, const WindingNumber& winding,
@@ -201,6 +221,8 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
         WindingNumber winding(out.surface.mesh);
         st = opt.generator == Generator::voronoi ? mesh_voronoi_candidates(opt, monitor, winding, threads, out)
                                                  : mesh_random_candidates(opt, monitor, winding, threads, out);
+        if (st.ok() && opt.connect_samples > 0)
+            out.connect_samples = sample_surface(out.surface.mesh, opt.connect_samples, stream_seed(opt.seed, 4));
     }
     if (!st.ok()) return st;
     out.time_candidates_s = seconds_since(t0) - out.time_sampling_s;

@@ -2,8 +2,12 @@
 // inside Voronoi vertices of |C| surface samples (radius = circumradius), random interior points
 // (radius = exact distance to the mesh), or for oriented point clouds the Voronoi vertices on the
 // inner side of all four generating points' normals, with the outlier filter of the paper.
+// For meshes it also keeps what the connection step needs: denser surface samples for the
+// power diagram, and the Delaunay tetrahedra of the Voronoi samples with their inner flags
+// (the inner Voronoi diagram = medial mesh of the medial-axis route).
 #pragma once
 #include "common.h"
+#include "delaunay.h"
 #include "surface.h"
 
 namespace ca {
@@ -15,6 +19,9 @@ struct CandidateOptions {
     uint32_t cover_samples = 1500;
     uint32_t voronoi_samples = 4000;
     uint32_t random_candidates = 10000;
+    // Surface samples for the power-diagram connection (meshes; 0 = reuse the Voronoi samples).
+    // Point clouds always use their own (de-duplicated) points.
+    uint32_t connect_samples = 10000;
     uint64_t seed = 1;
     int32_t threads = 0;    // 0 = all cores
 };
@@ -23,7 +30,13 @@ struct CandidateOptions {
 struct CandidateSet {
     Surface surface;                      // empty mesh when built from caller arrays
     std::vector<Vec3> cover_samples;      // S
-    std::vector<Vec3> dense_samples;      // samples used by the connection step (C, or the points)
+    std::vector<Vec3> dense_samples;      // the Voronoi samples C (or the points of a cloud)
+    std::vector<Vec3> connect_samples;    // power-diagram samples (empty: use dense_samples)
+    // Voronoi generator on a mesh: the Delaunay tetrahedra of dense_samples (flat ones dropped)
+    // and, per tetrahedron, whether its circumcentre is inside the shape (winding number > 1/2).
+    // Empty otherwise (the medial-axis route then builds them itself).
+    std::vector<Tet> voronoi_tets;
+    std::vector<uint8_t> voronoi_inner;
     std::vector<Ball> balls;              // P, undilated medial radii
     double time_sampling_s = 0, time_candidates_s = 0;
 };

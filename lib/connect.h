@@ -1,22 +1,80 @@
 // connect.h: step 3 of the pipeline: edges and triangles between the selected balls.
-// Power-diagram route (paper 4.3): the regular triangulation of the selected balls (weight r'^2)
-// together with surface samples (weight delta^2), by Qhull's 4-D lifting; an edge or triangle of
-// the triangulation whose vertices are all selected balls becomes a skeleton edge or triangle.
+//
+// Two routes build the raw connectivity:
+//  * power (paper 4.3; meshes and point clouds): the regular triangulation of the selected balls
+//    (weight r'^2, r' the dilated radius) together with dense surface samples (weight delta^2,
+//    CandidateSet::connect_samples, 10 000 by default), by Qhull's 4-D lifting; an edge or
+//    triangle of a cell whose vertices are all selected balls becomes a skeleton edge/triangle.
+//  * medial (meshes only): the inner Voronoi diagram of the Voronoi samples as a medial mesh
+//    (vertices: circumcentres of inner Delaunay tetrahedra; edges: inner tetrahedra sharing a
+//    face; faces: the Voronoi polygon dual to a Delaunay edge whose closed ring of tetrahedra is
+//    all inner, fanned into triangles). Each selected ball is snapped to its nearest medial
+//    vertex (its own vertex for the Voronoi generator); every medial vertex gets the label of its
+//    nearest anchor along the medial mesh (multi-source Dijkstra, Euclidean edge lengths); two
+//    anchors whose regions share a medial edge are joined by an edge, three anchors meeting on
+//    one fan triangle by a triangle.
+//
+// Both routes then apply the same three repairs, in this order (ConnectOptions):
+//  * remove_outside: an edge or triangle whose interior leaves the shape is removed (a triangle
+//    first, then an edge, which also removes the triangles on it). The rule: test points are
+//    placed on the element on a grid of spacing h = delta/4 (delta = Selection::delta, or 0.005 for
+//    scale dilation), edges at h along the segment, triangles on a barycentric grid whose
+//    sub-edges are <= h; a point inside the undilated ball of one of the element's own vertices
+//    counts as inside (those balls are inner balls); any other point must be inside the shape:
+//    generalised winding number > 1/2 for meshes; for point clouds, inside 0.95 x one of its 16
+//    nearest candidate balls.
+//    One failing point removes the element.
+//  * fill_holes: holes bounded by 3 or 4 edges are filled with triangles (and chords) when
+//    those pass the same inside test (the power diagram misses triangles where sample cells
+//    come between the balls; a real tunnel cannot be spanned by inside triangles).
+//  * reconnect: if the skeleton has several components, they are joined Kruskal-style by the
+//    shortest segments between balls of different components whose test points (same rule)
+//    are all inside; a connected shape thus gets a connected skeleton unless no such segment
+//    exists. Only edges are added (each joins two components, so b1 does not change).
 #pragma once
 #include "candidates.h"
 #include "selection.h"
 #include "skeleton.h"
 
+#include <memory>
+
 namespace ca {
 
-enum class ConnectMethod : int32_t { power = 0 };
+enum class ConnectMethod : int32_t { power = 0, medial = 1 };
 
 struct ConnectOptions {
     ConnectMethod method = ConnectMethod::power;
+    bool remove_outside = true;   // drop edges/triangles that leave the shape
+    bool fill_holes = true;       // fill 3- and 4-edge holes whose triangles stay inside
+    bool reconnect = true;        // join components by the shortest inside edges
+    int32_t threads = 0;          // 0 = all cores
 };
 
 // Skeleton in internal units; its balls are the selected balls (undilated radii), in selection order.
+// The medial route needs a mesh: point clouds give Code::invalid_argument.
 Status connect_balls(const CandidateSet& set, const Selection& sel, const ConnectOptions& opt,
                      const Monitor& monitor, Skeleton& out);
+
+// Whether the point p of a skeleton element counts as inside the shape under the rule above
+// (`balls` = the element's own vertices' undilated balls). Exposed for tests and benchmarks.
+class InsideTest {
+public:
+    explicit InsideTest(const CandidateSet& set);
+    ~InsideTest();
+    InsideTest(InsideTest&&) noexcept;
+    InsideTest& operator=(InsideTest&&) noexcept;
+    bool inside(const Vec3& p) const;   // winding number > 1/2 (meshes), in a candidate ball (clouds)
+    // Edge (a, b) / triangle (a, b, c) of balls: every test point at spacing h passes.
+    bool segment_inside(const Ball& a, const Ball& b, double h) const;
+    bool triangle_inside(const Ball& a, const Ball& b, const Ball& c, double h) const;
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+namespace detail {
+// The medial-axis route's raw edges and faces (connect_medial.cpp); `out.balls` is already set.
+Status connect_medial(const CandidateSet& set, const Selection& sel, const Monitor& monitor, Skeleton& out);
+}  // namespace detail
 
 }  // namespace ca

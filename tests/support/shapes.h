@@ -75,3 +75,25 @@ inline ca::Mesh torus(double R, double r, int major = 96, int minor = 32) {
 }
 
 }  // namespace shapes
+
+namespace shapes {
+
+// Two meshes as one (vertex indices of `b` shifted), `b` moved by `offset`.
+inline ca::Mesh merged(const ca::Mesh& a, const ca::Mesh& b, const ca::Vec3& offset = ca::Vec3::Zero()) {
+    ca::Mesh m = a;
+    const uint32_t base = uint32_t(m.vertices.size());
+    for (const ca::Vec3& v : b.vertices) m.vertices.push_back(v + offset);
+    for (const ca::Tri& t : b.triangles) m.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+    return m;
+}
+
+// Axis-aligned box [0, sx] x [0, sy] x [0, sz], 12 outward-facing triangles.
+inline ca::Mesh box(double sx, double sy, double sz) {
+    ca::Mesh m;
+    for (int i = 0; i < 8; ++i) m.vertices.push_back({(i & 1) ? sx : 0.0, (i & 2) ? sy : 0.0, (i & 4) ? sz : 0.0});
+    m.triangles = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+                   {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+    return m;
+}
+
+}  // namespace shapes

@@ -1,0 +1,202 @@
+// test_connect.cpp: both connection routes (power diagram, medial axis) on shapes with known
+// skeleton topology: torus (one loop), genus-3 solid (three loops), capsule (a path), two disjoint
+// spheres (two components), a thin plate (a sheet: triangles). Every element of every skeleton
+// must stay inside the shape (rule in `leaves_shape`). Plus the medial route's refusal of point
+// clouds and cancellation.
+#include <doctest/doctest.h>
+
+#include "candidates.h"
+#include "connect.h"
+#include "distance.h"
+#include "mesh_io.h"
+#include "selection.h"
+#include "support/shapes.h"
+#include "winding.h"
+
+#include <atomic>
+#include <cmath>
+#include <string>
+
+namespace {
+
+const ca::ConnectMethod kRoutes[] = {ca::ConnectMethod::power, ca::ConnectMethod::medial};
+const char* route_name(ca::ConnectMethod m) { return m == ca::ConnectMethod::power ? "power" : "medial"; }
+
+struct Prepared {
+    ca::CandidateSet set;
+    ca::Selection sel;
+};
+
+// Candidates and selection at the defaults (5 s solver limit), in internal units. The plate
+// uses the greedy cover: CBC needs seconds to prove the optimum on its flat faces.
+Prepared prepare(ca::Mesh mesh, ca::Solver solver = ca::Solver::exact) {
+    Prepared p;
+    ca::Surface surface;
+    ca::Status st = ca::prepare_surface(std::move(mesh), {}, surface);
+    REQUIRE_MESSAGE(st.ok(), st.message);
+    ca::Monitor monitor;
+    st = ca::generate_candidates(std::move(surface), {}, monitor, p.set);
+    REQUIRE_MESSAGE(st.ok(), st.message);
+    ca::SelectOptions sopt;
+    sopt.cover.time_limit_s = 5;
+    sopt.cover.solver = solver;
+    st = ca::select_balls(p.set, sopt, monitor, p.sel);
+    REQUIRE_MESSAGE(st.ok(), st.message);
+    return p;
+}
+
+ca::Skeleton connect(const Prepared& p, ca::ConnectMethod method) {
+    ca::ConnectOptions opt;
+    opt.method = method;
+    ca::Skeleton sk;
+    const ca::Status st = ca::connect_balls(p.set, p.sel, opt, ca::Monitor{}, sk);
+    REQUIRE_MESSAGE(st.ok(), st.message);
+    return sk;
+}
+
+// The number of edges and triangles that leave the shape. Test points: along every edge and on a
+// barycentric grid over every triangle, spacing delta/8 (internal units). A point is fine when it
+// lies within 0.95 x the undilated radius of one of the element's own balls (inner balls), or its
+// generalised winding number is > 1/2, or it is within delta/4 of the surface (tolerance for the
+// library's coarser delta/4 grid). Any other point makes its element leave the shape.
+size_t leaves_shape(const Prepared& p, const ca::Skeleton& sk) {
+    const ca::Mesh& mesh = p.set.surface.mesh;
+    const ca::WindingNumber winding(mesh);
+    const ca::MeshDistance distance(mesh);
+    const double h = p.sel.delta / 8, tol = p.sel.delta / 4;
+    auto fine = [&](const ca::Vec3& q, std::initializer_list<uint32_t> own) {
+        for (uint32_t v : own)
+            if ((q - sk.balls[v].center).norm() < 0.95 * sk.balls[v].radius) return true;
+        return winding(q) > 0.5 || distance.distance_below(q, 2 * tol) <= tol;
+    };
+    size_t bad = 0;
+    for (const auto& e : sk.edges) {
+        const ca::Vec3 a = sk.balls[e[0]].center, b = sk.balls[e[1]].center;
+        const int n = std::max(1, int(std::ceil((b - a).norm() / h)));
+        for (int i = 1; i < n; ++i)
+            if (!fine(a + (b - a) * (double(i) / n), {e[0], e[1]})) { ++bad; break; }
+    }
+    for (const ca::Tri& f : sk.faces) {
+        const ca::Vec3 a = sk.balls[f[0]].center, b = sk.balls[f[1]].center, c = sk.balls[f[2]].center;
+        const int n = std::max(1, int(std::ceil(std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()}) / h)));
+        bool ok = true;
+        for (int i = 0; i <= n && ok; ++i)
+            for (int j = 0; i + j <= n && ok; ++j)
+                ok = fine((a * i + b * j + c * (n - i - j)) / double(n), {f[0], f[1], f[2]});
+        bad += !ok;
+    }
+    return bad;
+}
+
+ca::Mesh read_obj(const std::string& path) {
+    caio::MeshData data;
+    std::string error;
+    REQUIRE_MESSAGE(caio::read_mesh(path, data, error), error);
+    ca::Mesh m;
+    for (size_t i = 0; i + 2 < data.positions.size(); i += 3)
+        m.vertices.emplace_back(data.positions[i], data.positions[i + 1], data.positions[i + 2]);
+    for (size_t i = 0; i + 2 < data.triangles.size(); i += 3)
+        m.triangles.push_back({data.triangles[i], data.triangles[i + 1], data.triangles[i + 2]});
+    return m;
+}
+
+}  // namespace
+
+TEST_CASE("test_connect: torus gives one loop") {
+    const Prepared p = prepare(shapes::torus(1.0, 0.3));
+    for (ca::ConnectMethod m : kRoutes) {
+        CAPTURE(route_name(m));
+        const ca::Skeleton sk = connect(p, m);
+        const ca::TopologyStats t = ca::topology(sk);
+        CHECK(t.components == 1);
+        CHECK(t.isolated == 0);
+        CHECK(t.betti1 == 1);
+        CHECK(leaves_shape(p, sk) == 0);
+    }
+}
+
+TEST_CASE("test_connect: genus-3 solid gives three loops") {
+    const Prepared p = prepare(read_obj(std::string(CA_TEST_DATA) + "/genus3.obj"));
+    for (ca::ConnectMethod m : kRoutes) {
+        CAPTURE(route_name(m));
+        const ca::Skeleton sk = connect(p, m);
+        const ca::TopologyStats t = ca::topology(sk);
+        CHECK(t.components == 1);
+        CHECK(t.betti1 == 3);
+        CHECK(leaves_shape(p, sk) == 0);
+    }
+}
+
+TEST_CASE("test_connect: capsule gives a path") {
+    const Prepared p = prepare(shapes::capsule(2.0, 0.5));
+    REQUIRE(p.sel.indices.size() >= 3);
+    for (ca::ConnectMethod m : kRoutes) {
+        CAPTURE(route_name(m));
+        const ca::Skeleton sk = connect(p, m);
+        const ca::TopologyStats t = ca::topology(sk);
+        CHECK(t.components == 1);
+        CHECK(t.betti1 == 0);
+        CHECK(sk.edges.size() == sk.balls.size() - 1);   // a tree ...
+        size_t max_degree = 0;                            // ... that is a path
+        std::vector<size_t> degree(sk.balls.size(), 0);
+        for (const auto& e : sk.edges) max_degree = std::max({max_degree, ++degree[e[0]], ++degree[e[1]]});
+        CHECK(max_degree <= 2);
+        CHECK(sk.faces.empty());
+        CHECK(leaves_shape(p, sk) == 0);
+    }
+}
+
+TEST_CASE("test_connect: two disjoint spheres give two components") {
+    const Prepared p = prepare(shapes::merged(shapes::sphere(1.0, 24, 48), shapes::sphere(1.0, 24, 48), {3.0, 0, 0}));
+    for (ca::ConnectMethod m : kRoutes) {
+        CAPTURE(route_name(m));
+        const ca::Skeleton sk = connect(p, m);
+        const ca::TopologyStats t = ca::topology(sk);
+        CHECK(t.components == 2);
+        CHECK(t.betti1 == 0);
+        CHECK(leaves_shape(p, sk) == 0);
+    }
+}
+
+TEST_CASE("test_connect: a thin plate gives a connected sheet of triangles") {
+    const Prepared p = prepare(shapes::box(1.0, 1.0, 0.05), ca::Solver::greedy);
+    REQUIRE(p.sel.indices.size() >= 3);
+    for (ca::ConnectMethod m : kRoutes) {
+        CAPTURE(route_name(m));
+        const ca::Skeleton sk = connect(p, m);
+        const ca::TopologyStats t = ca::topology(sk);
+        CHECK(t.components == 1);
+        CHECK(!sk.faces.empty());
+        CHECK(leaves_shape(p, sk) == 0);
+    }
+}
+
+TEST_CASE("test_connect: the medial route refuses point clouds; both routes can be cancelled") {
+    const ca::Mesh sphere = shapes::sphere(1.0, 24, 48);
+    ca::Surface cloud;
+    std::vector<ca::Vec3> normals;
+    for (const ca::Vec3& v : sphere.vertices) normals.push_back(v.normalized());
+    REQUIRE(ca::prepare_surface(ca::Mesh{sphere.vertices, {}}, normals, cloud).ok());
+    ca::CandidateSet set;
+    ca::Monitor monitor;
+    REQUIRE(ca::generate_candidates(std::move(cloud), {}, monitor, set).ok());
+    ca::Selection sel;
+    REQUIRE(ca::select_balls(set, {}, monitor, sel).ok());
+    ca::ConnectOptions opt;
+    opt.method = ca::ConnectMethod::medial;
+    ca::Skeleton sk;
+    const ca::Status st = ca::connect_balls(set, sel, opt, monitor, sk);
+    CHECK(st.code == ca::Code::invalid_argument);
+    CHECK(st.message.find("mesh") != std::string::npos);
+    opt.method = ca::ConnectMethod::power;
+    CHECK(ca::connect_balls(set, sel, opt, monitor, sk).ok());
+
+    const Prepared p = prepare(shapes::capsule(2.0, 0.5, 48, 32));
+    std::atomic<int> cancel{1};
+    ca::Monitor stop;
+    stop.cancel_flag = &cancel;
+    for (ca::ConnectMethod m : kRoutes) {
+        opt.method = m;
+        CHECK(ca::connect_balls(p.set, p.sel, opt, stop, sk).code == ca::Code::cancelled);
+    }
+}
