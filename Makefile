@@ -5,7 +5,7 @@ CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 DEMO_MODEL ?= tests/data/fox.obj
 DATA ?= ../shared/data
 
-.PHONY: all deps configure build demo test bench install clean
+.PHONY: all deps configure build demo test bench install clean fuzz
 
 all: build
 
@@ -31,5 +31,13 @@ bench: build
 install: build
 	@cmake --install $(BUILD) $(if $(PREFIX),--prefix $(PREFIX),)
 
+# libFuzzer on the C ABI with ASan/UBSan (clang); FUZZ_SECONDS of fuzzing
+FUZZ_SECONDS ?= 60
+fuzz: deps
+	@cmake -S . -B build-fuzz -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCA_FUZZ=ON -DCA_SANITIZE=ON \
+	  -DCA_BUILD_TESTS=OFF -DCA_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
+	@cmake --build build-fuzz -j $(JOBS) --target fuzz_pipeline
+	@mkdir -p build-fuzz/corpus && ./build-fuzz/fuzz_pipeline -max_total_time=$(FUZZ_SECONDS) -max_len=512 build-fuzz/corpus
+
 clean:
-	@rm -rf $(BUILD) demo-output
+	@rm -rf $(BUILD) build-fuzz demo-output
