@@ -332,6 +332,7 @@ void ca_candidate_options_init(ca_candidate_options* o) {
     o->voronoi_samples = 4000;
     o->random_candidates = 10000;
     o->seed = 1;
+    o->connect_samples = 10000;
 }
 
 ca_status ca_candidates(ca_context* ctx, const ca_surface_view* surface, const ca_candidate_options* options,
@@ -362,6 +363,7 @@ ca_status ca_candidates(ca_context* ctx, const ca_surface_view* surface, const c
         co.voronoi_samples = o.voronoi_samples;
         co.random_candidates = o.random_candidates;
         co.seed = o.seed;
+        co.connect_samples = o.connect_samples;
         co.threads = ctx->desc.threads;
         Pending<ca_candidate_set> res(make_result<ca_candidate_set>(ctx));
         st = ca::generate_candidates(std::move(surf), co, ctx->monitor(), res.obj->core);
@@ -451,6 +453,8 @@ void ca_select_options_init(ca_select_options* o) {
     o->scale = 1.5;
     o->solver = CA_SOLVER_EXACT;
     o->time_limit_s = 60;
+    o->target_tolerance = 1e-4;
+    o->divide_threshold = 8000;
 }
 
 ca_status ca_select(ca_context* ctx, const ca_candidate_set* set, const ca_select_options* options, ca_selection** out) {
@@ -466,6 +470,8 @@ ca_status ca_select(ca_context* ctx, const ca_candidate_set* set, const ca_selec
         if (o.solver < CA_SOLVER_EXACT || o.solver > CA_SOLVER_CAPP)
             return ca::fail(Code::invalid_argument, "unknown solver " + std::to_string(o.solver));
         if (std::isnan(o.time_limit_s)) return ca::fail(Code::invalid_argument, "time_limit_s is NaN");
+        if (o.target_count && !(std::isfinite(o.target_tolerance) && o.target_tolerance > 0))
+            return ca::fail(Code::invalid_argument, "target_tolerance must be a finite number > 0");
         ca::SelectOptions so;
         so.dilation = static_cast<ca::Dilation>(o.dilation);
         so.delta = o.delta;
@@ -473,6 +479,9 @@ ca_status ca_select(ca_context* ctx, const ca_candidate_set* set, const ca_selec
         so.skip_uncoverable = o.skip_uncoverable != 0;
         so.cover.solver = static_cast<ca::Solver>(o.solver);
         so.cover.time_limit_s = o.time_limit_s;
+        so.target_count = o.target_count;
+        so.target_tolerance = o.target_tolerance;
+        so.dc_threshold = o.divide_threshold;
         const size_t ns = set->core.cover_samples.size(), nb = set->core.balls.size();
         if (o.ignorable_samples) so.cover.ignorable_samples.assign(o.ignorable_samples, o.ignorable_samples + ns);
         if (o.forced_in) so.cover.forced_in.assign(o.forced_in, o.forced_in + nb);
@@ -513,6 +522,10 @@ ca_status ca_select(ca_context* ctx, const ca_candidate_set* set, const ca_selec
         s.time_total_s = r.core.time_total_s;
         s.rows_before = cr.rows_before; s.cols_before = cr.cols_before;
         s.rows_after = cr.rows_after; s.cols_after = cr.cols_after; s.forced = cr.forced;
+        s.components = cr.components;
+        s.probes = r.core.probes;
+        s.parts = r.core.parts;
+        s.scale_used = r.core.scale;
         if (!cr.uncovered.empty())
             ctx->log(2, std::to_string(cr.uncovered.size()) + " samples are covered by no ball and were skipped");
         *out = res.release();
@@ -542,7 +555,10 @@ void ca_connect_options_init(ca_connect_options* o) {
     if (!o) return;
     std::memset(o, 0, sizeof *o);
     o->struct_size = sizeof *o;
-    o->method = CA_CONNECT_POWER;
+    o->method = CA_CONNECT_AUTO;
+    o->remove_outside = 1;
+    o->fill_holes = 1;
+    o->reconnect = 1;
 }
 
 ca_status ca_connect(ca_context* ctx, const ca_candidate_set* set, const ca_selection* selection,
@@ -557,11 +573,17 @@ ca_status ca_connect(ca_context* ctx, const ca_candidate_set* set, const ca_sele
         ca_connect_options o;
         Status st = read_options(options, o, ca_connect_options_init, "ca_connect_options");
         if (!st.ok()) return st;
-        if (o.method != CA_CONNECT_POWER)
+        if (o.method != CA_CONNECT_POWER && o.method != CA_CONNECT_MEDIAL && o.method != CA_CONNECT_AUTO)
             return ca::fail(Code::invalid_argument, "unknown connection method " + std::to_string(o.method));
         const auto t0 = std::chrono::steady_clock::now();
         ca::ConnectOptions co;
-        co.method = static_cast<ca::ConnectMethod>(o.method);
+        const bool has_mesh = !set->core.surface.point_cloud && !set->core.surface.mesh.triangles.empty();
+        if (o.method == CA_CONNECT_AUTO) co.method = has_mesh ? ca::ConnectMethod::medial : ca::ConnectMethod::power;
+        else co.method = static_cast<ca::ConnectMethod>(o.method);
+        co.remove_outside = o.remove_outside != 0;
+        co.fill_holes = o.fill_holes != 0;
+        co.reconnect = o.reconnect != 0;
+        co.threads = ctx->desc.threads;
         ca::Skeleton sk;
         st = ca::connect_balls(set->core, selection->core, co, ctx->monitor(), sk);
         if (!st.ok()) return st;
@@ -588,6 +610,7 @@ ca_status ca_connect(ca_context* ctx, const ca_candidate_set* set, const ca_sele
         s.isolated = topo.isolated;
         s.betti1 = topo.betti1;
         s.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        s.method = static_cast<int32_t>(co.method);
         *out = res.release();
         return Status::success();
     });

@@ -152,6 +152,8 @@ typedef struct ca_candidate_options {
     uint32_t voronoi_samples;    /* |C|, samples whose Voronoi vertices are candidates; default 4000 */
     uint32_t random_candidates;  /* random generator: number of interior points; default 10000 */
     uint64_t seed;               /* default 1; the same seed gives the same result */
+    uint32_t connect_samples;    /* meshes: surface samples for the power-diagram connection;
+                                    default 10000; 0 = reuse the Voronoi samples */
 } ca_candidate_options;
 
 CA_API void ca_candidate_options_init(ca_candidate_options* options);
@@ -209,6 +211,12 @@ typedef struct ca_select_options {
     const uint8_t* ignorable_samples; /* sample_count entries: need not be covered */
     const uint8_t* forced_in;         /* ball_count entries: must be selected */
     const uint8_t* forced_out;        /* ball_count entries: must not be selected */
+    uint32_t target_count;       /* 0 (default): off. K > 0: at most K balls with the smallest dilation
+                                    (delta, or scale) that achieves it, found by bisection starting
+                                    from the delta/scale above; see README for the guarantee */
+    double target_tolerance;     /* bisection tolerance on delta (fraction of L) or scale; default 1e-4 */
+    uint32_t divide_threshold;   /* more samples than this: divide and conquer (paper 8.1);
+                                    default 8000; 0 = never */
 } ca_select_options;
 
 CA_API void ca_select_options_init(ca_select_options* options);
@@ -239,16 +247,25 @@ typedef struct ca_select_stats {
     double time_solve_s;
     double time_total_s;         /* including the coverage matrix */
     uint64_t rows_before, cols_before, rows_after, cols_after, forced;
+    uint64_t components;         /* independent parts of the reduced problem */
+    uint64_t probes;             /* set-cover solves (target_count: one per bisection step) */
+    uint64_t parts;              /* divide and conquer: spatial parts (0 = not used) */
+    double scale_used;           /* the scale factor used (CA_DILATE_SCALE), else 0 */
 } ca_select_stats;
 
 CA_API ca_status ca_selection_stats(const ca_selection* selection, ca_select_stats* stats);
 
 /* ---- step 3: connectivity ------------------------------------------------------------------ */
-#define CA_CONNECT_POWER 0 /* regular triangulation of selected balls and surface samples */
+#define CA_CONNECT_POWER  0 /* regular triangulation of selected balls and dense surface samples */
+#define CA_CONNECT_MEDIAL 1 /* regions of the selected balls on the inner Voronoi medial mesh (meshes) */
+#define CA_CONNECT_AUTO   2 /* MEDIAL for meshes, POWER for point clouds and caller arrays */
 
 typedef struct ca_connect_options {
     uint32_t struct_size;        /* sizeof(ca_connect_options) */
-    int32_t method;              /* CA_CONNECT_*; default POWER */
+    int32_t method;              /* CA_CONNECT_*; default AUTO */
+    int32_t remove_outside;      /* 1 (default): drop edges/triangles whose interior leaves the shape */
+    int32_t fill_holes;          /* 1 (default): fill 3- and 4-edge holes whose triangles stay inside */
+    int32_t reconnect;           /* 1 (default): join components by the shortest inside edges */
 } ca_connect_options;
 
 CA_API void ca_connect_options_init(ca_connect_options* options);
@@ -274,6 +291,7 @@ typedef struct ca_skeleton_stats {
     uint64_t isolated;           /* vertices with no edge */
     int64_t betti1;              /* independent cycles of the complex */
     double time_s;
+    int32_t method;              /* CA_CONNECT_POWER or CA_CONNECT_MEDIAL: the route used */
 } ca_skeleton_stats;
 
 CA_API ca_status ca_skeleton_stats_get(const ca_skeleton* skeleton, ca_skeleton_stats* stats);

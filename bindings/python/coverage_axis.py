@@ -20,6 +20,7 @@ STATUS_NAMES = {
     12: "CA_ERROR_INTERNAL", 13: "CA_ERROR_NO_CANDIDATES",
 }
 SOLVERS = {"exact": 0, "greedy": 1, "capp": 2}
+CONNECT = {"power": 0, "medial": 1, "auto": 2}
 GENERATORS = {"voronoi": 0, "random": 1}
 
 
@@ -39,29 +40,34 @@ class _SurfaceView(Structure):
 
 class _CandidateOptions(Structure):
     _fields_ = [("struct_size", c_uint32), ("generator", c_int32), ("cover_samples", c_uint32),
-                ("voronoi_samples", c_uint32), ("random_candidates", c_uint32), ("seed", c_uint64)]
+                ("voronoi_samples", c_uint32), ("random_candidates", c_uint32), ("seed", c_uint64),
+                ("connect_samples", c_uint32)]
 
 
 class _SelectOptions(Structure):
     _fields_ = [("struct_size", c_uint32), ("dilation", c_int32), ("delta", c_double), ("scale", c_double),
                 ("solver", c_int32), ("time_limit_s", c_double), ("skip_uncoverable", c_int32),
-                ("ignorable_samples", POINTER(c_uint8)), ("forced_in", POINTER(c_uint8)), ("forced_out", POINTER(c_uint8))]
+                ("ignorable_samples", POINTER(c_uint8)), ("forced_in", POINTER(c_uint8)), ("forced_out", POINTER(c_uint8)),
+                ("target_count", c_uint32), ("target_tolerance", c_double), ("divide_threshold", c_uint32)]
 
 
 class _SelectStats(Structure):
     _fields_ = [("struct_size", c_uint32), ("proven_optimal", c_int32), ("solver", c_int32), ("objective", c_double),
                 ("lower_bound", c_double), ("gap", c_double), ("delta_absolute", c_double), ("time_reduce_s", c_double),
                 ("time_solve_s", c_double), ("time_total_s", c_double), ("rows_before", c_uint64),
-                ("cols_before", c_uint64), ("rows_after", c_uint64), ("cols_after", c_uint64), ("forced", c_uint64)]
+                ("cols_before", c_uint64), ("rows_after", c_uint64), ("cols_after", c_uint64), ("forced", c_uint64),
+                ("components", c_uint64), ("probes", c_uint64), ("parts", c_uint64), ("scale_used", c_double)]
 
 
 class _ConnectOptions(Structure):
-    _fields_ = [("struct_size", c_uint32), ("method", c_int32)]
+    _fields_ = [("struct_size", c_uint32), ("method", c_int32), ("remove_outside", c_int32), ("fill_holes", c_int32),
+                ("reconnect", c_int32)]
 
 
 class _SkeletonStats(Structure):
     _fields_ = [("struct_size", c_uint32), ("vertices", c_uint64), ("edges", c_uint64), ("faces", c_uint64),
-                ("components", c_uint64), ("isolated", c_uint64), ("betti1", c_int64), ("time_s", c_double)]
+                ("components", c_uint64), ("isolated", c_uint64), ("betti1", c_int64), ("time_s", c_double),
+                ("method", c_int32)]
 
 
 class _SkeletonView(Structure):
@@ -171,7 +177,7 @@ class Skeleton:
 
 def skeletonize(vertices, triangles=None, normals=None, delta=0.02, scale=None, cover_samples=1500,
                 voronoi_samples=4000, generator="voronoi", random_candidates=10000, solver="exact",
-                time_limit_s=60.0, skip_uncoverable=False, seed=1):
+                time_limit_s=60.0, skip_uncoverable=False, seed=1, target_count=0, connect="auto"):
     """Runs candidates -> selection -> connection. Raises CoverageAxisError on bad input."""
     view, keep = _surface(vertices, triangles, normals)
     co = _CandidateOptions()
@@ -185,8 +191,10 @@ def skeletonize(vertices, triangles=None, normals=None, delta=0.02, scale=None, 
     else:
         so.delta = delta
     so.solver, so.time_limit_s, so.skip_uncoverable = SOLVERS[solver], time_limit_s, int(skip_uncoverable)
+    so.target_count = target_count
     cop = _ConnectOptions()
     _lib.ca_connect_options_init(ctypes.byref(cop))
+    cop.method = CONNECT[connect]
     with _Context() as ctx:
         cset, sel, sk = c_void_p(), c_void_p(), c_void_p()
         try:

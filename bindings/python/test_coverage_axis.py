@@ -27,6 +27,16 @@ class BindingTest(unittest.TestCase):
             self.assertLess(i, len(sk.radii))
             self.assertLess(j, len(sk.radii))
 
+    def test_target_count_and_routes(self):
+        full = ca.skeletonize(BOX_V, BOX_F, cover_samples=400, voronoi_samples=800)
+        k = max(1, len(full.radii) - 2)
+        small = ca.skeletonize(BOX_V, BOX_F, cover_samples=400, voronoi_samples=800, target_count=k)
+        self.assertLessEqual(len(small.radii), k)
+        self.assertGreater(small.stats["delta_absolute"], full.stats["delta_absolute"])
+        for route in ("power", "medial"):
+            sk = ca.skeletonize(BOX_V, BOX_F, cover_samples=400, voronoi_samples=800, connect=route)
+            self.assertEqual(sk.stats["components"], 1)
+
     def test_results_in_caller_units(self):
         a = ca.skeletonize(BOX_V, BOX_F, cover_samples=400, voronoi_samples=800)
         big = [(1000 * x, 1000 * y, 1000 * z) for x, y, z in BOX_V]

@@ -30,6 +30,8 @@ const char* kUsage =
     "  --candidates KIND         voronoi (default) | random[:N] (default N 10000) | FILE (v x y z r)\n"
     "  --surface-samples FILE    cover these samples (v x y z, input units) instead of sampling\n"
     "  --solver NAME             exact (default) | greedy | capp\n"
+    "  --target-count K          at most K balls, with the smallest delta (or scale) that achieves it\n"
+    "  --connect ROUTE           auto (default: medial for meshes, power for point clouds) | medial | power\n"
     "  --skip-uncoverable        ignore samples no ball covers instead of failing\n"
     "  --ignore-samples FILE     indices (0-based) of samples that need not be covered\n"
     "  --force-in FILE           indices of candidate balls that must be selected\n"
@@ -46,7 +48,8 @@ const char* kUsage =
 struct Args {
     std::string input, out_ma, out_obj, out_ply, candidates = "voronoi", surface_samples;
     std::string export_samples, export_candidates, solver = "exact";
-    std::string ignore_samples, force_in, force_out;
+    std::string ignore_samples, force_in, force_out, connect = "auto";
+    long target_count = 0;
     double delta = 0.02, scale = 0, time_limit = 60;
     long samples = 1500, voronoi_samples = 4000, random_count = 10000, threads = 0;
     unsigned long long seed = 1;
@@ -102,6 +105,11 @@ int parse_args(int argc, char** argv, Args& a) {
             else if (k == "--seed") { char* e; a.seed = std::strtoull(v, &e, 10); if (*e || e == v) return usage_error("--seed takes a non-negative integer"); }
             else if (k == "--time-limit") { if (!parse_number(v, d)) return usage_error("--time-limit takes seconds"); a.time_limit = d; }
             else if (k == "--threads") { if (!parse_count(v, a.threads, 0)) return usage_error("--threads takes a count >= 0"); }
+            else if (k == "--target-count") { if (!parse_count(v, a.target_count, 1)) return usage_error("--target-count takes a count >= 1"); }
+            else if (k == "--connect") {
+                a.connect = v;
+                if (a.connect != "auto" && a.connect != "medial" && a.connect != "power") return usage_error("--connect takes auto, medial or power");
+            }
             else if (k == "--ignore-samples") a.ignore_samples = v;
             else if (k == "--force-in") a.force_in = v;
             else if (k == "--force-out") a.force_out = v;
@@ -260,6 +268,7 @@ int main(int argc, char** argv) {
     so.solver = a.solver == "greedy" ? CA_SOLVER_GREEDY : a.solver == "capp" ? CA_SOLVER_CAPP : CA_SOLVER_EXACT;
     so.time_limit_s = a.time_limit;
     so.skip_uncoverable = a.skip_uncoverable ? 1 : 0;
+    so.target_count = uint32_t(a.target_count);
     // user control (paper 8.2): index files become per-sample / per-ball masks
     std::vector<uint8_t> ignorable, forced_in, forced_out;
     struct MaskFile { const std::string& path; size_t size; std::vector<uint8_t>& mask; const uint8_t** field; const char* what; };
@@ -289,6 +298,7 @@ int main(int argc, char** argv) {
     t0 = Clock::now();
     ca_connect_options cop;
     ca_connect_options_init(&cop);
+    cop.method = a.connect == "medial" ? CA_CONNECT_MEDIAL : a.connect == "power" ? CA_CONNECT_POWER : CA_CONNECT_AUTO;
     if ((st = ca_connect(ctx, owned.set, owned.sel, &cop, &owned.sk)) != CA_OK) return library_error(ctx, st, "connection");
     const double t_connect = since(t0);
     ca_skeleton_stats ks;
@@ -328,29 +338,32 @@ int main(int argc, char** argv) {
         std::printf("{\"input\":\"%s\",\"surface_samples\":%zu,\"candidates\":%zu,\"selected\":%zu,\"edges\":%llu,"
                     "\"faces\":%llu,\"components\":%llu,\"isolated\":%llu,\"betti1\":%lld,\"uncovered\":%zu,"
                     "\"optimal\":%s,\"objective\":%.0f,\"lower_bound\":%.0f,\"gap\":%.6g,\"delta\":%.9g,"
-                    "\"solver\":\"%s\",\"output\":\"%s\",%s%s"
+                    "\"solver\":\"%s\",\"connect\":\"%s\",\"probes\":%llu,\"output\":\"%s\",%s%s"
                     "\"time_s\":{\"read\":%.4f,\"candidates\":%.4f,\"select\":%.4f,\"connect\":%.4f,\"write\":%.4f,"
                     "\"evaluate\":%.4f,\"total\":%.4f}}\n",
                     json_escape(a.input).c_str(), n_samples, n_candidates, nv, (unsigned long long)ks.edges,
                     (unsigned long long)ks.faces, (unsigned long long)ks.components, (unsigned long long)ks.isolated,
                     (long long)ks.betti1, uncovered, ss.proven_optimal ? "true" : "false", ss.objective, ss.lower_bound,
-                    ss.gap, ss.delta_absolute, a.solver.c_str(), json_escape(a.out_ma).c_str(),
+                    ss.gap, ss.delta_absolute, a.solver.c_str(), ks.method == CA_CONNECT_MEDIAL ? "medial" : "power",
+                    (unsigned long long)ss.probes, json_escape(a.out_ma).c_str(),
                     a.evaluate ? cli::evaluation_json(ev).c_str() : "", a.evaluate ? "," : "", t_read, t_candidates,
                     t_select, t_connect, t_write, t_evaluate, t_total);
     } else if (!a.quiet) {
         std::printf("input       %s (%zu vertices, %zu triangles)\n", a.input.c_str(), mesh.positions.size() / 3, mesh.triangles.size() / 3);
         std::printf("samples     %zu surface samples, %zu candidate balls (%s)\n", n_samples, n_candidates, a.candidates.c_str());
         if (so.dilation == CA_DILATE_OFFSET)
-            std::printf("dilation    r + %.4g (delta %.4g of the longest bbox side)\n", ss.delta_absolute, a.delta);
+            std::printf("dilation    r + %.4g (delta %.4g of the longest bbox side)%s\n", ss.delta_absolute,
+                        ss.delta_absolute / ca_candidate_set_reference_length(owned.set), a.target_count ? ", found by the target size" : "");
         else
-            std::printf("dilation    r * %.4g\n", a.scale);
+            std::printf("dilation    r * %.4g%s\n", ss.scale_used, a.target_count ? ", found by the target size" : "");
         std::printf("selection   %zu balls, %s (lower bound %.0f, gap %.2f %%), solver %s\n", nv,
                     ss.proven_optimal ? "proven optimal" : "not proven optimal", ss.lower_bound, 100 * ss.gap, a.solver.c_str());
         std::printf("            reduced %llu x %llu -> %llu x %llu (%llu forced)\n", (unsigned long long)ss.rows_before,
                     (unsigned long long)ss.cols_before, (unsigned long long)ss.rows_after, (unsigned long long)ss.cols_after,
                     (unsigned long long)ss.forced);
         if (uncovered) std::printf("            %zu samples covered by no ball were skipped\n", uncovered);
-        std::printf("skeleton    %zu vertices, %llu edges, %llu faces, %llu component(s), %llu isolated, b1 = %lld\n", nv,
+        std::printf("skeleton    %s route: %zu vertices, %llu edges, %llu faces, %llu component(s), %llu isolated, b1 = %lld\n",
+                    ks.method == CA_CONNECT_MEDIAL ? "medial" : "power", nv,
                     (unsigned long long)ks.edges, (unsigned long long)ks.faces, (unsigned long long)ks.components,
                     (unsigned long long)ks.isolated, (long long)ks.betti1);
         if (a.evaluate)

@@ -327,6 +327,78 @@ static void test_box_pipeline(void) {
     ca_context_destroy(ctx);
 }
 
+/* Connection routes and the target size. */
+static void test_routes_and_target(void) {
+    ca_context* ctx = NULL;
+    ca_candidate_set* set = NULL;
+    ca_selection* sel = NULL;
+    ca_selection* small = NULL;
+    ca_skeleton* sk = NULL;
+    ca_surface_view v = box_view();
+    ca_candidate_options o = small_options();
+    ca_connect_options cop;
+    ca_select_options so;
+    ca_select_stats full_stats, small_stats;
+    ca_skeleton_stats ks;
+    int32_t method;
+    CHECK(ca_context_create(NULL, &ctx) == CA_OK);
+    CHECK(ca_candidates(ctx, &v, &o, &set) == CA_OK);
+    CHECK(ca_select(ctx, set, NULL, &sel) == CA_OK);
+    for (method = CA_CONNECT_POWER; method <= CA_CONNECT_AUTO; ++method) {
+        ca_connect_options_init(&cop);
+        cop.method = method;
+        sk = NULL;
+        CHECK(ca_connect(ctx, set, sel, &cop, &sk) == CA_OK);
+        ks.struct_size = sizeof ks;
+        CHECK(ca_skeleton_stats_get(sk, &ks) == CA_OK);
+        CHECK(ks.components == 1 && ks.betti1 == 0);
+        CHECK(ks.method == (method == CA_CONNECT_AUTO ? CA_CONNECT_MEDIAL : method));
+        ca_skeleton_destroy(sk);
+    }
+    ca_connect_options_init(&cop);
+    cop.method = 9;
+    sk = NULL;
+    CHECK(ca_connect(ctx, set, sel, &cop, &sk) == CA_ERROR_INVALID_ARGUMENT && sk == NULL);
+
+    /* target size: at most K balls, and it needs a larger delta than the default */
+    full_stats.struct_size = sizeof full_stats;
+    CHECK(ca_selection_stats(sel, &full_stats) == CA_OK);
+    ca_select_options_init(&so);
+    so.target_count = (uint32_t)(full_stats.objective > 2 ? full_stats.objective - 2 : 1);
+    CHECK(ca_select(ctx, set, &so, &small) == CA_OK);
+    small_stats.struct_size = sizeof small_stats;
+    CHECK(ca_selection_stats(small, &small_stats) == CA_OK);
+    CHECK(ca_selection_count(small) <= so.target_count);
+    CHECK(small_stats.delta_absolute > full_stats.delta_absolute && small_stats.probes > 1);
+    so.target_tolerance = 0;
+    ca_selection_destroy(small);
+    small = NULL;
+    CHECK(ca_select(ctx, set, &so, &small) == CA_ERROR_INVALID_ARGUMENT && small == NULL);
+    ca_selection_destroy(sel);
+    ca_candidate_set_destroy(set);
+
+    /* the medial route needs a mesh: a set from caller arrays has none */
+    {
+        const double samples[] = {0, 0, 0, 1, 0, 0, 2, 0, 0, 3, 0, 0, 0, 1, 0, 0, 0, 1};
+        const double centers[] = {0.5, 0.2, 0.2, 2.5, 0.2, 0.2};
+        const double radii[] = {1.5, 1.5};
+        set = NULL;
+        sel = NULL;
+        CHECK(ca_candidates_from_arrays(ctx, samples, 6, 0, centers, 0, radii, 0, 2, 0, &set) == CA_OK);
+        CHECK(ca_select(ctx, set, NULL, &sel) == CA_OK);
+        ca_connect_options_init(&cop);
+        cop.method = CA_CONNECT_MEDIAL;
+        sk = NULL;
+        CHECK(ca_connect(ctx, set, sel, &cop, &sk) == CA_ERROR_INVALID_ARGUMENT && sk == NULL);
+        cop.method = CA_CONNECT_AUTO;
+        CHECK(ca_connect(ctx, set, sel, &cop, &sk) == CA_OK);
+        ca_skeleton_destroy(sk);
+        ca_selection_destroy(sel);
+        ca_candidate_set_destroy(set);
+    }
+    ca_context_destroy(ctx);
+}
+
 /* Evaluation: known answer for one ball in the box, and bad input. */
 static void test_evaluate(void) {
     ca_context* ctx = NULL;
@@ -378,6 +450,7 @@ int main(void) {
     test_cancel();
     test_box_pipeline();
     test_evaluate();
+    test_routes_and_target();
     printf("test_abi: %d passed, %d failed\n", checks - failures, failures);
     return failures ? 1 : 0;
 }

@@ -58,6 +58,17 @@ check "samples and candidates from files" test "$(json_field candidates "$tmp/f.
 "$tool" "$data/fox.obj" -o "$tmp/sc.ma" --scale 1.5 --skip-uncoverable --quiet
 check "scale dilation runs" test $? -eq 0
 
+# connection routes and the target size
+for route in medial power; do
+  "$tool" "$data/torus.obj" -o "$tmp/t_$route.ma" --connect $route --json > "$tmp/t.json"
+  check "torus, $route route: one loop (b1 = 1)" test "$(json_field betti1 "$tmp/t.json")" -eq 1
+  check "torus, $route route: connected" test "$(json_field components "$tmp/t.json")" -eq 1
+  check "torus, $route route reported" grep -q "\"connect\":\"$route\"" "$tmp/t.json"
+done
+"$tool" "$data/fox.obj" -o "$tmp/k.ma" --target-count 30 --json > "$tmp/k.json"
+check "target count: at most 30 balls" test "$(json_field selected "$tmp/k.json")" -le 30
+check "target count: a larger delta than the default" awk -v d="$(json_field delta "$tmp/k.json")" -v d0="$(json_field delta "$tmp/fox.json")" 'BEGIN{exit !(d > d0)}'
+
 # user control: forced-in / forced-out balls and ignorable samples are honoured
 "$tool" "$data/fox.obj" -o "$tmp/u0.ma" --export-candidates "$tmp/fc.obj" --quiet
 echo "0 1 2" > "$tmp/in.txt"
