@@ -221,6 +221,10 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
         WindingNumber winding(out.surface.mesh);
         st = opt.generator == Generator::voronoi ? mesh_voronoi_candidates(opt, monitor, winding, threads, out)
                                                  : mesh_random_candidates(opt, monitor, winding, threads, out);
+        if (st.ok()) {
+            const MeshDistance distance(out.surface.mesh);
+            out.fallback_balls = add_fallback_balls(out, winding, distance);
+        }
         if (st.ok() && opt.connect_samples > 0)
             out.connect_samples = sample_surface(out.surface.mesh, opt.connect_samples, stream_seed(opt.seed, 4));
     }

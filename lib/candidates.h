@@ -38,10 +38,18 @@ struct CandidateSet {
     std::vector<Tet> voronoi_tets;
     std::vector<uint8_t> voronoi_inner;
     std::vector<Ball> balls;              // P, undilated medial radii
+    size_t fallback_balls = 0;            // of which added by add_fallback_balls (at the end)
     double time_sampling_s = 0, time_candidates_s = 0;
 };
 
 Status generate_candidates(Surface surface, const CandidateOptions& opt, const Monitor& monitor,
                            CandidateSet& out);
+
+class WindingNumber;
+class MeshDistance;
+// Every cover sample that no candidate reaches within kFallbackReach gets a small inner ball
+// under it (candidates_fallback.cpp), so a cover exists for every offset delta >= kFallbackReach.
+constexpr double kFallbackReach = 0.005;   // unit-cube units (0.5 % of the longest bbox side)
+size_t add_fallback_balls(CandidateSet& set, const WindingNumber& winding, const MeshDistance& distance);
 
 }  // namespace ca

@@ -170,13 +170,25 @@ Status connect_medial(const CandidateSet& set, const Selection& sel, const Monit
     std::vector<double> dist(m.vertices.size(), std::numeric_limits<double>::infinity());
     using Item = std::pair<double, uint32_t>;
     std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+    // Two balls can have the same nearest medial vertex (small balls at thin tips): the later one
+    // takes the nearest free vertex among a few, or else shares the region of the owner (an edge).
+    std::vector<std::array<uint32_t, 2>> shared;
+    constexpr size_t kSnapCandidates = 8;
     for (size_t i = 0; i < k; ++i) {
-        size_t idx = 0;
-        double d2 = 0;
-        if (tree.nearest(out.balls[i].center, 1, &idx, &d2) != 1 || label[idx] != kNone) continue;
-        label[idx] = uint32_t(i);
-        dist[idx] = 0;
-        queue.push({0.0, uint32_t(idx)});
+        size_t idx[kSnapCandidates];
+        double d2[kSnapCandidates];
+        const size_t found = tree.nearest(out.balls[i].center, kSnapCandidates, idx, d2);
+        if (found == 0) continue;
+        size_t pick = found;
+        for (size_t c = 0; c < found && pick == found; ++c)
+            if (label[idx[c]] == kNone) pick = c;
+        if (pick == found) {
+            shared.push_back({std::min(uint32_t(i), label[idx[0]]), std::max(uint32_t(i), label[idx[0]])});
+            continue;
+        }
+        label[idx[pick]] = uint32_t(i);
+        dist[idx[pick]] = 0;
+        queue.push({0.0, uint32_t(idx[pick])});
     }
     // multi-source Dijkstra along the medial edges
     std::vector<uint32_t> offset(m.vertices.size() + 1, 0), adjacency(2 * m.edges.size());
@@ -201,6 +213,7 @@ Status connect_medial(const CandidateSet& set, const Selection& sel, const Monit
         }
     }
     if (!monitor.report("connect", 0.4)) return cancelled();
+    out.edges.insert(out.edges.end(), shared.begin(), shared.end());
     for (const auto& e : m.edges) {
         const uint32_t a = label[e[0]], b = label[e[1]];
         if (a != kNone && b != kNone && a != b) out.edges.push_back({std::min(a, b), std::max(a, b)});

@@ -1,0 +1,67 @@
+// candidates_fallback.cpp: makes every surface sample coverable. Thin features (tentacle tips,
+// sharp ears) can have no inner Voronoi vertex near them, so no dilated candidate reaches some
+// samples and the set cover is infeasible. Under each sample that no candidate reaches within
+// kFallbackReach (in unit-cube units) this adds an inner ball touching the surface at that sample:
+// its centre moves inward along the normal of the nearest triangle, doubling the depth t while
+// the exact distance to the mesh stays within kFallbackReach / 2 of t (the ball still touches the
+// surface at the sample and nowhere nearer), so the ball grows towards the medial axis (like the
+// shrinking-ball construction of the medial axis). Its dilated radius reaches the sample for every
+// offset delta >= kFallbackReach / 2, so a cover exists for every delta >= kFallbackReach. The
+// optimiser uses such balls only where nothing else covers the sample. Samples where no point below the surface is inside (open
+// sheets, non-orientable strips) get no ball and are still reported as uncoverable.
+#include "candidates.h"
+
+#include "coverage.h"
+#include "distance.h"
+#include "winding.h"
+
+namespace ca {
+
+size_t add_fallback_balls(CandidateSet& set, const WindingNumber& winding, const MeshDistance& distance) {
+    const Mesh& mesh = set.surface.mesh;
+    if (mesh.triangles.empty() || set.cover_samples.empty()) return 0;
+    std::vector<Vec3> centers(set.balls.size());
+    std::vector<double> reach(set.balls.size());
+    for (size_t i = 0; i < set.balls.size(); ++i) {
+        centers[i] = set.balls[i].center;
+        reach[i] = set.balls[i].radius + kFallbackReach;
+    }
+    Coverage cov;
+    if (!build_coverage(set.cover_samples, centers, reach, Monitor{}, cov).ok()) return 0;
+    if (cov.sample_ptr.size() != set.cover_samples.size() + 1) cov.build_transpose();
+    size_t added = 0;
+    for (size_t j = 0; j < set.cover_samples.size(); ++j) {
+        if (cov.sample_ptr[j + 1] > cov.sample_ptr[j]) continue;  // some candidate reaches it
+        const Vec3& s = set.cover_samples[j];
+        Vec3 closest;
+        uint32_t tri = 0;
+        distance.distance(s, &closest, &tri);
+        const Tri& f = mesh.triangles[tri];
+        Vec3 n = (mesh.vertices[f[1]] - mesh.vertices[f[0]]).cross(mesh.vertices[f[2]] - mesh.vertices[f[0]]);
+        if (!(n.norm() > 0)) continue;
+        n.normalize();
+        // first depth inside the shape: half the reach, smaller for thinner parts
+        Ball best{s, -1};
+        double depth = 0.5 * kFallbackReach;
+        for (; depth > 1e-4 * kFallbackReach; depth *= 0.25) {
+            const Vec3 c = s - depth * n;
+            if (!winding.inside(c)) continue;
+            best = {c, distance.distance(c)};
+            break;
+        }
+        if (!(best.radius > 0)) continue;
+        // grow towards the medial axis while the ball still touches the surface at s only
+        for (depth *= 2; depth < 1.0; depth *= 2) {
+            const Vec3 c = s - depth * n;
+            if (!winding.inside(c)) break;
+            const double r = distance.distance(c);
+            if (depth - r > 0.5 * kFallbackReach) break;
+            best = {c, r};
+        }
+        set.balls.push_back(best);
+        ++added;
+    }
+    return added;
+}
+
+}  // namespace ca
