@@ -50,14 +50,27 @@ size_t add_fallback_balls(CandidateSet& set, const WindingNumber& winding, const
             break;
         }
         if (!(best.radius > 0)) continue;
-        // grow towards the medial axis while the ball still touches the surface at s only
-        for (depth *= 2; depth < 1.0; depth *= 2) {
-            const Vec3 c = s - depth * n;
-            if (!winding.inside(c)) break;
+        // grow towards the medial axis while the ball still touches the surface at s only:
+        // double the depth, then bisect between the last good and the first bad depth
+        auto touches_at_s = [&](double t, Ball& ball) {
+            const Vec3 c = s - t * n;
+            if (!winding.inside(c)) return false;
             const double r = distance.distance(c);
-            if (depth - r > 0.5 * kFallbackReach) break;
-            best = {c, r};
+            if (t - r > 0.5 * kFallbackReach) return false;
+            ball = {c, r};
+            return true;
+        };
+        double good = depth, bad = 0;
+        for (double t = 2 * depth; t < 1.0; t *= 2) {
+            if (!touches_at_s(t, best)) { bad = t; break; }
+            good = t;
         }
+        for (int step = 0; step < 6 && bad > 0; ++step) {
+            const double mid = 0.5 * (good + bad);
+            if (touches_at_s(mid, best)) good = mid;
+            else bad = mid;
+        }
+        touches_at_s(good, best);
         set.balls.push_back(best);
         ++added;
     }
