@@ -1,9 +1,12 @@
 // bench_qmat.cpp: evaluates Q-MAT's own medial meshes (reference/qmat_matfp/) against their input
 // models with the default evaluation options and prints |V|, h(S->E), h(E->S), the two-sided
 // Hausdorff distance (% of the bbox diagonal) and the time, next to EVALUATION.md's reference.
+// Then the comparison: our skeleton at the default delta and at Q-MAT's sizes (target size),
+// Q-MAT's own medial mesh, and the Coverage Axis paper's reported values, all measured (except
+// the paper's) by the same evaluation code.
 // Usage: bench_qmat [data root, default ../shared/data]
+#include "bench_common.h"
 #include "evaluate.h"
-#include "mesh_io.h"
 
 #include <Eigen/Geometry>
 
@@ -88,6 +91,7 @@ void synthetic(ca::Mesh& mesh, ca::Skeleton& sk) {
 struct Model {
     const char* name;
     double ref_se, ref_es;   // EVALUATION.md, this protocol
+    double paper_hd;         // Coverage Axis paper, two-sided, at Q-MAT's size (EVALUATION.md)
 };
 
 }  // namespace
@@ -123,9 +127,11 @@ int main(int argc, char** argv) {
         timing_row();
         return 0;
     }
-    const Model models[] = {{"crab", 2.154, 1.571}, {"dog", 3.009, 1.523},
-                            {"fertility", 3.438, 2.451}, {"hand", 0.685, 0.80},
-                            {"vase", 2.944, 2.130}};
+    const Model models[] = {{"crab", 2.154, 1.571, 1.759}, {"dog", 3.009, 1.523, 2.077},
+                            {"fertility", 3.438, 2.451, 2.703}, {"hand", 0.685, 0.80, 1.750},
+                            {"vase", 2.944, 2.130, 3.183}};
+    struct Row { std::string name; size_t qv; double qhd; size_t v0; double hd0; size_t vk; double hdk; double paper; };
+    std::vector<Row> rows;
     std::printf("%-10s %5s %9s %9s %9s %8s   %s\n", "model", "|V|", "S->E %", "E->S %",
                 "two-sided", "time s", "reference S->E / E->S");
     int failures = 0;
@@ -153,6 +159,32 @@ int main(int argc, char** argv) {
         std::printf("%-10s %5zu %9.3f %9.3f %9.3f %8.2f   %.3f / %.3f\n", m.name, sk.balls.size(),
                     r.hd_surface_to_recon, r.hd_recon_to_surface, r.hd_two_sided, secs, m.ref_se,
                     m.ref_es);
+        // ours: defaults, then at Q-MAT's size
+        ca_candidate_options co;
+        ca_candidate_options_init(&co);
+        ca_select_options so;
+        ca_select_options_init(&so);
+        so.time_limit_s = 20;
+        ca_connect_options cop;
+        ca_connect_options_init(&cop);
+        const bench::PipelineRun d = bench::run_pipeline(md, co, so, cop, true);
+        so.target_count = uint32_t(sk.balls.size());
+        const bench::PipelineRun k = bench::run_pipeline(md, co, so, cop, true);
+        rows.push_back({m.name, sk.balls.size(), r.hd_two_sided, d.balls, d.status == CA_OK ? d.eval.hd_two_sided : -1,
+                        k.balls, k.status == CA_OK ? k.eval.hd_two_sided : -1, m.paper_hd});
+    }
+    std::printf("\n## Two-sided Hausdorff distance (%% of the bbox diagonal), one evaluator for all\n\n");
+    std::printf("| model | Q-MAT |V| | Q-MAT HD | ours, delta 0.02: |V| | HD | ours at Q-MAT's |V|: |V| | HD | paper's Coverage Axis HD (its evaluator) |\n");
+    std::printf("|---|---|---|---|---|---|---|---|\n");
+    double sq = 0, s0 = 0, sk_ = 0, sp = 0;
+    for (const Row& r : rows) {
+        std::printf("| %s | %zu | %.3f | %zu | %.3f | %zu | %.3f | %.3f |\n", r.name.c_str(), r.qv, r.qhd, r.v0, r.hd0,
+                    r.vk, r.hdk, r.paper);
+        sq += r.qhd; s0 += r.hd0; sk_ += r.hdk; sp += r.paper;
+    }
+    if (!rows.empty()) {
+        const double n = double(rows.size());
+        std::printf("| mean | | %.3f | | %.3f | | %.3f | %.3f |\n", sq / n, s0 / n, sk_ / n, sp / n);
     }
     timing_row();
     return failures ? 1 : 0;
