@@ -23,7 +23,12 @@
 //    counts as inside (those balls are inner balls); any other point must be inside the shape:
 //    generalised winding number > 1/2 for meshes; for point clouds, inside 0.95 x one of its 16
 //    nearest candidate balls.
-//    One failing point removes the element.
+//    One failing point removes the element. For meshes, removal and hole filling also require the
+//    element's reconstruction to stay in the shape: at each test point the interpolated ball
+//    (radius interpolated like the centre) must have distance to the surface >= radius - delta
+//    (a cone or slab bridging a concave gap, e.g. between fingers, bulges out of the shape and
+//    would spoil the Hausdorff distance). Reconnection uses the centre-line rule only, so that a
+//    connected shape keeps a connected skeleton.
 //  * fill_holes: holes bounded by 3 or 4 edges are filled with triangles (and chords) when
 //    those pass the same inside test (the power diagram misses triangles where sample cells
 //    come between the balls; a real tunnel cannot be spanned by inside triangles).
@@ -64,10 +69,14 @@ public:
     InsideTest(InsideTest&&) noexcept;
     InsideTest& operator=(InsideTest&&) noexcept;
     bool inside(const Vec3& p) const;   // winding number > 1/2 (meshes), in a candidate ball (clouds)
-    // Edge (a, b) / triangle (a, b, c) of balls: every test point at spacing h passes.
-    bool segment_inside(const Ball& a, const Ball& b, double h) const;
-    bool triangle_inside(const Ball& a, const Ball& b, const Ball& c, double h) const;
+    // Edge (a, b) / triangle (a, b, c) of balls: every test point at spacing h passes. With
+    // envelope_tol >= 0 (meshes), the interpolated ball at each test point must also stay inside
+    // the shape up to envelope_tol (distance to the surface >= interpolated radius - envelope_tol):
+    // the reconstruction of the element (cone, slab) does not bulge out of the shape.
+    bool segment_inside(const Ball& a, const Ball& b, double h, double envelope_tol = -1) const;
+    bool triangle_inside(const Ball& a, const Ball& b, const Ball& c, double h, double envelope_tol = -1) const;
 private:
+    bool envelope_inside(const Vec3& p, double r, double tol) const;
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

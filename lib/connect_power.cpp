@@ -4,6 +4,7 @@
 #include "connect.h"
 
 #include "delaunay.h"
+#include "distance.h"
 #include "kdtree.h"
 #include "parallel.h"
 #include "winding.h"
@@ -85,17 +86,17 @@ Status connect_power(const CandidateSet& set, const Selection& sel, const Monito
 }
 
 // Removes the triangles, then the edges (with their triangles), that fail the inside test.
-bool remove_outside(const InsideTest& test, double h, int threads, const Monitor& monitor, Skeleton& s) {
+bool remove_outside(const InsideTest& test, double h, double tol, int threads, const Monitor& monitor, Skeleton& s) {
     std::vector<uint8_t> face_ok(s.faces.size(), 1), edge_ok(s.edges.size(), 1);
     if (!parallel_for(s.edges.size(), threads, 1024, monitor, "connect", [&](size_t b, size_t e) {
             for (size_t i = b; i < e; ++i)
-                edge_ok[i] = test.segment_inside(s.balls[s.edges[i][0]], s.balls[s.edges[i][1]], h);
+                edge_ok[i] = test.segment_inside(s.balls[s.edges[i][0]], s.balls[s.edges[i][1]], h, tol);
         }))
         return false;
     if (!parallel_for(s.faces.size(), threads, 256, monitor, "connect", [&](size_t b, size_t e) {
             for (size_t i = b; i < e; ++i) {
                 const Tri& f = s.faces[i];
-                face_ok[i] = test.triangle_inside(s.balls[f[0]], s.balls[f[1]], s.balls[f[2]], h);
+                face_ok[i] = test.triangle_inside(s.balls[f[0]], s.balls[f[1]], s.balls[f[2]], h, tol);
             }
         }))
         return false;
@@ -119,7 +120,7 @@ bool remove_outside(const InsideTest& test, double h, int threads, const Monitor
 // (no fifth vertex joined to all four) gets its shorter diagonal (the other if that one fails)
 // when both its triangles pass the inside test; then every 3-cycle without a face gets one when
 // it passes. Input and output canonical.
-void fill_small_holes(const InsideTest& test, double h, Skeleton& s) {
+void fill_small_holes(const InsideTest& test, double h, double tol, Skeleton& s) {
     const uint32_t n = uint32_t(s.balls.size());
     std::vector<std::vector<uint32_t>> adj;
     auto build_adjacency = [&]() {
@@ -130,7 +131,7 @@ void fill_small_holes(const InsideTest& test, double h, Skeleton& s) {
     auto linked = [&](uint32_t a, uint32_t b) { return std::binary_search(adj[a].begin(), adj[a].end(), b); };
     auto len2 = [&](uint32_t a, uint32_t b) { return (s.balls[a].center - s.balls[b].center).squaredNorm(); };
     auto inside = [&](uint32_t a, uint32_t b, uint32_t c) {
-        return test.triangle_inside(s.balls[a], s.balls[b], s.balls[c], h);
+        return test.triangle_inside(s.balls[a], s.balls[b], s.balls[c], h, tol);
     };
     std::vector<uint32_t> common;
     {
@@ -207,6 +208,7 @@ void reconnect(const InsideTest& test, double h, Skeleton& s) {
 
 struct InsideTest::Impl {
     std::unique_ptr<WindingNumber> winding;   // meshes only
+    std::unique_ptr<MeshDistance> distance;   // meshes only (envelope rule)
     std::vector<Vec3> centers;                // the candidate balls
     std::vector<double> radii;
     std::unique_ptr<PointTree> tree;
@@ -215,6 +217,7 @@ struct InsideTest::Impl {
 InsideTest::InsideTest(const CandidateSet& set) : impl_(std::make_unique<Impl>()) {
     if (!set.surface.mesh.triangles.empty()) {
         impl_->winding = std::make_unique<WindingNumber>(set.surface.mesh);
+        impl_->distance = std::make_unique<MeshDistance>(set.surface.mesh);
         return;
     }
     for (const Ball& b : set.balls) {
@@ -240,17 +243,25 @@ bool InsideTest::inside(const Vec3& p) const {
     return false;
 }
 
-bool InsideTest::segment_inside(const Ball& a, const Ball& b, double h) const {
+bool InsideTest::envelope_inside(const Vec3& p, double r, double tol) const {
+    if (tol < 0 || !impl_->distance) return true;
+    const double need = r - tol;
+    return need <= 0 || impl_->distance->distance_below(p, need) >= need;
+}
+
+bool InsideTest::segment_inside(const Ball& a, const Ball& b, double h, double tol) const {
     const int n = std::max(1, int(std::ceil((b.center - a.center).norm() / h)));
     for (int i = 1; i < n; ++i) {
-        const Vec3 p = a.center + (b.center - a.center) * (double(i) / n);
+        const double t = double(i) / n;
+        const Vec3 p = a.center + (b.center - a.center) * t;
+        if (!envelope_inside(p, (1 - t) * a.radius + t * b.radius, tol)) return false;
         if (in_ball(p, a) || in_ball(p, b)) continue;
         if (!inside(p)) return false;
     }
     return true;
 }
 
-bool InsideTest::triangle_inside(const Ball& a, const Ball& b, const Ball& c, double h) const {
+bool InsideTest::triangle_inside(const Ball& a, const Ball& b, const Ball& c, double h, double tol) const {
     const double longest = std::max({(b.center - a.center).norm(), (c.center - b.center).norm(),
                                      (a.center - c.center).norm()});
     const int n = std::max(1, int(std::ceil(longest / h)));
@@ -259,6 +270,7 @@ bool InsideTest::triangle_inside(const Ball& a, const Ball& b, const Ball& c, do
             const int k = n - i - j;
             if (i == n || j == n || k == n) continue;   // the vertices themselves
             const Vec3 p = (a.center * i + b.center * j + c.center * k) / double(n);
+            if (!envelope_inside(p, (a.radius * i + b.radius * j + c.radius * k) / double(n), tol)) return false;
             if (in_ball(p, a) || in_ball(p, b) || in_ball(p, c)) continue;
             if (!inside(p)) return false;
         }
@@ -290,9 +302,10 @@ Status connect_balls(const CandidateSet& set, const Selection& sel, const Connec
         const InsideTest test(set);
         const double h = (sel.delta > 0 ? sel.delta : 0.02) / 4;
         const int threads = resolve_threads(opt.threads);
-        if (opt.remove_outside && !remove_outside(test, h, threads, monitor, out)) return cancelled();
+        const double tol = sel.delta > 0 ? sel.delta : 0.02;   // the accepted dilation error
+        if (opt.remove_outside && !remove_outside(test, h, tol, threads, monitor, out)) return cancelled();
         if (!monitor.report("connect", 0.75)) return cancelled();
-        if (opt.fill_holes) fill_small_holes(test, h, out);
+        if (opt.fill_holes) fill_small_holes(test, h, tol, out);
         if (opt.reconnect) reconnect(test, h, out);
         canonicalize(out);
     }
