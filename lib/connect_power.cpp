@@ -302,7 +302,10 @@ Status connect_balls(const CandidateSet& set, const Selection& sel, const Connec
         const InsideTest test(set);
         const double h = (sel.delta > 0 ? sel.delta : 0.02) / 4;
         const int threads = resolve_threads(opt.threads);
-        const double tol = sel.delta > 0 ? sel.delta : 0.02;   // the accepted dilation error
+        // Envelope rule (medial route only): the accepted bulge is the dilation delta. On the power
+        // route it cut a real loop of genus-3's thin handles (b1 3 -> 2), so there only the
+        // centre-line rule applies.
+        const double tol = opt.method == ConnectMethod::medial ? (sel.delta > 0 ? sel.delta : 0.02) : -1;
         if (opt.remove_outside && !remove_outside(test, h, tol, threads, monitor, out)) return cancelled();
         if (!monitor.report("connect", 0.75)) return cancelled();
         if (opt.fill_holes) fill_small_holes(test, h, tol, out);
