@@ -28,7 +28,8 @@
 //    (radius interpolated like the centre) must have distance to the surface >= radius - delta
 //    (a cone or slab bridging a concave gap, e.g. between fingers, bulges out of the shape and
 //    would spoil the Hausdorff distance). Reconnection uses the centre-line rule only, so that a
-//    connected shape keeps a connected skeleton.
+//    connected shape keeps a connected skeleton; it accepts test points at most delta/4 outside
+//    the surface (a low-poly leg bends between its balls; the fox's foot stayed isolated).
 //  * fill_holes: holes bounded by 3 or 4 edges are filled with triangles (and chords) when
 //    those pass the same inside test (the power diagram misses triangles where sample cells
 //    come between the balls; a real tunnel cannot be spanned by inside triangles).
@@ -73,7 +74,8 @@ public:
     // envelope_tol >= 0 (meshes), the interpolated ball at each test point must also stay inside
     // the shape up to envelope_tol (distance to the surface >= interpolated radius - envelope_tol):
     // the reconstruction of the element (cone, slab) does not bulge out of the shape.
-    bool segment_inside(const Ball& a, const Ball& b, double h, double envelope_tol = -1) const;
+    // outside_tol > 0 (meshes) also accepts test points outside the shape by at most outside_tol.
+    bool segment_inside(const Ball& a, const Ball& b, double h, double envelope_tol = -1, double outside_tol = 0) const;
     bool triangle_inside(const Ball& a, const Ball& b, const Ball& c, double h, double envelope_tol = -1) const;
 private:
     bool envelope_inside(const Vec3& p, double r, double tol) const;

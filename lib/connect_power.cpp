@@ -195,7 +195,7 @@ void reconnect(const InsideTest& test, double h, Skeleton& s) {
     for (const Pair& p : pairs) {
         if (components <= 1) break;
         if (uf.find(p.i) == uf.find(p.j)) continue;
-        if (!test.segment_inside(s.balls[p.i], s.balls[p.j], h)) continue;
+        if (!test.segment_inside(s.balls[p.i], s.balls[p.j], h, -1, h)) continue;
         uf.unite(p.i, p.j);
         s.edges.push_back({p.i, p.j});
         --components;
@@ -249,14 +249,16 @@ bool InsideTest::envelope_inside(const Vec3& p, double r, double tol) const {
     return need <= 0 || impl_->distance->distance_below(p, need) >= need;
 }
 
-bool InsideTest::segment_inside(const Ball& a, const Ball& b, double h, double tol) const {
+bool InsideTest::segment_inside(const Ball& a, const Ball& b, double h, double tol, double outside_tol) const {
     const int n = std::max(1, int(std::ceil((b.center - a.center).norm() / h)));
     for (int i = 1; i < n; ++i) {
         const double t = double(i) / n;
         const Vec3 p = a.center + (b.center - a.center) * t;
         if (!envelope_inside(p, (1 - t) * a.radius + t * b.radius, tol)) return false;
         if (in_ball(p, a) || in_ball(p, b)) continue;
-        if (!inside(p)) return false;
+        if (inside(p)) continue;
+        if (outside_tol > 0 && impl_->distance && impl_->distance->distance_below(p, outside_tol) < outside_tol) continue;
+        return false;
     }
     return true;
 }
