@@ -10,6 +10,7 @@
 #include "connect.h"
 #include "distance.h"
 #include "mesh_io.h"
+#include "support/mesh_convert.h"
 #include "selection.h"
 #include "winding.h"
 
@@ -40,15 +41,6 @@ std::vector<std::string> meshes_in(const std::string& dir) {
         closedir(d);
     }
     std::sort(out.begin(), out.end());
-    return out;
-}
-
-ca::Mesh to_mesh(const caio::MeshData& m) {
-    ca::Mesh out;
-    for (size_t i = 0; i + 2 < m.positions.size(); i += 3)
-        out.vertices.emplace_back(m.positions[i], m.positions[i + 1], m.positions[i + 2]);
-    for (size_t i = 0; i + 2 < m.triangles.size(); i += 3)
-        out.triangles.push_back({m.triangles[i], m.triangles[i + 1], m.triangles[i + 2]});
     return out;
 }
 
@@ -100,7 +92,7 @@ int main(int argc, char** argv) {
             continue;
         }
         ca::Surface surface;
-        ca::Status st = ca::prepare_surface(to_mesh(data), {}, surface);
+        ca::Status st = ca::prepare_surface(to_core_mesh(data), {}, surface);
         ca::Monitor monitor;
         ca::CandidateOptions copt;
         if (connect_samples >= 0) copt.connect_samples = uint32_t(connect_samples);

@@ -7,6 +7,7 @@
 // Usage: bench_qmat [data root, default ../shared/data]
 #include "bench_common.h"
 #include "evaluate.h"
+#include "support/mesh_convert.h"
 
 #include <Eigen/Geometry>
 
@@ -24,15 +25,6 @@ namespace {
 bool is_dir(const std::string& p) {
     struct stat st;
     return stat(p.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
-}
-
-ca::Mesh to_mesh(const caio::MeshData& m) {
-    ca::Mesh out;
-    for (size_t i = 0; i + 2 < m.positions.size(); i += 3)
-        out.vertices.emplace_back(m.positions[i], m.positions[i + 1], m.positions[i + 2]);
-    for (size_t i = 0; i + 2 < m.triangles.size(); i += 3)
-        out.triangles.push_back({m.triangles[i], m.triangles[i + 1], m.triangles[i + 2]});
-    return out;
 }
 
 ca::Skeleton to_skeleton(const caio::SkeletonData& s) {
@@ -145,7 +137,7 @@ int main(int argc, char** argv) {
             ++failures;
             continue;
         }
-        const ca::Mesh mesh = to_mesh(md);
+        const ca::Mesh mesh = to_core_mesh(md);
         const ca::Skeleton sk = to_skeleton(sd);
         ca::EvaluateResult r;
         const auto t0 = std::chrono::steady_clock::now();

@@ -6,6 +6,7 @@
 #include "delaunay.h"
 #include "distance.h"
 #include "kdtree.h"
+#include "union_find.h"
 #include "parallel.h"
 #include "winding.h"
 
@@ -24,22 +25,6 @@ Status cancelled() { return fail(Code::cancelled, "cancelled"); }
 constexpr double kBallTrust = 0.95;
 
 bool in_ball(const Vec3& p, const Ball& b) { return (p - b.center).squaredNorm() < kBallTrust * kBallTrust * b.radius * b.radius; }
-
-struct UnionFind {
-    std::vector<uint32_t> parent;
-    explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-    uint32_t find(uint32_t x) {
-        while (parent[x] != x) x = parent[x] = parent[parent[x]];
-        return x;
-    }
-    bool unite(uint32_t a, uint32_t b) {
-        a = find(a);
-        b = find(b);
-        if (a == b) return false;
-        parent[std::max(a, b)] = std::min(a, b);
-        return true;
-    }
-};
 
 Status connect_power(const CandidateSet& set, const Selection& sel, const Monitor& monitor, Skeleton& out) {
     const size_t k = sel.indices.size();

@@ -81,6 +81,21 @@ Status run_qhull(int dim, std::vector<double> coords, const char* const* command
     return fail(Code::geometry_failure, std::string(what) + " failed (Qhull: " + last_error + ")");
 }
 
+// The input indices of a simplicial facet's 4 vertices; false if it has another count or refers to
+// a point Qhull added (the point at infinity of Qz).
+bool facet_tet(qhT* qh, facetT* facet, size_t n_points, Tet& t) {
+    vertexT *vertex, **vertexp;
+    int k = 0;
+    FOREACHvertex_(facet->vertices) {
+        if (k < 4) t[size_t(k)] = uint32_t(qh_pointid(qh, vertex->point));
+        ++k;
+    }
+    if (k != 4) return false;
+    for (uint32_t v : t)
+        if (v >= n_points) return false;
+    return true;
+}
+
 }  // namespace
 
 bool circumcenter(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, Vec3& center) {
@@ -109,20 +124,12 @@ Status delaunay_tetrahedra(const std::vector<Vec3>& pts, std::vector<Tet>& tets)
     return run_qhull(3, std::move(coords), commands, 3, "the Delaunay tetrahedralisation", [&](qhT* qh) {
         tets.clear();
         facetT* facet;
-        vertexT *vertex, **vertexp;
         FORALLfacets {
-            if (facet->upperdelaunay) continue;
             Tet t{};
-            int k = 0;
-            FOREACHvertex_(facet->vertices) {
-                if (k < 4) t[size_t(k)] = uint32_t(qh_pointid(qh, vertex->point));
-                ++k;
-            }
-            if (k != 4) continue;
-            bool valid = true;
-            for (uint32_t v : t) valid = valid && v < pts.size();  // QJ/Qz may add a point at infinity
             Vec3 cc;
-            if (valid && circumcenter(pts[t[0]], pts[t[1]], pts[t[2]], pts[t[3]], cc)) tets.push_back(t);
+            if (!facet->upperdelaunay && facet_tet(qh, facet, pts.size(), t) &&
+                circumcenter(pts[t[0]], pts[t[1]], pts[t[2]], pts[t[3]], cc))
+                tets.push_back(t);
         }
         return !tets.empty();
     });
@@ -143,19 +150,10 @@ Status regular_triangulation(const std::vector<Vec3>& pts, const std::vector<dou
     return run_qhull(4, std::move(coords), commands, 2, "the power diagram", [&](qhT* qh) {
         cells.clear();
         facetT* facet;
-        vertexT *vertex, **vertexp;
         FORALLfacets {
-            if (!(facet->normal && facet->normal[3] < 0)) continue;  // lower hull only
             Tet t{};
-            int k = 0;
-            FOREACHvertex_(facet->vertices) {
-                if (k < 4) t[size_t(k)] = uint32_t(qh_pointid(qh, vertex->point));
-                ++k;
-            }
-            if (k != 4) continue;
-            bool valid = true;
-            for (uint32_t v : t) valid = valid && v < pts.size();
-            if (valid) cells.push_back(t);
+            if (facet->normal && facet->normal[3] < 0 && facet_tet(qh, facet, pts.size(), t))  // lower hull only
+                cells.push_back(t);
         }
         return !cells.empty();
     });

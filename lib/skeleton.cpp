@@ -3,6 +3,8 @@
 // Betti number of the 2-complex over GF(2), b1 = (E - V + C) - rank(boundary_2).
 #include "skeleton.h"
 
+#include "union_find.h"
+
 #include <algorithm>
 #include <numeric>
 
@@ -11,25 +13,6 @@ namespace ca {
 namespace {
 
 using Edge = std::array<uint32_t, 2>;
-
-struct UnionFind {
-    std::vector<size_t> parent;
-    explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), size_t(0)); }
-    size_t find(size_t x) {
-        while (parent[x] != x) {
-            parent[x] = parent[parent[x]];
-            x = parent[x];
-        }
-        return x;
-    }
-    bool unite(size_t a, size_t b) {
-        a = find(a);
-        b = find(b);
-        if (a == b) return false;
-        parent[std::max(a, b)] = std::min(a, b);
-        return true;
-    }
-};
 
 // Symmetric difference of two sorted index vectors (addition over GF(2)).
 std::vector<uint32_t> xor_sorted(const std::vector<uint32_t>& a, const std::vector<uint32_t>& b) {

@@ -10,6 +10,7 @@
 #include "distance.h"
 #include "mesh_io.h"
 #include "selection.h"
+#include "support/mesh_convert.h"
 #include "support/shapes.h"
 #include "winding.h"
 
@@ -92,12 +93,7 @@ ca::Mesh read_obj(const std::string& path) {
     caio::MeshData data;
     std::string error;
     REQUIRE_MESSAGE(caio::read_mesh(path, data, error), error);
-    ca::Mesh m;
-    for (size_t i = 0; i + 2 < data.positions.size(); i += 3)
-        m.vertices.emplace_back(data.positions[i], data.positions[i + 1], data.positions[i + 2]);
-    for (size_t i = 0; i + 2 < data.triangles.size(); i += 3)
-        m.triangles.push_back({data.triangles[i], data.triangles[i + 1], data.triangles[i + 2]});
-    return m;
+    return to_core_mesh(data);
 }
 
 }  // namespace
