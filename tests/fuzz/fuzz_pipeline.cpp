@@ -5,6 +5,7 @@
 // non-OK status must leave the output NULL. Build: make fuzz (clang); run: build-fuzz/fuzz_pipeline.
 #include "coverage_axis.h"
 
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
