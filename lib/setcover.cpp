@@ -6,7 +6,9 @@
 // columns, so optima and bounds add): greedy cover -> Lagrangian subgradient (bound, and a
 // reduced-cost greedy that improves the incumbent) -> done if ceil(bound) meets the incumbent;
 // otherwise reduced-cost fixing (drop every column that no cover smaller than the incumbent can
-// contain), reduction again, and CBC on what is left with the incumbent as cutoff.
+// contain), reduction again, then row generation on what is left (exact ILPs on growing row
+// subsets, see row_generation) with a quarter of the remaining budget, and if that does not
+// finish, CBC on the whole of it with the best cover as cutoff.
 // Heuristic kernel solve: greedy / Coverage Axis++.
 // Reductions never change the optimum value, so forced + a kernel lower bound is a valid lower
 // bound of the original problem.
@@ -337,17 +339,22 @@ void remove_redundant(const std::vector<uint32_t>& ptr, const std::vector<uint32
     sel.swap(kept);
 }
 
-// Greedy: most newly covered rows, ties to the lower index (lazy max-heap). Ascending result.
-std::vector<uint32_t> greedy_cover(const Problem& P) {
-    std::vector<uint32_t> cnt(P.C), sel;
+// Greedy: most newly covered rows, ties to the lower index (lazy max-heap), starting from the
+// columns of `start` (kept). Ascending result.
+std::vector<uint32_t> greedy_complete(const Problem& P, const std::vector<uint32_t>& start) {
+    std::vector<uint32_t> cnt(P.C), sel = start;
     std::vector<uint8_t> covered(P.R, 0);
+    uint32_t remaining = P.R;
+    for (uint32_t c : start)
+        for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k)
+            if (!covered[P.crow[k]]) { covered[P.crow[k]] = 1; --remaining; }
     using Item = std::pair<uint32_t, uint32_t>;  // (count, C-1-col): larger = better
     std::priority_queue<Item> heap;
     for (uint32_t c = 0; c < P.C; ++c) {
-        cnt[c] = P.cptr[c + 1] - P.cptr[c];
+        cnt[c] = 0;
+        for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) cnt[c] += !covered[P.crow[k]];
         if (cnt[c]) heap.push({cnt[c], P.C - 1 - c});
     }
-    uint32_t remaining = P.R;
     while (remaining > 0 && !heap.empty()) {
         const Item top = heap.top();
         heap.pop();
@@ -368,6 +375,8 @@ std::vector<uint32_t> greedy_cover(const Problem& P) {
     std::sort(sel.begin(), sel.end());
     return sel;
 }
+
+std::vector<uint32_t> greedy_cover(const Problem& P) { return greedy_complete(P, {}); }
 
 // Coverage Axis++ (Wang et al. 2024) selection on the kernel: each step maximises
 // z(newly covered) + w_u z(distance to the nearest selected centre) - w_c z(0.1 r_max / r),
@@ -687,7 +696,8 @@ struct CbcOutcome {
 // are integral). A MIP start (Cbc_setMIPStartI) is deliberately not used: in CBC 2.10 its
 // processing ("Reduced search") ignored the time limit and took over a minute on a dense
 // 1500 x 2000 kernel where the cutoff alone gives the same result in seconds.
-CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int threads) {
+// With `first_solution`, CBC stops at the first cover below the cutoff (not proven optimal).
+CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int threads, bool first_solution = false) {
     // CBC parses its options through process-wide globals and is not thread-safe: every CBC
     // call sequence in the process goes through this one mutex. It is the library's only
     // process-wide state.
@@ -718,6 +728,7 @@ CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int 
     Cbc_setParameter(m, "threads", buf);
     std::snprintf(buf, sizeof buf, "%.1f", double(incumbent) - 0.5);
     Cbc_setParameter(m, "cutoff", buf);
+    if (first_solution) Cbc_setParameter(m, "maxSolutions", "1");
     Cbc_solve(m);
     out.ok = true;
     const bool finished = Cbc_status(m) == 0;
@@ -904,6 +915,163 @@ Status reduce_problem(const Problem& P, const Monitor& monitor, std::vector<uint
     return Status::success();
 }
 
+// Fills the row -> column direction of Q from its column -> row direction.
+void fill_rows(Problem& Q) {
+    Q.rptr.assign(Q.R + 1, 0);
+    for (uint32_t r : Q.crow) Q.rptr[r + 1]++;
+    for (uint32_t r = 0; r < Q.R; ++r) Q.rptr[r + 1] += Q.rptr[r];
+    Q.rcol.resize(Q.crow.size());
+    std::vector<uint32_t> next(Q.rptr.begin(), Q.rptr.end() - 1);
+    for (uint32_t c = 0; c < Q.C; ++c)
+        for (uint32_t k = Q.cptr[c]; k < Q.cptr[c + 1]; ++k) Q.rcol[next[Q.crow[k]]++] = c;
+}
+
+// The rows `rows` of K (ascending) with the columns of K that meet them, restricted to them;
+// row_id / col_id are K-local.
+Problem restrict_rows(const Problem& K, const std::vector<uint32_t>& rows) {
+    Problem S;
+    S.R = uint32_t(rows.size());
+    S.row_id = rows;
+    std::vector<uint32_t> local(K.R, UINT32_MAX);
+    for (uint32_t i = 0; i < S.R; ++i) local[rows[i]] = i;
+    S.cptr.push_back(0);
+    for (uint32_t c = 0; c < K.C; ++c) {
+        const size_t before = S.crow.size();
+        for (uint32_t k = K.cptr[c]; k < K.cptr[c + 1]; ++k)
+            if (local[K.crow[k]] != UINT32_MAX) S.crow.push_back(local[K.crow[k]]);
+        if (S.crow.size() == before) continue;
+        S.cptr.push_back(uint32_t(S.crow.size()));
+        S.col_id.push_back(c);
+    }
+    S.C = uint32_t(S.col_id.size());
+    fill_rows(S);
+    return S;
+}
+
+// Adds to `rows` (kept ascending) up to `cap` of the rows in `cand`, fewest columns first
+// (ties: lower index), pairwise sharing no column: spread out over the surface, each one
+// needing its own column.
+void add_spread_rows(const Problem& K, std::vector<uint32_t> cand, size_t cap, std::vector<uint32_t>& rows) {
+    std::sort(cand.begin(), cand.end(), [&](uint32_t x, uint32_t y) {
+        const uint32_t dx = K.rptr[x + 1] - K.rptr[x], dy = K.rptr[y + 1] - K.rptr[y];
+        return dx != dy ? dx < dy : x < y;
+    });
+    std::vector<uint8_t> used(K.C, 0);
+    size_t added = 0;
+    for (uint32_t r : cand) {
+        if (added >= cap) break;
+        bool free = true;
+        for (uint32_t q = K.rptr[r]; q < K.rptr[r + 1] && free; ++q) free = !used[K.rcol[q]];
+        if (!free) continue;
+        for (uint32_t q = K.rptr[r]; q < K.rptr[r + 1]; ++q) used[K.rcol[q]] = 1;
+        rows.push_back(r);
+        ++added;
+    }
+    std::sort(rows.begin(), rows.end());
+}
+
+// Row generation (lazy covering constraints) on a reduced component K, looking for covers
+// smaller than `target` (the incumbent's size; `best` below, lowered as better covers appear).
+// Loop: take the sub-problem on a row subset R (start: a maximal set of rows pairwise sharing
+// no column); reduce it; look for a cover of R smaller than `best`, first with the Lagrangian
+// heuristic, else with CBC stopped at its first solution below the cutoff best - 0.5. A
+// solution that covers all of K becomes the incumbent; otherwise it is repaired into a cover
+// of K (greedy + redundancy removal) and up to kRowsPerRound spread-out rows it leaves
+// uncovered join R. Stops when R has no cover smaller than `best`.
+// Why the bounds are valid: a cover of K, restricted to the columns meeting R, covers R, so
+// every lower bound on the optimum over R (Lagrangian, CBC bound, a finished CBC search that
+// finds nothing below the cutoff) is one on K. Each round adds rows or lowers `best`, so the
+// loop ends, and when it ends with "nothing below `best` on R", `best` is optimal for K.
+struct RowGenOutcome {
+    std::vector<uint32_t> sel;  // K-local cover smaller than `target` (ascending), or empty
+    double lb = 0;              // lower bound on the optimum of K (at most the best size)
+    bool proven = false;        // the best cover (sel, or if empty the incumbent) is optimal
+    size_t rounds = 0;          // sub-problems solved
+};
+
+// Share of the remaining budget given to row generation before CBC takes the whole component.
+constexpr double kRowGenShare = 0.25;
+constexpr size_t kRowsPerRound = 64;
+
+RowGenOutcome row_generation(const Problem& K, size_t target, Clock::time_point deadline, bool has_deadline,
+                             int threads, const Monitor& monitor) {
+    RowGenOutcome out;
+    size_t best = target;
+    std::vector<uint32_t> rows, all(K.R);
+    for (uint32_t r = 0; r < K.R; ++r) all[r] = r;
+    add_spread_rows(K, all, K.R, rows);  // a maximal set of rows pairwise sharing no column
+    out.lb = double(rows.size());        // each needs its own column
+    std::vector<uint8_t> covered(K.R);
+    while (!monitor.cancelled()) {
+        if (out.lb >= double(best)) { out.proven = true; break; }
+        double remaining = 0;
+        if (has_deadline) {
+            remaining = std::chrono::duration<double>(deadline - Clock::now()).count();
+            if (remaining <= 0) break;
+        }
+        ++out.rounds;
+        const Problem S = restrict_rows(K, rows);
+        std::vector<uint32_t> sforced;  // S-local
+        Problem SK;                     // col_id / row_id S-local
+        if (!reduce_problem(S, monitor, sforced, SK).ok()) break;
+        if (sforced.size() >= best) { out.proven = true; break; }
+        std::vector<uint32_t> x;  // K-local cover of R smaller than best
+        for (uint32_t c : sforced) x.push_back(S.col_id[c]);
+        if (SK.R > 0) {
+            std::vector<uint32_t> g = greedy_cover(SK);
+            remove_redundant(SK.cptr, SK.crow, SK.R, nullptr, nullptr, g);
+            const Lagrange L = lagrangian(SK, g, 300, deadline);
+            const double sub_lb = double(sforced.size()) + std::ceil(L.bound - 1e-6);
+            out.lb = std::max(out.lb, std::min(double(best), sub_lb));
+            if (sub_lb >= double(best)) { out.proven = true; break; }
+            std::vector<uint32_t> sub;  // SK-local
+            if (L.best.size() + sforced.size() < best) {
+                sub = L.best;
+            } else {
+                CbcOutcome cbc;
+                try {
+                    cbc = run_cbc(SK, best - sforced.size(), has_deadline ? remaining : 0.0, threads, true);
+                } catch (const std::bad_alloc&) {
+                    throw;
+                } catch (...) {
+                    cbc = CbcOutcome{};
+                }
+                if (!cbc.ok) break;
+                if (std::isfinite(cbc.bound))
+                    out.lb = std::max(out.lb, std::min(double(best), double(sforced.size()) + std::ceil(cbc.bound - 1e-6)));
+                if (!cbc.has_solution) {
+                    if (cbc.proven) out.proven = true;  // nothing below the cutoff on R
+                    break;                              // else: out of time
+                }
+                sub = cbc.solution;
+            }
+            for (uint32_t c : sub) x.push_back(S.col_id[SK.col_id[c]]);
+        }
+        std::sort(x.begin(), x.end());
+        std::fill(covered.begin(), covered.end(), 0);
+        for (uint32_t c : x)
+            for (uint32_t k = K.cptr[c]; k < K.cptr[c + 1]; ++k) covered[K.crow[k]] = 1;
+        std::vector<uint32_t> violated;
+        for (uint32_t r = 0; r < K.R; ++r)
+            if (!covered[r]) violated.push_back(r);
+        if (violated.empty()) {
+            best = x.size();
+            out.sel = x;
+            continue;
+        }
+        std::vector<uint32_t> full = greedy_complete(K, x);
+        remove_redundant(K.cptr, K.crow, K.R, nullptr, nullptr, full);
+        if (full.size() < best) {
+            best = full.size();
+            out.sel = full;
+        }
+        add_spread_rows(K, violated, kRowsPerRound, rows);
+    }
+    if (out.proven) out.lb = double(best);
+    out.lb = std::min(out.lb, double(best));
+    return out;
+}
+
 // Exact solve of one connected component: greedy -> Lagrangian bound and heuristic ->
 // reduced-cost fixing (drop every column that no cover smaller than the incumbent can use) ->
 // reduction of what is left -> CBC on that, with the incumbent as cutoff.
@@ -912,10 +1080,11 @@ struct ComponentResult {
     double lb = 0;
     bool proven = false;
     bool used_cbc = false;
+    size_t rowgen_rounds = 0;
 };
 
 ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bool has_deadline, int threads,
-                                const Monitor& monitor) {
+                                bool row_gen, const Monitor& monitor) {
     ComponentResult out;
     out.sel = greedy_cover(P);
     remove_redundant(P.cptr, P.crow, P.R, nullptr, nullptr, out.sel);
@@ -961,28 +1130,59 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
         if (remaining <= 0) return out;
     }
     out.used_cbc = true;
+    // Covers of K smaller than kbest are sought; klb is a lower bound on K's optimum.
+    size_t kbest = inc - qforced.size();
+    double klb = 0;
+    auto take = [&](const std::vector<uint32_t>& ksol) {
+        out.sel.clear();
+        for (uint32_t c : qforced) out.sel.push_back(Q.col_id[c]);
+        for (uint32_t c : ksol) out.sel.push_back(to_p(c));
+        std::sort(out.sel.begin(), out.sel.end());
+        kbest = ksol.size();
+    };
+    if (row_gen) {
+        // Row generation first, with part of the budget; if it does not finish, one CBC solve
+        // of the whole of K takes over with its incumbent.
+        Clock::time_point rg_deadline = deadline;
+        if (has_deadline)
+            rg_deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>((deadline - Clock::now()) * kRowGenShare);
+        const RowGenOutcome rg = row_generation(K, kbest, rg_deadline, has_deadline, threads, monitor);
+        out.rowgen_rounds = rg.rounds;
+        if (!rg.sel.empty()) take(rg.sel);
+        klb = rg.lb;
+        if (rg.proven) klb = double(kbest);
+        if (klb >= double(kbest) || monitor.cancelled()) {
+            // every cover below the old incumbent lies in K (+ forced)
+            out.lb = std::max(out.lb, std::min(double(out.sel.size()), double(qforced.size()) + klb));
+            done();
+            return out;
+        }
+        if (has_deadline) {
+            remaining = std::chrono::duration<double>(deadline - Clock::now()).count();
+            if (remaining <= 0) {
+                out.lb = std::max(out.lb, std::min(double(out.sel.size()), double(qforced.size()) + klb));
+                done();
+                return out;
+            }
+        }
+    }
     CbcOutcome cbc;
     try {
-        cbc = run_cbc(K, inc - qforced.size(), has_deadline ? remaining : 0.0, threads);
+        cbc = run_cbc(K, kbest, has_deadline ? remaining : 0.0, threads);
     } catch (const std::bad_alloc&) {
         throw;
     } catch (...) {
         cbc = CbcOutcome{};  // CBC failure: keep the incumbent
     }
-    if (!cbc.ok) return out;
-    if (cbc.has_solution) {
-        out.sel.clear();
-        for (uint32_t c : qforced) out.sel.push_back(Q.col_id[c]);
-        for (uint32_t c : cbc.solution) out.sel.push_back(to_p(c));
-        std::sort(out.sel.begin(), out.sel.end());
-    }
+    if (cbc.ok && cbc.has_solution) take(cbc.solution);
     const double obj = double(out.sel.size());
-    if (cbc.proven) {
+    if (cbc.ok && cbc.proven) {
         out.lb = obj;
         out.proven = true;
-    } else if (std::isfinite(cbc.bound)) {
-        // every cover below the old incumbent lies in K (+ forced): optimum >= min(obj, forced + bound)
-        out.lb = std::max(out.lb, std::min(obj, double(qforced.size()) + std::ceil(cbc.bound - 1e-6)));
+    } else {
+        if (cbc.ok && std::isfinite(cbc.bound)) klb = std::max(klb, std::ceil(cbc.bound - 1e-6));
+        // every cover below the old incumbent lies in K (+ forced): optimum >= min(obj, forced + klb)
+        out.lb = std::max(out.lb, std::min(obj, double(qforced.size()) + klb));
     }
     done();
     return out;
@@ -1041,12 +1241,13 @@ Status solve_impl(const Coverage& cov, const CoverOptions& opt, bool skip_uncove
             klb = 0;
             for (const Problem& Q : split_components(P)) {
                 if (monitor.cancelled()) return fail(Code::cancelled, "set cover: cancelled");
-                const ComponentResult cr = solve_component(Q, deadline, has_deadline, opt.threads, monitor);
+                const ComponentResult cr = solve_component(Q, deadline, has_deadline, opt.threads, opt.row_generation, monitor);
                 for (uint32_t c : cr.sel) ksel.push_back(Q.col_id[c]);
                 klb += cr.lb;
                 proven = proven && cr.proven;
                 result.components++;
                 result.cbc_components += cr.used_cbc;
+                result.rowgen_rounds += cr.rowgen_rounds;
             }
             std::sort(ksel.begin(), ksel.end());
         } else {

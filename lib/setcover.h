@@ -21,6 +21,9 @@ struct CoverOptions {
     // kernel can overrun the budget (seconds on dense kernels of ~1000 x 2000).
     double time_limit_s = 60.0;
     int32_t threads = 1;          // CBC threads (1 = serial, deterministic)
+    // Exact solver internal switch (tests, benchmarks): before CBC on a whole kernel component,
+    // try row generation (exact ILPs on growing row subsets) with part of the budget.
+    bool row_generation = true;
     // Optional per-sample / per-ball masks (empty = none). Non-zero = set.
     std::vector<uint8_t> ignorable_samples;   // need not be covered
     std::vector<uint8_t> forced_in;           // must be selected
@@ -40,6 +43,7 @@ struct CoverResult {
     double time_reduce_s = 0, time_solve_s = 0;
     size_t components = 0;                 // connected components of the kernel (exact solver)
     size_t cbc_components = 0;             // of which needed CBC (the rest: bound met the incumbent)
+    size_t rowgen_rounds = 0;              // row-generation rounds (sub-problems solved), all components
     std::vector<uint32_t> uncovered;       // samples no allowed ball covers (only when allowed)
 };
 

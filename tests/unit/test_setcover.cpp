@@ -154,6 +154,56 @@ TEST_CASE("set cover: exact equals the brute-force minimum and is proven optimal
     CHECK(nontrivial > 20);  // the kernel (and so CBC) is exercised, not only the reduction
 }
 
+TEST_CASE("set cover: row generation equals the brute-force minimum and the one-ILP path") {
+    // 30 x 26 at density 0.25: about a third of these keep a kernel that the Lagrangian bound
+    // does not close, so the row-generation loop runs (several rounds each).
+    Rng rng(4242);
+    int with_rowgen = 0;
+    for (int t = 0; t < 60; ++t) {
+        const Coverage c = random_cover(rng, 30, 26, 0.25);
+        const int best = brute_min(c);
+        REQUIRE(best >= 0);
+        CoverOptions opt;
+        CoverResult rg, one;
+        REQUIRE(solve_set_cover(c, opt, false, Monitor{}, rg).ok());
+        opt.row_generation = false;
+        REQUIRE(solve_set_cover(c, opt, false, Monitor{}, one).ok());
+        INFO("instance " << t << " rounds " << rg.rowgen_rounds);
+        CHECK(valid_cover(c, rg.selected));
+        CHECK(int(rg.objective) == best);
+        CHECK(rg.proven_optimal == 1);
+        CHECK(rg.lower_bound == rg.objective);
+        CHECK(int(one.objective) == best);
+        CHECK(one.proven_optimal == 1);
+        CHECK(one.rowgen_rounds == 0);
+        if (rg.rowgen_rounds > 0) ++with_rowgen;
+    }
+    CHECK(with_rowgen >= 8);
+}
+
+TEST_CASE("set cover: row generation over several rounds stays exact") {
+    // Larger instances (no brute force): the row-generation path must match the one-ILP path,
+    // both proven, and some must need several rounds (sub-optima that miss kernel rows).
+    Rng rng(77);
+    int multi = 0;
+    for (int t = 0; t < 12; ++t) {
+        const Coverage c = random_cover(rng, 60, 60, 0.08);
+        CoverOptions opt;
+        CoverResult rg, one;
+        REQUIRE(solve_set_cover(c, opt, false, Monitor{}, rg).ok());
+        opt.row_generation = false;
+        REQUIRE(solve_set_cover(c, opt, false, Monitor{}, one).ok());
+        INFO("instance " << t << " rounds " << rg.rowgen_rounds);
+        CHECK(valid_cover(c, rg.selected));
+        CHECK(rg.proven_optimal == 1);
+        CHECK(one.proven_optimal == 1);
+        CHECK(rg.objective == one.objective);
+        CHECK(rg.lower_bound == rg.objective);
+        if (rg.rowgen_rounds >= 3) ++multi;
+    }
+    CHECK(multi >= 1);
+}
+
 TEST_CASE("set cover: the reduction alone keeps the optimum") {
     const auto insts = small_instances(99, 320);
     for (size_t t = 0; t < insts.size(); ++t) {
