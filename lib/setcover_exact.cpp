@@ -1,0 +1,286 @@
+// setcover_exact.cpp: the exact machinery for one component of the kernel: the Lagrangian
+// lower bound with its reduced-cost heuristic, CBC (the C interface, silenced, with a cutoff and
+// a time limit, behind the library's only process-wide mutex), and row generation.
+#include "setcover_internal.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <queue>
+#include <string>
+#include <memory>
+#include <mutex>
+
+#include <coin/Cbc_C_Interface.h>
+
+namespace ca {
+namespace sc {
+
+
+// Greedy completion scored on reduced costs: gamma_j = c_j - sum of u over uncovered rows,
+// mu_j = newly covered rows; score gamma/mu if gamma > 0 else gamma*mu (smaller is better).
+// Scores only grow as rows get covered, so a lazy min-heap is exact.
+std::vector<uint32_t> lagrange_greedy(const Problem& P, const std::vector<double>& u) {
+    std::vector<uint32_t> mu(P.C), sel;
+    std::vector<double> gamma(P.C);
+    std::vector<uint8_t> covered(P.R, 0), taken(P.C, 0);
+    auto score = [&](uint32_t c) { return gamma[c] > 0 ? gamma[c] / mu[c] : gamma[c] * mu[c]; };
+    using Item = std::pair<double, uint32_t>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> heap;
+    for (uint32_t c = 0; c < P.C; ++c) {
+        mu[c] = P.cptr[c + 1] - P.cptr[c];
+        double g = 1.0;
+        for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) g -= u[P.crow[k]];
+        gamma[c] = g;
+        if (mu[c]) heap.push({score(c), c});
+    }
+    uint32_t remaining = P.R;
+    while (remaining > 0 && !heap.empty()) {
+        const Item top = heap.top();
+        heap.pop();
+        const uint32_t c = top.second;
+        if (taken[c] || mu[c] == 0) continue;
+        const double s = score(c);
+        if (s > top.first + 1e-12) { heap.push({s, c}); continue; }
+        taken[c] = 1;
+        sel.push_back(c);
+        for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) {
+            const uint32_t r = P.crow[k];
+            if (covered[r]) continue;
+            covered[r] = 1;
+            --remaining;
+            for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q) {
+                const uint32_t d = P.rcol[q];
+                mu[d]--;
+                gamma[d] += u[r];
+            }
+        }
+    }
+    // redundancy: drop the columns of largest reduced cost first
+    std::vector<uint32_t> cnt(P.R, 0);
+    for (uint32_t c : sel)
+        for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) cnt[P.crow[k]]++;
+    std::vector<double> cj(P.C, 1.0);
+    for (uint32_t c : sel)
+        for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) cj[c] -= u[P.crow[k]];
+    std::sort(sel.begin(), sel.end(), [&](uint32_t a, uint32_t b) { return cj[a] != cj[b] ? cj[a] > cj[b] : a < b; });
+    std::vector<uint32_t> kept;
+    for (uint32_t c : sel) {
+        bool redundant = true;
+        for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1] && redundant; ++k)
+            if (cnt[P.crow[k]] < 2) redundant = false;
+        if (redundant) {
+            for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) cnt[P.crow[k]]--;
+        } else {
+            kept.push_back(c);
+        }
+    }
+    std::sort(kept.begin(), kept.end());
+    return kept;
+}
+
+// `incumbent`: a cover of P (ascending). Stops early once ceil(bound) >= |best|.
+Lagrange lagrangian(const Problem& P, std::vector<uint32_t> incumbent, int max_iter, Clock::time_point deadline) {
+    Lagrange L;
+    L.best = std::move(incumbent);
+    std::vector<double> u(P.R), cost(P.C), g(P.R);
+    std::vector<uint8_t> x(P.C);
+    for (uint32_t r = 0; r < P.R; ++r) {
+        double v = 1.0;
+        for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q) {
+            const uint32_t c = P.rcol[q];
+            v = std::min(v, 1.0 / double(P.cptr[c + 1] - P.cptr[c]));
+        }
+        u[r] = v;
+    }
+    L.bound = -1;
+    double lambda = 2.0;
+    const int stall_max = 20;
+    int stall = 0;
+    for (int it = 0; it < max_iter; ++it) {
+        double val = 0;
+        for (uint32_t r = 0; r < P.R; ++r) val += u[r];
+        for (uint32_t c = 0; c < P.C; ++c) {
+            double cc = 1.0;
+            for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) cc -= u[P.crow[k]];
+            cost[c] = cc;
+            x[c] = cc < 0;
+            if (cc < 0) val += cc;
+        }
+        if (val > L.bound + 1e-9) {
+            L.bound = val;
+            L.u = u;
+            L.cost = cost;
+            stall = 0;
+        } else if (++stall >= stall_max) {
+            lambda *= 0.5;
+            stall = 0;
+        }
+        const double ub = double(L.best.size());
+        if (std::ceil(L.bound - 1e-6) >= ub || lambda < 2e-3) break;
+        if (it % 8 == 0) {
+            std::vector<uint32_t> h = lagrange_greedy(P, u);
+            if (h.size() < L.best.size()) L.best.swap(h);
+            if (std::ceil(L.bound - 1e-6) >= double(L.best.size())) break;
+        }
+        if ((it & 15) == 15 && Clock::now() > deadline) break;
+        // subgradient g_i = 1 - #selected columns covering i
+        double norm = 0;
+        for (uint32_t r = 0; r < P.R; ++r) {
+            int cnt = 0;
+            for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q) cnt += x[P.rcol[q]];
+            double gi = 1.0 - cnt;
+            if (gi < 0 && u[r] <= 0) gi = 0;  // projected: u stays at 0
+            g[r] = gi;
+            norm += gi * gi;
+        }
+        if (norm == 0) break;  // x(u) is a cover with complementary slackness: L(u) is optimal
+        const double step = lambda * (double(L.best.size()) - val) / norm;
+        for (uint32_t r = 0; r < P.R; ++r) u[r] = std::max(0.0, u[r] + step * g[r]);
+    }
+    return L;
+}
+
+
+// Solves the kernel with CBC, looking only for covers smaller than `incumbent` (the greedy
+// cover): the cutoff incumbent - 0.5 prunes exactly as a MIP start would (objective values
+// are integral). A MIP start (Cbc_setMIPStartI) is deliberately not used: in CBC 2.10 its
+// processing ("Reduced search") ignored the time limit and took over a minute on a dense
+// 1500 x 2000 kernel where the cutoff alone gives the same result in seconds.
+// With `first_solution`, CBC stops at the first cover below the cutoff (not proven optimal).
+CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int threads, bool first_solution) {
+    // CBC parses its options through process-wide globals and is not thread-safe: every CBC
+    // call sequence in the process goes through this one mutex. It is the library's only
+    // process-wide state.
+    static std::mutex cbc_mutex;
+    CbcOutcome out;
+    std::vector<CoinBigIndex> colstart(P.C + 1);
+    std::vector<int> rowidx(P.crow.begin(), P.crow.end());
+    for (uint32_t c = 0; c <= P.C; ++c) colstart[c] = CoinBigIndex(P.cptr[c]);
+    std::vector<double> val(P.crow.size(), 1.0), lb(P.C, 0.0), ub(P.C, 1.0), obj(P.C, 1.0), rlb(P.R, 1.0);
+    char buf[64];
+
+    std::lock_guard<std::mutex> lock(cbc_mutex);
+    struct Deleter { void operator()(Cbc_Model* m) const { Cbc_deleteModel(m); } };
+    std::unique_ptr<Cbc_Model, Deleter> model(Cbc_newModel());
+    if (!model) return out;
+    Cbc_Model* m = model.get();
+    Cbc_loadProblem(m, int(P.C), int(P.R), colstart.data(), rowidx.data(), val.data(), lb.data(), ub.data(),
+                    obj.data(), rlb.data(), nullptr);
+    for (uint32_t c = 0; c < P.C; ++c) Cbc_setInteger(m, int(c));
+    Cbc_setParameter(m, "log", "0");  // otherwise CBC prints to stdout
+    Cbc_setParameter(m, "slog", "0");
+    Cbc_setParameter(m, "timeMode", "elapsed");
+    if (time_limit_s > 0 && std::isfinite(time_limit_s)) {
+        std::snprintf(buf, sizeof buf, "%.6f", time_limit_s);
+        Cbc_setParameter(m, "sec", buf);
+    }
+    std::snprintf(buf, sizeof buf, "%d", std::max(1, threads));
+    Cbc_setParameter(m, "threads", buf);
+    std::snprintf(buf, sizeof buf, "%.1f", double(incumbent) - 0.5);
+    Cbc_setParameter(m, "cutoff", buf);
+    if (first_solution) Cbc_setParameter(m, "maxSolutions", "1");
+    Cbc_solve(m);
+    out.ok = true;
+    const bool finished = Cbc_status(m) == 0;
+    out.bound = Cbc_getBestPossibleObjValue(m);
+    const double* x = Cbc_bestSolution(m) ? Cbc_getColSolution(m) : nullptr;
+    if (x) {
+        for (uint32_t c = 0; c < P.C; ++c)
+            if (x[c] > 0.5) out.solution.push_back(c);
+        out.has_solution = covers_problem(P, out.solution) && out.solution.size() < incumbent;
+        if (!out.has_solution) out.solution.clear();
+    }
+    // Optimal below the cutoff, or proven that nothing beats the incumbent.
+    if (out.has_solution)
+        out.proven = Cbc_isProvenOptimal(m) != 0;
+    else
+        out.proven = finished && Cbc_isProvenInfeasible(m) != 0;
+    return out;
+}
+
+
+constexpr size_t kRowsPerRound = 64;
+
+RowGenOutcome row_generation(const Problem& K, size_t target, Clock::time_point deadline, bool has_deadline,
+                             int threads, const Monitor& monitor) {
+    RowGenOutcome out;
+    size_t best = target;
+    std::vector<uint32_t> rows, all(K.R);
+    for (uint32_t r = 0; r < K.R; ++r) all[r] = r;
+    add_spread_rows(K, all, K.R, rows);  // a maximal set of rows pairwise sharing no column
+    out.lb = double(rows.size());        // each needs its own column
+    std::vector<uint8_t> covered(K.R);
+    while (!monitor.cancelled()) {
+        if (out.lb >= double(best)) { out.proven = true; break; }
+        double remaining = 0;
+        if (has_deadline) {
+            remaining = std::chrono::duration<double>(deadline - Clock::now()).count();
+            if (remaining <= 0) break;
+        }
+        ++out.rounds;
+        const Problem S = restrict_rows(K, rows);
+        std::vector<uint32_t> sforced;  // S-local
+        Problem SK;                     // col_id / row_id S-local
+        if (!reduce_problem(S, monitor, sforced, SK).ok()) break;
+        if (sforced.size() >= best) { out.proven = true; break; }
+        std::vector<uint32_t> x;  // K-local cover of R smaller than best
+        for (uint32_t c : sforced) x.push_back(S.col_id[c]);
+        if (SK.R > 0) {
+            std::vector<uint32_t> g = greedy_cover(SK);
+            remove_redundant(SK.cptr, SK.crow, SK.R, nullptr, nullptr, g);
+            const Lagrange L = lagrangian(SK, g, 300, deadline);
+            const double sub_lb = double(sforced.size()) + std::ceil(L.bound - 1e-6);
+            out.lb = std::max(out.lb, std::min(double(best), sub_lb));
+            if (sub_lb >= double(best)) { out.proven = true; break; }
+            std::vector<uint32_t> sub;  // SK-local
+            if (L.best.size() + sforced.size() < best) {
+                sub = L.best;
+            } else {
+                CbcOutcome cbc;
+                try {
+                    cbc = run_cbc(SK, best - sforced.size(), has_deadline ? remaining : 0.0, threads, true);
+                } catch (const std::bad_alloc&) {
+                    throw;
+                } catch (...) {
+                    cbc = CbcOutcome{};
+                }
+                if (!cbc.ok) break;
+                if (std::isfinite(cbc.bound))
+                    out.lb = std::max(out.lb, std::min(double(best), double(sforced.size()) + std::ceil(cbc.bound - 1e-6)));
+                if (!cbc.has_solution) {
+                    if (cbc.proven) out.proven = true;  // nothing below the cutoff on R
+                    break;                              // else: out of time
+                }
+                sub = cbc.solution;
+            }
+            for (uint32_t c : sub) x.push_back(S.col_id[SK.col_id[c]]);
+        }
+        std::sort(x.begin(), x.end());
+        std::fill(covered.begin(), covered.end(), 0);
+        for (uint32_t c : x)
+            for (uint32_t k = K.cptr[c]; k < K.cptr[c + 1]; ++k) covered[K.crow[k]] = 1;
+        std::vector<uint32_t> violated;
+        for (uint32_t r = 0; r < K.R; ++r)
+            if (!covered[r]) violated.push_back(r);
+        if (violated.empty()) {
+            best = x.size();
+            out.sel = x;
+            continue;
+        }
+        std::vector<uint32_t> full = greedy_complete(K, x);
+        remove_redundant(K.cptr, K.crow, K.R, nullptr, nullptr, full);
+        if (full.size() < best) {
+            best = full.size();
+            out.sel = full;
+        }
+        add_spread_rows(K, violated, kRowsPerRound, rows);
+    }
+    if (out.proven) out.lb = double(best);
+    out.lb = std::min(out.lb, double(best));
+    return out;
+}
+
+}  // namespace sc
+}  // namespace ca

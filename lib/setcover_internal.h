@@ -1,0 +1,96 @@
+// setcover_internal.h: what the set-cover files share; not part of the library's interface.
+// The compact problem (rows = samples x columns = balls, stored both ways) with its heuristics
+// and bounds (setcover_problem.cpp), the exact machinery (setcover_exact.cpp: Lagrangian bound,
+// CBC behind the process-wide mutex, row generation), and the reduction of a compact problem
+// (setcover.cpp, which also holds the reduction of the input and the solve driver).
+#pragma once
+#include "setcover.h"
+
+#include <chrono>
+
+namespace ca {
+namespace sc {
+
+using Clock = std::chrono::steady_clock;
+inline double seconds_since(Clock::time_point t0) {
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// A compact set-cover problem: R rows (samples) x C columns (balls), every row coverable.
+struct Problem {
+    uint32_t R = 0, C = 0;
+    std::vector<uint32_t> cptr, crow;  // column -> rows, ascending
+    std::vector<uint32_t> rptr, rcol;  // row -> columns, ascending
+    std::vector<uint32_t> col_id, row_id;  // original ball / sample index
+};
+
+
+// ---- setcover_problem.cpp ----
+// Drop selected columns whose required rows are all covered by the others (see the definition).
+void remove_redundant(const std::vector<uint32_t>& ptr, const std::vector<uint32_t>& idx, size_t R,
+                      const std::vector<uint8_t>* required, const std::vector<uint8_t>* locked,
+                      std::vector<uint32_t>& sel);
+std::vector<uint32_t> greedy_complete(const Problem& P, const std::vector<uint32_t>& start);
+std::vector<uint32_t> greedy_cover(const Problem& P);
+std::vector<uint32_t> capp_cover(const Problem& P, const std::vector<Vec3>& centers,
+                                 const std::vector<double>& radii, const std::vector<uint32_t>& preselected);
+uint32_t disjoint_bound(const Problem& P);
+bool covers_problem(const Problem& P, const std::vector<uint32_t>& sel);
+std::vector<Problem> split_components(const Problem& P);
+Problem restrict_columns(const Problem& P, const std::vector<uint8_t>& keep);
+void fill_rows(Problem& Q);
+Problem restrict_rows(const Problem& K, const std::vector<uint32_t>& rows);
+void add_spread_rows(const Problem& K, std::vector<uint32_t> cand, size_t cap, std::vector<uint32_t>& rows);
+
+// ---- setcover_exact.cpp ----
+// ---------------------------------------------------------------------------------------------
+// Lagrangian relaxation of the covering rows (multipliers u >= 0):
+//   L(u) = sum_i u_i + sum_j min(0, c_j(u)),  c_j(u) = 1 - sum_{i in j} u_i,
+// a lower bound on the optimum for every u >= 0; L(u) + c_j(u) (c_j >= 0) bounds every cover
+// that contains column j. Subgradient ascent (Held-Karp step, halving on stalls), with a
+// primal heuristic on the reduced costs (Caprara-Fischetti-Toth score) every few steps.
+struct Lagrange {
+    double bound = 0;               // best L(u) found
+    std::vector<double> u, cost;    // multipliers of the best bound and their reduced costs
+    std::vector<uint32_t> best;     // best cover found (ascending), possibly improved on entry's
+};
+Lagrange lagrangian(const Problem& P, std::vector<uint32_t> incumbent, int max_iter, Clock::time_point deadline);
+
+struct CbcOutcome {
+    bool ok = false;            // CBC ran and returned without error
+    bool has_solution = false;  // a cover better than the cutoff, verified
+    bool proven = false;        // the search finished: `solution` optimal, or none below the cutoff
+    double bound = -std::numeric_limits<double>::infinity();  // valid for solutions below the cutoff
+    std::vector<uint32_t> solution;  // columns, ascending
+};
+CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int threads, bool first_solution = false);
+
+// Row generation (lazy covering constraints) on a reduced component K, looking for covers
+// smaller than `target` (the incumbent's size; `best` below, lowered as better covers appear).
+// Loop: take the sub-problem on a row subset R (start: a maximal set of rows pairwise sharing
+// no column); reduce it; look for a cover of R smaller than `best`, first with the Lagrangian
+// heuristic, else with CBC stopped at its first solution below the cutoff best - 0.5. A
+// solution that covers all of K becomes the incumbent; otherwise it is repaired into a cover
+// of K (greedy + redundancy removal) and up to kRowsPerRound spread-out rows it leaves
+// uncovered join R. Stops when R has no cover smaller than `best`.
+// Why the bounds are valid: a cover of K, restricted to the columns meeting R, covers R, so
+// every lower bound on the optimum over R (Lagrangian, CBC bound, a finished CBC search that
+// finds nothing below the cutoff) is one on K. Each round adds rows or lowers `best`, so the
+// loop ends, and when it ends with "nothing below `best` on R", `best` is optimal for K.
+struct RowGenOutcome {
+    std::vector<uint32_t> sel;  // K-local cover smaller than `target` (ascending), or empty
+    double lb = 0;              // lower bound on the optimum of K (at most the best size)
+    bool proven = false;        // the best cover (sel, or if empty the incumbent) is optimal
+    size_t rounds = 0;          // sub-problems solved
+};
+// Share of the remaining budget given to row generation before CBC takes the whole component.
+constexpr double kRowGenShare = 0.25;
+RowGenOutcome row_generation(const Problem& K, size_t target, Clock::time_point deadline, bool has_deadline,
+                             int threads, const Monitor& monitor);
+
+// ---- setcover.cpp ----
+// Reduction of a compact problem to its kernel (forced columns returned separately).
+Status reduce_problem(const Problem& P, const Monitor& monitor, std::vector<uint32_t>& forced, Problem& kernel);
+
+}  // namespace sc
+}  // namespace ca
