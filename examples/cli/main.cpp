@@ -140,17 +140,22 @@ struct ProgressBar {
     bool enabled = false;
     std::string stage;
     int last = -1;
+    // One line per stage, redrawn in place; a new line when the stage changes.
     static int32_t callback(void* user, const char* stage, double f) {
         auto* self = static_cast<ProgressBar*>(user);
-        const int pct = int(f * 100);
+        const int pct = std::min(100, std::max(0, int(f * 100)));
         if (self->stage != stage || pct != self->last) {
+            if (!self->stage.empty() && self->stage != stage) std::fputc('\n', stderr);
             self->stage = stage;
             self->last = pct;
             std::fprintf(stderr, "\r%-12s [%-30s] %3d%%", stage, std::string(size_t(pct * 30 / 100), '#').c_str(), pct);
-            if (pct >= 100) std::fputc('\n', stderr);
             std::fflush(stderr);
         }
         return 0;
+    }
+    void finish() {
+        if (!stage.empty()) std::fputc('\n', stderr);
+        stage.clear();
     }
 };
 
@@ -318,6 +323,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "coverage-axis: %s\n", err.c_str());
         return 3;
     }
+    if (bar.enabled) bar.finish();
     const double t_write = since(t0);
     ca_evaluation ev{};
     double t_evaluate = 0;
