@@ -6,7 +6,9 @@
 // samples, dominated balls, empty balls) -> kernel solve -> redundancy removal -> verification.
 // Exact kernel solve, per connected component of the kernel (components share no rows and no
 // columns, so optima and bounds add): greedy cover -> Lagrangian subgradient (bound, and a
-// reduced-cost greedy that improves the incumbent) -> done if ceil(bound) meets the incumbent;
+// reduced-cost greedy that improves the incumbent) -> if that leaves a gap, the LP relaxation's
+// duals (Clp) as multipliers, with small subgradient steps around them for the greedy ->
+// done if ceil(bound) meets the incumbent;
 // otherwise reduced-cost fixing (drop every column that no cover smaller than the incumbent can
 // contain), reduction again, then row generation on what is left (exact ILPs on growing row
 // subsets, see row_generation) with a quarter of the remaining budget, and if that does not
@@ -496,10 +498,24 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
         return out.proven;
     };
     if (done()) return out;
-    // The subgradient phase gets at most a quarter of what is left of the budget.
+    // The subgradient phase gets at most a quarter of what is left of the budget, then the LP
+    // relaxation's duals (the best Lagrangian multipliers) tighten the bound and the reduced
+    // costs for fixing when the subgradient bound did not close the gap.
     Clock::time_point lag_deadline = deadline;
     if (has_deadline) lag_deadline = Clock::now() + (deadline - Clock::now()) / 4;
-    const Lagrange L = lagrangian(P, out.sel, 1000, lag_deadline);
+    Lagrange L = lagrangian(P, out.sel, 1000, lag_deadline);
+    if (std::ceil(L.bound - 1e-6) < double(L.best.size()) && !monitor.cancelled()) {
+        double lp_limit = 0;
+        if (has_deadline) lp_limit = std::max(1e-3, std::chrono::duration<double>(deadline - Clock::now()).count() / 4);
+        const std::vector<double> duals = lp_duals(P, lp_limit);
+        if (!duals.empty()) {
+            // bound and costs at the duals, then small steps around them for the reduced-cost greedy
+            Lagrange D = lagrangian(P, L.best, 200, deadline, &duals, 0.05);
+            std::vector<uint32_t> best = D.best.size() < L.best.size() ? D.best : L.best;
+            if (D.bound > L.bound) L = std::move(D);
+            L.best = std::move(best);
+        }
+    }
     if (L.best.size() < out.sel.size()) out.sel = L.best;
     out.lb = std::max(out.lb, std::ceil(L.bound - 1e-6));
     if (done() || monitor.cancelled()) return out;

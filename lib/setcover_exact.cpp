@@ -1,5 +1,5 @@
 // setcover_exact.cpp: the exact machinery for one component of the kernel: the Lagrangian
-// lower bound with its reduced-cost heuristic, CBC (the C interface, silenced, with a cutoff and
+// lower bound with its reduced-cost heuristic, the LP relaxation's duals (Clp), CBC (the C interface, silenced, with a cutoff and
 // a time limit, behind the library's only process-wide mutex), and row generation.
 #include "setcover_internal.h"
 
@@ -13,6 +13,7 @@
 #include <mutex>
 
 #include <coin/Cbc_C_Interface.h>
+#include <coin/Clp_C_Interface.h>
 
 namespace ca {
 namespace sc {
@@ -81,12 +82,14 @@ std::vector<uint32_t> lagrange_greedy(const Problem& P, const std::vector<double
 }
 
 // `incumbent`: a cover of P (ascending). Stops early once ceil(bound) >= |best|.
-Lagrange lagrangian(const Problem& P, std::vector<uint32_t> incumbent, int max_iter, Clock::time_point deadline) {
+Lagrange lagrangian(const Problem& P, std::vector<uint32_t> incumbent, int max_iter, Clock::time_point deadline,
+                    const std::vector<double>* start, double step) {
     Lagrange L;
     L.best = std::move(incumbent);
     std::vector<double> u(P.R), cost(P.C), g(P.R);
     std::vector<uint8_t> x(P.C);
-    for (uint32_t r = 0; r < P.R; ++r) {
+    if (start && start->size() == P.R) u = *start;
+    else for (uint32_t r = 0; r < P.R; ++r) {
         double v = 1.0;
         for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q) {
             const uint32_t c = P.rcol[q];
@@ -95,7 +98,7 @@ Lagrange lagrangian(const Problem& P, std::vector<uint32_t> incumbent, int max_i
         u[r] = v;
     }
     L.bound = -1;
-    double lambda = 2.0;
+    double lambda = step;
     const int stall_max = 20;
     int stall = 0;
     for (int it = 0; it < max_iter; ++it) {
@@ -118,7 +121,7 @@ Lagrange lagrangian(const Problem& P, std::vector<uint32_t> incumbent, int max_i
             stall = 0;
         }
         const double ub = double(L.best.size());
-        if (std::ceil(L.bound - 1e-6) >= ub || lambda < 2e-3) break;
+        if (std::ceil(L.bound - 1e-6) >= ub || lambda < 1e-3 * step) break;
         if (it % 8 == 0) {
             std::vector<uint32_t> h = lagrange_greedy(P, u);
             if (h.size() < L.best.size()) L.best.swap(h);
@@ -143,6 +146,39 @@ Lagrange lagrangian(const Problem& P, std::vector<uint32_t> incumbent, int max_i
 }
 
 
+namespace {
+// CBC parses its options through process-wide globals and is not thread-safe: every CBC (and
+// Clp) call sequence in the process goes through this one mutex. It is the library's only
+// process-wide state.
+std::mutex& coin_mutex() {
+    static std::mutex m;
+    return m;
+}
+}  // namespace
+
+std::vector<double> lp_duals(const Problem& P, double time_limit_s) {
+    std::vector<CoinBigIndex> colstart(P.C + 1);
+    std::vector<int> rowidx(P.crow.begin(), P.crow.end());
+    for (uint32_t c = 0; c <= P.C; ++c) colstart[c] = CoinBigIndex(P.cptr[c]);
+    std::vector<double> val(P.crow.size(), 1.0), lb(P.C, 0.0), ub(P.C, 1.0), obj(P.C, 1.0), rlb(P.R, 1.0);
+    std::lock_guard<std::mutex> lock(coin_mutex());
+    struct Deleter { void operator()(Clp_Simplex* m) const { Clp_deleteModel(m); } };
+    std::unique_ptr<Clp_Simplex, Deleter> model(Clp_newModel());
+    if (!model) return {};
+    Clp_Simplex* m = model.get();
+    Clp_setLogLevel(m, 0);
+    Clp_loadProblem(m, int(P.C), int(P.R), colstart.data(), rowidx.data(), val.data(), lb.data(), ub.data(),
+                    obj.data(), rlb.data(), nullptr);  // no row upper bounds
+    if (time_limit_s > 0 && std::isfinite(time_limit_s)) Clp_setMaximumSeconds(m, time_limit_s);
+    Clp_dual(m, 0);
+    if (Clp_status(m) != 0) return {};  // not optimal (time limit, numerical trouble)
+    const double* y = Clp_getRowPrice(m);
+    if (!y) return {};
+    std::vector<double> u(P.R);
+    for (uint32_t r = 0; r < P.R; ++r) u[r] = std::isfinite(y[r]) ? std::max(0.0, y[r]) : 0.0;
+    return u;
+}
+
 // Solves the kernel with CBC, looking only for covers smaller than `incumbent` (the greedy
 // cover): the cutoff incumbent - 0.5 prunes exactly as a MIP start would (objective values
 // are integral). A MIP start (Cbc_setMIPStartI) is deliberately not used: in CBC 2.10 its
@@ -150,10 +186,6 @@ Lagrange lagrangian(const Problem& P, std::vector<uint32_t> incumbent, int max_i
 // 1500 x 2000 kernel where the cutoff alone gives the same result in seconds.
 // With `first_solution`, CBC stops at the first cover below the cutoff (not proven optimal).
 CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int threads, bool first_solution) {
-    // CBC parses its options through process-wide globals and is not thread-safe: every CBC
-    // call sequence in the process goes through this one mutex. It is the library's only
-    // process-wide state.
-    static std::mutex cbc_mutex;
     CbcOutcome out;
     std::vector<CoinBigIndex> colstart(P.C + 1);
     std::vector<int> rowidx(P.crow.begin(), P.crow.end());
@@ -161,7 +193,7 @@ CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int 
     std::vector<double> val(P.crow.size(), 1.0), lb(P.C, 0.0), ub(P.C, 1.0), obj(P.C, 1.0), rlb(P.R, 1.0);
     char buf[64];
 
-    std::lock_guard<std::mutex> lock(cbc_mutex);
+    std::lock_guard<std::mutex> lock(coin_mutex());
     struct Deleter { void operator()(Cbc_Model* m) const { Cbc_deleteModel(m); } };
     std::unique_ptr<Cbc_Model, Deleter> model(Cbc_newModel());
     if (!model) return out;

@@ -54,7 +54,16 @@ struct Lagrange {
     std::vector<double> u, cost;    // multipliers of the best bound and their reduced costs
     std::vector<uint32_t> best;     // best cover found (ascending), possibly improved on entry's
 };
-Lagrange lagrangian(const Problem& P, std::vector<uint32_t> incumbent, int max_iter, Clock::time_point deadline);
+// `start`: initial multipliers (size R), or null for the usual 1/(max column size) start;
+// `step`: the initial step factor (halved on stalls).
+Lagrange lagrangian(const Problem& P, std::vector<uint32_t> incumbent, int max_iter, Clock::time_point deadline,
+                    const std::vector<double>* start = nullptr, double step = 2.0);
+
+// The LP relaxation min 1'x, Ax >= 1, 0 <= x <= 1, solved by Clp's dual simplex (behind the same
+// mutex as CBC). Returns its row duals clamped to >= 0 (empty if Clp failed or ran out of time).
+// The LP optimum equals the best Lagrangian bound; the bound itself is then recomputed from these
+// multipliers by `lagrangian`, so it stays valid whatever the LP's tolerances.
+std::vector<double> lp_duals(const Problem& P, double time_limit_s);
 
 struct CbcOutcome {
     bool ok = false;            // CBC ran and returned without error

@@ -5,9 +5,11 @@
 
 #include "coverage.h"
 #include "setcover.h"
+#include "setcover_internal.h"
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -521,4 +523,58 @@ TEST_CASE("coverage: bad input and cancellation") {
     Monitor mon;
     mon.cancel_flag = &flag;
     CHECK(build_coverage(S, C, {1.0}, mon, cov).code == Code::cancelled);
+}
+
+namespace {
+// The compact problem of a coverage in which every sample is covered (internal form).
+sc::Problem to_problem(const Coverage& c) {
+    sc::Problem P;
+    P.R = uint32_t(c.n_samples);
+    P.C = uint32_t(c.n_balls);
+    P.cptr = c.ball_ptr;
+    P.crow = c.ball_samples;
+    P.rptr = c.sample_ptr;
+    P.rcol = c.sample_balls;
+    for (uint32_t i = 0; i < P.C; ++i) P.col_id.push_back(i);
+    for (uint32_t j = 0; j < P.R; ++j) P.row_id.push_back(j);
+    return P;
+}
+}  // namespace
+
+TEST_CASE("set cover: the bound at the LP duals equals the LP optimum and bounds the brute-force minimum") {
+    const auto far = sc::Clock::now() + std::chrono::hours(1);
+    SUBCASE("odd cycle: LP 5/2, integer optimum 3") {
+        Coverage c;
+        c.n_samples = 5;
+        c.n_balls = 5;
+        c.ball_ptr = {0, 2, 4, 6, 8, 10};
+        c.ball_samples = {0, 1, 1, 2, 2, 3, 3, 4, 0, 4};
+        c.build_transpose();
+        const sc::Problem P = to_problem(c);
+        const std::vector<double> y = sc::lp_duals(P, 0);
+        REQUIRE(y.size() == 5);
+        const sc::Lagrange L = sc::lagrangian(P, {0, 1, 2, 3, 4}, 1, far, &y);
+        CHECK(L.bound == doctest::Approx(2.5).epsilon(1e-7));
+        CHECK(brute_min(c) == 3);
+    }
+    SUBCASE("random instances") {
+        const auto insts = small_instances(777, 200);
+        int fractional = 0;
+        for (size_t t = 0; t < insts.size(); ++t) {
+            const Coverage& c = insts[t].cov;
+            const sc::Problem P = to_problem(c);
+            std::vector<uint32_t> all(P.C);
+            for (uint32_t i = 0; i < P.C; ++i) all[i] = i;
+            const std::vector<double> y = sc::lp_duals(P, 0);
+            INFO("instance " << t);
+            REQUIRE(y.size() == P.R);
+            const sc::Lagrange at_lp = sc::lagrangian(P, all, 1, far, &y);
+            const sc::Lagrange subgradient = sc::lagrangian(P, all, 1000, far);
+            const int best = brute_min(c);
+            CHECK(at_lp.bound <= best + 1e-9);                    // a valid lower bound
+            CHECK(at_lp.bound >= subgradient.bound - 1e-6);       // the LP is the best Lagrangian bound
+            if (at_lp.bound < best - 1e-6) ++fractional;
+        }
+        CHECK(fractional > 5);  // instances with an integrality gap are among them
+    }
 }
