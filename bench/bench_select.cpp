@@ -3,7 +3,8 @@
 // solve, time per phase (coverage, reduction, solve) and the peak memory of the instance (each
 // instance runs in its own forked child; the peak includes candidate generation).
 // Instances: the Ant references, every paper model at the defaults and with 10 000 random
-// candidates, and three models with |S| = 30 000 (divide and conquer).
+// candidates, and three models with |S| = 30 000 (the whole problem, the library's default
+// there, and divide and conquer forced with a threshold of 8000).
 // usage: bench_select [DATA_ROOT] [TIME_LIMIT_S]   (default ../shared/data, 5 s; skipped when missing)
 #include "bench_common.h"
 #include "candidates.h"
@@ -23,11 +24,12 @@ double g_time_limit = 5.0;
 double cpu_seconds() { return double(std::clock()) / CLOCKS_PER_SEC; }
 
 // One instance: exact, greedy, capp on the same candidates; prints one table row.
-void run_instance(const std::string& name, const ca::CandidateSet& set, double delta) {
+void run_instance(const std::string& name, const ca::CandidateSet& set, double delta, uint32_t dc_threshold = 0) {
     ca::SelectOptions o;
     o.delta = delta;
     o.cover.time_limit_s = g_time_limit;
     o.skip_uncoverable = true;  // random candidates may miss a few samples: benchmark the rest
+    if (dc_threshold) o.dc_threshold = dc_threshold;
     ca::Selection ex, gr, cp;
     const double c0 = cpu_seconds();
     const auto t0 = std::chrono::steady_clock::now();
@@ -76,11 +78,13 @@ bool load_model(const std::string& path, ca::Surface& s) {
     return ca::prepare_surface(std::move(m), {}, s).ok();
 }
 
-void model_instance(const std::string& path, ca::Generator gen, uint32_t samples) {
+// `dc_threshold` 0: the library default.
+void model_instance(const std::string& path, ca::Generator gen, uint32_t samples, uint32_t dc_threshold = 0) {
     in_child([&] {
         ca::Surface s;
         const std::string name = bench::stem(path) + (gen == ca::Generator::random ? " (random)" : "") +
-                                 (samples != 1500 ? " |S| " + std::to_string(samples) : "");
+                                 (samples != 1500 ? " |S| " + std::to_string(samples) : "") +
+                                 (dc_threshold ? " d&c" : "");
         if (!load_model(path, s)) { std::printf("| %s | read failed |\n", name.c_str()); return; }
         ca::CandidateOptions co;
         co.generator = gen;
@@ -89,7 +93,7 @@ void model_instance(const std::string& path, ca::Generator gen, uint32_t samples
         ca::CandidateSet set;
         const ca::Status st = ca::generate_candidates(std::move(s), co, ca::Monitor{}, set);
         if (!st.ok()) { std::printf("| %s | candidates failed: %s |\n", name.c_str(), st.message.c_str()); return; }
-        run_instance(name, set, 0.02);
+        run_instance(name, set, 0.02, dc_threshold);
     });
 }
 
@@ -142,7 +146,9 @@ int main(int argc, char** argv) {
     }
     for (const std::string& m : models) model_instance(m, ca::Generator::voronoi, 1500);
     for (const std::string& m : models) model_instance(m, ca::Generator::random, 1500);
-    for (const char* big : {"bunny", "armadillo", "fertility"})
-        model_instance(root + "/meshes/paper/" + big + ".obj", ca::Generator::voronoi, 30000);
+    for (const char* big : {"bunny", "armadillo", "fertility"}) {
+        model_instance(root + "/meshes/paper/" + big + ".obj", ca::Generator::voronoi, 30000);        // whole problem
+        model_instance(root + "/meshes/paper/" + big + ".obj", ca::Generator::voronoi, 30000, 8000);  // forced d&c
+    }
     return 0;
 }

@@ -454,7 +454,7 @@ void ca_select_options_init(ca_select_options* o) {
     o->solver = CA_SOLVER_EXACT;
     o->time_limit_s = 60;
     o->target_tolerance = 1e-4;
-    o->divide_threshold = 8000;
+    o->divide_threshold = 100000;
 }
 
 ca_status ca_select(ca_context* ctx, const ca_candidate_set* set, const ca_select_options* options, ca_selection** out) {

@@ -216,7 +216,7 @@ typedef struct ca_select_options {
                                     from the delta/scale above; see README for the guarantee */
     double target_tolerance;     /* bisection tolerance on delta (fraction of L) or scale; default 1e-4 */
     uint32_t divide_threshold;   /* more samples than this: divide and conquer (paper 8.1);
-                                    default 8000; 0 = never */
+                                    default 100000; 0 = never */
 } ca_select_options;
 
 CA_API void ca_select_options_init(ca_select_options* options);

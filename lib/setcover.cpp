@@ -487,6 +487,9 @@ struct ComponentResult {
     size_t rowgen_rounds = 0;
 };
 
+// Largest component CBC solves as a whole (its root LP cannot be interrupted).
+constexpr uint32_t kWholeCbcMaxRows = 4000;
+
 ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bool has_deadline, int threads,
                                 bool row_gen, const Monitor& monitor) {
     ComponentResult out;
@@ -504,10 +507,12 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
     Clock::time_point lag_deadline = deadline;
     if (has_deadline) lag_deadline = Clock::now() + (deadline - Clock::now()) / 4;
     Lagrange L = lagrangian(P, out.sel, 1000, lag_deadline);
+    bool lp_ok = P.R <= kWholeCbcMaxRows;  // the LP is not needed when the subgradient closes the gap
     if (std::ceil(L.bound - 1e-6) < double(L.best.size()) && !monitor.cancelled()) {
         double lp_limit = 0;
         if (has_deadline) lp_limit = std::max(1e-3, std::chrono::duration<double>(deadline - Clock::now()).count() / 4);
         const std::vector<double> duals = lp_duals(P, lp_limit);
+        lp_ok = !duals.empty();
         if (!duals.empty()) {
             // bound and costs at the duals, then small steps around them for the reduced-cost greedy
             Lagrange D = lagrangian(P, L.best, 200, deadline, &duals, 0.05);
@@ -558,11 +563,15 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
         std::sort(out.sel.begin(), out.sel.end());
         kbest = ksol.size();
     };
-    if (row_gen) {
+    // CBC's root LP ignores its time limit; on a component whose LP Clp could not solve within
+    // its share, or one with more than kWholeCbcMaxRows rows, CBC never gets the whole of it:
+    // row generation (small sub-problems) keeps the budget.
+    const bool whole_cbc = lp_ok && K.R <= kWholeCbcMaxRows;
+    if (row_gen || !whole_cbc) {
         // Row generation first, with part of the budget; if it does not finish, one CBC solve
         // of the whole of K takes over with its incumbent.
         Clock::time_point rg_deadline = deadline;
-        if (has_deadline)
+        if (has_deadline && whole_cbc)
             rg_deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>((deadline - Clock::now()) * kRowGenShare);
         const RowGenOutcome rg = row_generation(K, kbest, rg_deadline, has_deadline, threads, monitor);
         out.rowgen_rounds = rg.rounds;
@@ -571,6 +580,11 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
         if (rg.proven) klb = double(kbest);
         if (klb >= double(kbest) || monitor.cancelled()) {
             // every cover below the old incumbent lies in K (+ forced)
+            out.lb = std::max(out.lb, std::min(double(out.sel.size()), double(qforced.size()) + klb));
+            done();
+            return out;
+        }
+        if (!whole_cbc) {
             out.lb = std::max(out.lb, std::min(double(out.sel.size()), double(qforced.size()) + klb));
             done();
             return out;

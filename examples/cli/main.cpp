@@ -31,6 +31,7 @@ const char* kUsage =
     "  --surface-samples FILE    cover these samples (v x y z, input units) instead of sampling\n"
     "  --solver NAME             exact (default) | greedy | capp\n"
     "  --target-count K          at most K balls, with the smallest delta (or scale) that achieves it\n"
+    "  --divide N                divide and conquer above N surface samples (default 100000; 0 = never)\n"
     "  --connect ROUTE           auto (default: medial for meshes, power for point clouds) | medial | power\n"
     "  --skip-uncoverable        ignore samples no ball covers instead of failing\n"
     "  --ignore-samples FILE     indices (0-based) of samples that need not be covered\n"
@@ -50,6 +51,7 @@ struct Args {
     std::string export_samples, export_candidates, solver = "exact";
     std::string ignore_samples, force_in, force_out, connect = "auto";
     long target_count = 0;
+    long divide = -1;  // -1: the library default
     double delta = 0.02, scale = 0, time_limit = 60;
     long samples = 1500, voronoi_samples = 4000, random_count = 10000, threads = 0;
     unsigned long long seed = 1;
@@ -105,6 +107,7 @@ int parse_args(int argc, char** argv, Args& a) {
             else if (k == "--seed") { char* e; a.seed = std::strtoull(v, &e, 10); if (*e || e == v) return usage_error("--seed takes a non-negative integer"); }
             else if (k == "--time-limit") { if (!parse_number(v, d)) return usage_error("--time-limit takes seconds"); a.time_limit = d; }
             else if (k == "--threads") { if (!parse_count(v, a.threads, 0)) return usage_error("--threads takes a count >= 0"); }
+            else if (k == "--divide") { if (!parse_count(v, a.divide, 0)) return usage_error("--divide takes a sample count >= 0"); }
             else if (k == "--target-count") { if (!parse_count(v, a.target_count, 1)) return usage_error("--target-count takes a count >= 1"); }
             else if (k == "--connect") {
                 a.connect = v;
@@ -274,6 +277,7 @@ int main(int argc, char** argv) {
     so.time_limit_s = a.time_limit;
     so.skip_uncoverable = a.skip_uncoverable ? 1 : 0;
     so.target_count = uint32_t(a.target_count);
+    if (a.divide >= 0) so.divide_threshold = uint32_t(std::min<long>(a.divide, UINT32_MAX));
     // user control (paper 8.2): index files become per-sample / per-ball masks
     std::vector<uint8_t> ignorable, forced_in, forced_out;
     struct MaskFile { const std::string& path; size_t size; std::vector<uint8_t>& mask; const uint8_t** field; const char* what; };

@@ -578,3 +578,24 @@ TEST_CASE("set cover: the bound at the LP duals equals the LP optimum and bounds
         CHECK(fractional > 5);  // instances with an integrality gap are among them
     }
 }
+
+TEST_CASE("set cover: a kernel too large for one CBC solve keeps a valid cover and bound under a time limit") {
+    // More kernel rows than CBC may take as a whole (its root LP ignores time limits): the
+    // component goes to row generation with the whole budget.
+    Rng rng(31337);
+    Coverage c = random_cover(rng, 6000, 2000, 0.003);
+    CoverOptions opt;
+    opt.time_limit_s = 0.5;
+    CoverResult res;
+    REQUIRE(solve_set_cover(c, opt, false, Monitor{}, res).ok());
+    CHECK(res.rows_after > 4000);  // the path under test
+    CHECK(valid_cover(c, res.selected));
+    CHECK(res.lower_bound <= res.objective);
+    CHECK(res.lower_bound >= 1);
+    CoverOptions g;
+    g.solver = Solver::greedy;
+    CoverResult gr;
+    REQUIRE(solve_set_cover(c, g, false, Monitor{}, gr).ok());
+    CHECK(res.objective <= gr.objective);
+    CHECK(gr.lower_bound <= res.objective);
+}
