@@ -348,14 +348,14 @@ int main(int argc, char** argv) {
         std::printf("{\"input\":\"%s\",\"surface_samples\":%zu,\"candidates\":%zu,\"selected\":%zu,\"edges\":%llu,"
                     "\"faces\":%llu,\"components\":%llu,\"isolated\":%llu,\"betti1\":%lld,\"uncovered\":%zu,"
                     "\"optimal\":%s,\"objective\":%.0f,\"lower_bound\":%.0f,\"gap\":%.6g,\"delta\":%.9g,"
-                    "\"solver\":\"%s\",\"connect\":\"%s\",\"probes\":%llu,\"output\":\"%s\",%s%s"
+                    "\"solver\":\"%s\",\"connect\":\"%s\",\"probes\":%llu,\"parts\":%llu,\"output\":\"%s\",%s%s"
                     "\"time_s\":{\"read\":%.4f,\"candidates\":%.4f,\"select\":%.4f,\"connect\":%.4f,\"write\":%.4f,"
                     "\"evaluate\":%.4f,\"total\":%.4f}}\n",
                     json_escape(a.input).c_str(), n_samples, n_candidates, nv, (unsigned long long)ks.edges,
                     (unsigned long long)ks.faces, (unsigned long long)ks.components, (unsigned long long)ks.isolated,
                     (long long)ks.betti1, uncovered, ss.proven_optimal ? "true" : "false", ss.objective, ss.lower_bound,
                     ss.gap, ss.delta_absolute, a.solver.c_str(), ks.method == CA_CONNECT_MEDIAL ? "medial" : "power",
-                    (unsigned long long)ss.probes, json_escape(a.out_ma).c_str(),
+                    (unsigned long long)ss.probes, (unsigned long long)ss.parts, json_escape(a.out_ma).c_str(),
                     a.evaluate ? cli::evaluation_json(ev).c_str() : "", a.evaluate ? "," : "", t_read, t_candidates,
                     t_select, t_connect, t_write, t_evaluate, t_total);
     } else if (!a.quiet) {

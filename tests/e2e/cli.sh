@@ -69,6 +69,12 @@ done
 check "target count: at most 30 balls" test "$(json_field selected "$tmp/k.json")" -le 30
 check "target count: a larger delta than the default" awk -v d="$(json_field delta "$tmp/k.json")" -v d0="$(json_field delta "$tmp/fox.json")" 'BEGIN{exit !(d > d0)}'
 
+# divide and conquer on request: spatial parts, still a full cover
+"$tool" "$data/fox.obj" -o "$tmp/dc.ma" --samples 3000 --divide 1000 --json > "$tmp/dc.json"
+check "--divide 1000 on 3000 samples: split into parts" test "$(json_field parts "$tmp/dc.json")" -ge 2
+check "--divide: every sample covered" test "$(json_field uncovered "$tmp/dc.json")" -eq 0
+check "default: no parts at 1500 samples" test "$(json_field parts "$tmp/fox.json")" -eq 0
+
 # user control: forced-in / forced-out balls and ignorable samples are honoured
 "$tool" "$data/fox.obj" -o "$tmp/u0.ma" --export-candidates "$tmp/fc.obj" --quiet
 echo "0 1 2" > "$tmp/in.txt"
@@ -130,6 +136,7 @@ expect_fail 3 "no vertices" "$tmp/empty.obj"
 expect_fail 2 "unknown option" "$data/fox.obj" --frobnicate 1
 expect_fail 2 "delta" "$data/fox.obj" --delta -1
 expect_fail 2 "solver" "$data/fox.obj" --solver magic
+expect_fail 2 "divide" "$data/fox.obj" --divide -1
 
 # 7. every bundled model, poor ones included: a skeleton (exit 0) or a clean failure (exit 1),
 # never a crash or a hang
