@@ -51,10 +51,17 @@ struct PipelineRun {
     double gap = 0, t_candidates = 0, t_select = 0, t_connect = 0;
     ca_evaluation eval{};   // filled when run_pipeline is asked to evaluate
     double t_evaluate = 0;
+    // With an alternative connection (run_pipeline's `alt`): the same selection connected by it,
+    // its size and its evaluation (when evaluating).
+    size_t alt_edges = 0, alt_faces = 0, alt_components = 0;
+    long alt_betti1 = 0;
+    double t_alt_connect = 0;
+    ca_evaluation alt_eval{};
 };
 
 inline PipelineRun run_pipeline(const caio::MeshData& mesh, const ca_candidate_options& co, const ca_select_options& so,
-                                const ca_connect_options& cop, bool evaluate = false) {
+                                const ca_connect_options& cop, bool evaluate = false,
+                                const ca_connect_options* alt = nullptr) {
     PipelineRun r;
     ca_context* ctx = nullptr;
     ca_context_create(nullptr, &ctx);
@@ -109,6 +116,32 @@ inline PipelineRun run_pipeline(const caio::MeshData& mesh, const ca_candidate_o
             r.t_evaluate = seconds_since(t);
             if (r.status != CA_OK) r.message = ca_context_last_error(ctx);
         }
+        ca_skeleton* ak = nullptr;
+        if (r.status == CA_OK && alt) {
+            t = std::chrono::steady_clock::now();
+            r.status = ca_connect(ctx, set, sel, alt, &ak);
+            r.t_alt_connect = seconds_since(t);
+            if (r.status == CA_OK) {
+                ca_skeleton_stats as;
+                as.struct_size = sizeof as;
+                ca_skeleton_stats_get(ak, &as);
+                r.alt_edges = as.edges;
+                r.alt_faces = as.faces;
+                r.alt_components = as.components;
+                r.alt_betti1 = long(as.betti1);
+                if (evaluate) {
+                    ca_skeleton_view view;
+                    ca_skeleton_view_init(&view);
+                    ca_skeleton_get_view(ak, &view);
+                    ca_evaluate_options eo;
+                    ca_evaluate_options_init(&eo);
+                    r.alt_eval.struct_size = sizeof r.alt_eval;
+                    r.status = ca_evaluate(ctx, &v, &view, &eo, &r.alt_eval);
+                }
+            }
+            if (r.status != CA_OK) r.message = ca_context_last_error(ctx);
+        }
+        ca_skeleton_destroy(ak);
     } else {
         r.message = ca_context_last_error(ctx);
     }
