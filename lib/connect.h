@@ -78,8 +78,10 @@ public:
     bool segment_inside(const Ball& a, const Ball& b, double h, double envelope_tol = -1, double outside_tol = 0) const;
     bool triangle_inside(const Ball& a, const Ball& b, const Ball& c, double h, double envelope_tol = -1) const;
 private:
-    bool envelope_inside(const Vec3& p, double r, double tol) const;
     struct Impl;
+    class Probes;   // per-element cache of exact distances (connect_inside.cpp)
+    bool point_ok(Probes* probes, const Vec3& p, double r, double tol, double outside_tol,
+                  const Ball* const* own, int n_own) const;
     std::unique_ptr<Impl> impl_;
 };
 

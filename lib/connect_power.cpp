@@ -1,6 +1,7 @@
 // connect_power.cpp: the power-diagram connection route (regular triangulation via Qhull), the
-// inside test for skeleton elements, and the repairs shared by both routes (removal of edges and
-// triangles that leave the shape, reconnection of components), plus the connect_balls dispatcher.
+// repairs shared by both routes (removal of edges and triangles that leave the shape, hole
+// filling, reconnection of components), plus the connect_balls dispatcher. The inside test
+// itself is in connect_inside.cpp.
 #include "connect.h"
 
 #include "delaunay.h"
@@ -19,12 +20,6 @@ namespace ca {
 namespace {
 
 Status cancelled() { return fail(Code::cancelled, "cancelled"); }
-
-// A test point closer than this fraction of a vertex's radius to that vertex's centre is inside
-// that (inner) ball; the margin absorbs Voronoi balls that graze the surface between samples.
-constexpr double kBallTrust = 0.95;
-
-bool in_ball(const Vec3& p, const Ball& b) { return (p - b.center).squaredNorm() < kBallTrust * kBallTrust * b.radius * b.radius; }
 
 Status connect_power(const CandidateSet& set, const Selection& sel, const Monitor& monitor, Skeleton& out) {
     const size_t k = sel.indices.size();
@@ -188,81 +183,6 @@ void reconnect(const InsideTest& test, double h, Skeleton& s) {
 }
 
 }  // namespace
-
-// ---- InsideTest ----
-
-struct InsideTest::Impl {
-    std::unique_ptr<WindingNumber> winding;   // meshes only
-    std::unique_ptr<MeshDistance> distance;   // meshes only (envelope rule)
-    std::vector<Vec3> centers;                // the candidate balls
-    std::vector<double> radii;
-    std::unique_ptr<PointTree> tree;
-};
-
-InsideTest::InsideTest(const CandidateSet& set) : impl_(std::make_unique<Impl>()) {
-    if (!set.surface.mesh.triangles.empty()) {
-        impl_->winding = std::make_unique<WindingNumber>(set.surface.mesh);
-        impl_->distance = std::make_unique<MeshDistance>(set.surface.mesh);
-        return;
-    }
-    for (const Ball& b : set.balls) {
-        impl_->centers.push_back(b.center);
-        impl_->radii.push_back(b.radius);
-    }
-    impl_->tree = std::make_unique<PointTree>(impl_->centers);
-}
-InsideTest::~InsideTest() = default;
-InsideTest::InsideTest(InsideTest&&) noexcept = default;
-InsideTest& InsideTest::operator=(InsideTest&&) noexcept = default;
-
-bool InsideTest::inside(const Vec3& p) const {
-    if (impl_->winding) return impl_->winding->inside(p);
-    // Point clouds: inside one of the 16 nearest candidate balls (shrunk by kBallTrust). Not used
-    // for meshes: Voronoi balls clamped to the nearest sample can graze thin features.
-    constexpr size_t k = 16;
-    size_t idx[k];
-    double d2[k];
-    const size_t found = impl_->tree->nearest(p, k, idx, d2);
-    for (size_t i = 0; i < found; ++i)
-        if (d2[i] < kBallTrust * kBallTrust * impl_->radii[idx[i]] * impl_->radii[idx[i]]) return true;
-    return false;
-}
-
-bool InsideTest::envelope_inside(const Vec3& p, double r, double tol) const {
-    if (tol < 0 || !impl_->distance) return true;
-    const double need = r - tol;
-    return need <= 0 || impl_->distance->distance_below(p, need) >= need;
-}
-
-bool InsideTest::segment_inside(const Ball& a, const Ball& b, double h, double tol, double outside_tol) const {
-    const int n = std::max(1, int(std::ceil((b.center - a.center).norm() / h)));
-    for (int i = 1; i < n; ++i) {
-        const double t = double(i) / n;
-        const Vec3 p = a.center + (b.center - a.center) * t;
-        if (!envelope_inside(p, (1 - t) * a.radius + t * b.radius, tol)) return false;
-        if (in_ball(p, a) || in_ball(p, b)) continue;
-        if (inside(p)) continue;
-        if (outside_tol > 0 && impl_->distance && impl_->distance->distance_below(p, outside_tol) < outside_tol) continue;
-        return false;
-    }
-    return true;
-}
-
-bool InsideTest::triangle_inside(const Ball& a, const Ball& b, const Ball& c, double h, double tol) const {
-    const double longest = std::max({(b.center - a.center).norm(), (c.center - b.center).norm(),
-                                     (a.center - c.center).norm()});
-    const int n = std::max(1, int(std::ceil(longest / h)));
-    for (int i = 0; i <= n; ++i)
-        for (int j = 0; i + j <= n; ++j) {
-            const int k = n - i - j;
-            if (i == n || j == n || k == n) continue;   // the vertices themselves
-            const Vec3 p = (a.center * i + b.center * j + c.center * k) / double(n);
-            if (!envelope_inside(p, (a.radius * i + b.radius * j + c.radius * k) / double(n), tol)) return false;
-            if (in_ball(p, a) || in_ball(p, b) || in_ball(p, c)) continue;
-            if (!inside(p)) return false;
-        }
-    return true;
-}
 
 // ---- dispatcher ----
 
