@@ -7,8 +7,9 @@
 //    condition dist(p) >= r(p) - tol at the grid points near a probe q;
 //  * on a closed mesh (every directed edge matched by its reverse) the exact winding number is
 //    an integer, constant on each ball B(q, d(q)) that the surface does not cross, so a point in
-//    that ball is inside iff q is (the hierarchical approximation errs by far less than 1/2). On
-//    open meshes (holes) the winding number varies continuously and is evaluated at every point.
+//    that ball is inside iff q is (the hierarchical approximation errs by far less than 1/2), and
+//    two probes whose balls overlap are on the same side. On open meshes (holes) the winding
+//    number varies continuously and is evaluated at every point.
 #include "connect.h"
 
 #include "bvh.h"
@@ -58,8 +59,8 @@ bool closed_mesh(const Mesh& mesh) {
 }  // namespace
 
 struct InsideTest::Impl {
-    std::unique_ptr<WindingNumber> winding;   // meshes only
-    std::unique_ptr<MeshDistance> distance;   // meshes only (envelope rule, shortcuts)
+    std::shared_ptr<const WindingNumber> winding;   // meshes only (the candidate set's, if it has them)
+    std::shared_ptr<const MeshDistance> distance;   // meshes only (envelope rule, shortcuts)
     bool closed = false;                      // winding number integer-valued (shortcut allowed)
     std::vector<Vec3> centers;                // the candidate balls (point clouds)
     std::vector<double> radii;
@@ -88,14 +89,10 @@ public:
         for (size_t i = probes_.size(); i-- > stop;) {
             Probe& pr = probes_[i];
             const double reach = pr.d - kProbeMargin;
-            if (reach > 0 && (p - pr.q).squaredNorm() < reach * reach) {
-                if (pr.in < 0) pr.in = impl_.winding->inside(pr.q) ? 1 : 0;
-                return pr.in == 1;
-            }
+            if (reach > 0 && (p - pr.q).squaredNorm() < reach * reach) return resolve(i);
         }
-        Probe& pr = add(p);
-        pr.in = impl_.winding->inside(p) ? 1 : 0;
-        return pr.in == 1;
+        add(p);
+        return resolve(probes_.size() - 1);
     }
 
 private:
@@ -104,6 +101,22 @@ private:
         double d2, d;      // exact squared distance and distance to the surface
         int in;            // winding number > 1/2 at q: 1, 0, or -1 (not evaluated yet)
     };
+    // Whether probe i is inside: inherited from a probe whose ball overlaps its ball (the union
+    // of the two surface-free balls is connected), else the winding number at its point.
+    bool resolve(size_t i) {
+        Probe& pr = probes_[i];
+        if (pr.in < 0) {
+            const size_t stop = probes_.size() > kProbeWindow ? probes_.size() - kProbeWindow : 0;
+            for (size_t j = probes_.size(); j-- > stop && pr.in < 0;) {
+                const Probe& o = probes_[j];
+                const double reach = pr.d + o.d - kProbeMargin;
+                if (o.in >= 0 && pr.d > kProbeMargin && o.d > kProbeMargin && (pr.q - o.q).squaredNorm() < reach * reach)
+                    pr.in = o.in;
+            }
+            if (pr.in < 0) pr.in = impl_.winding->inside(pr.q) ? 1 : 0;
+        }
+        return pr.in == 1;
+    }
     Probe& add(const Vec3& p) {
         const double d = impl_.distance->distance(p);
         probes_.push_back({p, d * d, d, -1});
@@ -115,8 +128,8 @@ private:
 
 InsideTest::InsideTest(const CandidateSet& set) : impl_(std::make_unique<Impl>()) {
     if (!set.surface.mesh.triangles.empty()) {
-        impl_->winding = std::make_unique<WindingNumber>(set.surface.mesh);
-        impl_->distance = std::make_unique<MeshDistance>(set.surface.mesh);
+        impl_->winding = set.winding ? set.winding : std::make_shared<const WindingNumber>(set.surface.mesh);
+        impl_->distance = set.distance ? set.distance : std::make_shared<const MeshDistance>(set.surface.mesh);
         impl_->closed = closed_mesh(set.surface.mesh);
         return;
     }

@@ -47,7 +47,9 @@ Status voronoi_diagram(const CandidateSet& set, const Monitor& monitor, std::vec
     for (uint32_t i : remove_near_duplicates(raw, 1e-7)) pts.push_back(raw[i]);
     Status st = delaunay_tetrahedra(pts, tets);
     if (!st.ok()) return st;
-    const WindingNumber winding(set.surface.mesh);
+    const std::shared_ptr<const WindingNumber> own =
+        set.winding ? nullptr : std::make_shared<const WindingNumber>(set.surface.mesh);
+    const WindingNumber& winding = set.winding ? *set.winding : *own;
     inner.assign(tets.size(), 0);
     const bool done = parallel_for(tets.size(), resolve_threads(0), 8192, monitor, "connect", [&](size_t b, size_t e) {
         for (size_t t = b; t < e; ++t) {
