@@ -36,7 +36,9 @@
 //  * reconnect: if the skeleton has several components, they are joined Kruskal-style by the
 //    shortest segments between balls of different components whose test points (same rule)
 //    are all inside; a connected shape thus gets a connected skeleton unless no such segment
-//    exists. Only edges are added (each joins two components, so b1 does not change).
+//    exists. On the medial route a first pass takes only segments that also pass the envelope
+//    rule, the centre-line pass then joins what is left (same components in the end). Only
+//    edges are added (each joins two components, so b1 does not change).
 #pragma once
 #include "candidates.h"
 #include "selection.h"
