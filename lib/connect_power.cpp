@@ -66,7 +66,9 @@ Status connect_power(const CandidateSet& set, const Selection& sel, const Monito
 }
 
 // Removes the triangles, then the edges (with their triangles), that fail the inside test.
-bool remove_outside(const InsideTest& test, double h, double tol, int threads, const Monitor& monitor, Skeleton& s) {
+// `failed` gets the faces that failed it themselves (sorted), which hole filling need not retest.
+bool remove_outside(const InsideTest& test, double h, double tol, int threads, const Monitor& monitor, Skeleton& s,
+                    std::vector<Tri>& failed) {
     std::vector<uint8_t> face_ok(s.faces.size(), 1), edge_ok(s.edges.size(), 1);
     if (!parallel_for(s.edges.size(), threads, 1024, monitor, "connect", [&](size_t b, size_t e) {
             for (size_t i = b; i < e; ++i)
@@ -87,8 +89,10 @@ bool remove_outside(const InsideTest& test, double h, double tol, int threads, c
         return std::binary_search(edges.begin(), edges.end(), std::array<uint32_t, 2>{a, b});
     };
     std::vector<Tri> faces;
+    failed.clear();
     for (size_t i = 0; i < s.faces.size(); ++i) {
         const Tri& f = s.faces[i];
+        if (!face_ok[i]) failed.push_back(f);
         if (face_ok[i] && has_edge(f[0], f[1]) && has_edge(f[0], f[2]) && has_edge(f[1], f[2])) faces.push_back(f);
     }
     s.edges = std::move(edges);   // still sorted (canonical input)
@@ -99,8 +103,10 @@ bool remove_outside(const InsideTest& test, double h, double tol, int threads, c
 // Fills holes bounded by 3 or 4 edges. A chordless 4-cycle a-b-c-d that is not the rim of a fan
 // (no fifth vertex joined to all four) gets its shorter diagonal (the other if that one fails)
 // when both its triangles pass the inside test; then every 3-cycle without a face gets one when
-// it passes. Input and output canonical.
-void fill_small_holes(const InsideTest& test, double h, double tol, Skeleton& s) {
+// it passes (`failed`: sorted faces known to fail, skipped). The tests run in parallel; the
+// result does not depend on the thread count. Input and output canonical. False if cancelled.
+bool fill_small_holes(const InsideTest& test, double h, double tol, int threads, const Monitor& monitor,
+                      const std::vector<Tri>& failed, Skeleton& s) {
     const uint32_t n = uint32_t(s.balls.size());
     std::vector<std::vector<uint32_t>> adj;
     auto build_adjacency = [&]() {
@@ -113,48 +119,61 @@ void fill_small_holes(const InsideTest& test, double h, double tol, Skeleton& s)
     auto inside = [&](uint32_t a, uint32_t b, uint32_t c) {
         return test.triangle_inside(s.balls[a], s.balls[b], s.balls[c], h, tol);
     };
-    std::vector<uint32_t> common;
     {
         build_adjacency();
-        std::vector<std::array<uint32_t, 2>> chords;
-        for (uint32_t a = 0; a < n; ++a)
-            for (uint32_t c = a + 1; c < n; ++c) {
-                if (linked(a, c)) continue;
-                common.clear();
-                std::set_intersection(adj[a].begin(), adj[a].end(), adj[c].begin(), adj[c].end(),
-                                      std::back_inserter(common));
-                if (common.empty()) continue;
-                bool added = false;
-                for (size_t i = 0; i < common.size() && !added; ++i)       // 4-cycles a-b-c-d
-                    for (size_t j = i + 1; j < common.size() && !added; ++j) {
-                        const uint32_t b = common[i], d = common[j];
-                        if (linked(b, d)) continue;
-                        // a vertex joined to all four is the centre of a filled fan: no hole
-                        bool cone = false;
-                        for (uint32_t v : common) cone = cone || (v != b && v != d && linked(v, b) && linked(v, d));
-                        if (cone) continue;
-                        const bool ac_first = len2(a, c) <= len2(b, d);
-                        for (int k = 0; k < 2 && !added; ++k) {
-                            const bool ac = (k == 0) == ac_first;
-                            if (ac ? inside(a, c, b) && inside(a, c, d) : inside(b, d, a) && inside(b, d, c)) {
-                                chords.push_back(ac ? std::array<uint32_t, 2>{a, c}
-                                                    : std::array<uint32_t, 2>{std::min(b, d), std::max(b, d)});
-                                added = true;
+        std::vector<std::vector<std::array<uint32_t, 2>>> chords(n);   // per first vertex a
+        if (!parallel_for(n, threads, 64, monitor, "connect", [&](size_t begin, size_t end) {
+                std::vector<uint32_t> common;
+                for (uint32_t a = uint32_t(begin); a < end; ++a)
+                    for (uint32_t c = a + 1; c < n; ++c) {
+                        if (linked(a, c)) continue;
+                        common.clear();
+                        std::set_intersection(adj[a].begin(), adj[a].end(), adj[c].begin(), adj[c].end(),
+                                              std::back_inserter(common));
+                        if (common.empty()) continue;
+                        bool added = false;
+                        for (size_t i = 0; i < common.size() && !added; ++i)       // 4-cycles a-b-c-d
+                            for (size_t j = i + 1; j < common.size() && !added; ++j) {
+                                const uint32_t b = common[i], d = common[j];
+                                if (linked(b, d)) continue;
+                                // a vertex joined to all four is the centre of a filled fan: no hole
+                                bool cone = false;
+                                for (uint32_t v : common) cone = cone || (v != b && v != d && linked(v, b) && linked(v, d));
+                                if (cone) continue;
+                                const bool ac_first = len2(a, c) <= len2(b, d);
+                                for (int k = 0; k < 2 && !added; ++k) {
+                                    const bool ac = (k == 0) == ac_first;
+                                    if (ac ? inside(a, c, b) && inside(a, c, d) : inside(b, d, a) && inside(b, d, c)) {
+                                        chords[a].push_back(ac ? std::array<uint32_t, 2>{a, c}
+                                                               : std::array<uint32_t, 2>{std::min(b, d), std::max(b, d)});
+                                        added = true;
+                                    }
+                                }
                             }
-                        }
                     }
-            }
-        s.edges.insert(s.edges.end(), chords.begin(), chords.end());
+            }))
+            return false;
+        for (const auto& list : chords) s.edges.insert(s.edges.end(), list.begin(), list.end());
         canonicalize(s);
     }
     build_adjacency();
-    const std::vector<Tri> existing = s.faces;
+    std::vector<Tri> candidates;
     for (const auto& e : s.edges)
-        for (uint32_t c : adj[e[1]])
-            if (c > e[1] && linked(e[0], c) && !std::binary_search(existing.begin(), existing.end(), Tri{e[0], e[1], c}) &&
-                inside(e[0], e[1], c))
-                s.faces.push_back({e[0], e[1], c});
+        for (uint32_t c : adj[e[1]]) {
+            const Tri t{e[0], e[1], c};
+            if (c > e[1] && linked(e[0], c) && !std::binary_search(s.faces.begin(), s.faces.end(), t) &&
+                !std::binary_search(failed.begin(), failed.end(), t))
+                candidates.push_back(t);
+        }
+    std::vector<uint8_t> ok(candidates.size(), 0);
+    if (!parallel_for(candidates.size(), threads, 64, monitor, "connect", [&](size_t begin, size_t end) {
+            for (size_t i = begin; i < end; ++i) ok[i] = inside(candidates[i][0], candidates[i][1], candidates[i][2]);
+        }))
+        return false;
+    for (size_t i = 0; i < candidates.size(); ++i)
+        if (ok[i]) s.faces.push_back(candidates[i]);
     canonicalize(s);
+    return true;
 }
 
 // Joins components by the shortest inside segments between their balls (Kruskal order). With
@@ -219,9 +238,10 @@ Status connect_balls(const CandidateSet& set, const Selection& sel, const Connec
         // route it cut a real loop of genus-3's thin handles (b1 3 -> 2), so there only the
         // centre-line rule applies.
         const double tol = opt.method == ConnectMethod::medial ? (sel.delta > 0 ? sel.delta : 0.02) : -1;
-        if (opt.remove_outside && !remove_outside(test, h, tol, threads, monitor, out)) return cancelled();
+        std::vector<Tri> failed;   // faces that failed the removal test
+        if (opt.remove_outside && !remove_outside(test, h, tol, threads, monitor, out, failed)) return cancelled();
         if (!monitor.report("connect", 0.75)) return cancelled();
-        if (opt.fill_holes) fill_small_holes(test, h, tol, out);
+        if (opt.fill_holes && !fill_small_holes(test, h, tol, threads, monitor, failed, out)) return cancelled();
         if (opt.reconnect) reconnect(test, h, tol, out);
         canonicalize(out);
     }
