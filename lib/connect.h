@@ -23,7 +23,9 @@
 //    counts as inside (those balls are inner balls); any other point must be inside the shape:
 //    generalised winding number > 1/2 for meshes; for point clouds, inside 0.95 x one of its 16
 //    nearest candidate balls.
-//    One failing point removes the element. On the medial route (meshes), removal and hole filling also require the
+//    One failing point removes the element (InsideTest, connect_inside.cpp: the rule is evaluated
+//    exactly, but most winding-number and distance queries are skipped by a Lipschitz bound and
+//    by surface-free balls on closed meshes). On the medial route (meshes), removal and hole filling also require the
 //    element's reconstruction to stay in the shape: at each test point the interpolated ball
 //    (radius interpolated like the centre) must have distance to the surface >= radius - delta
 //    (a cone or slab bridging a concave gap, e.g. between fingers, bulges out of the shape and
