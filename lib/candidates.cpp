@@ -218,12 +218,14 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
     } else {
         out.cover_samples = sample_surface(out.surface.mesh, opt.cover_samples, stream_seed(opt.seed, 1));
         out.time_sampling_s = seconds_since(t0);
-        WindingNumber winding(out.surface.mesh);
-        st = opt.generator == Generator::voronoi ? mesh_voronoi_candidates(opt, monitor, winding, threads, out)
-                                                 : mesh_random_candidates(opt, monitor, winding, threads, out);
+        auto winding = std::make_shared<const WindingNumber>(out.surface.mesh);
+        st = opt.generator == Generator::voronoi ? mesh_voronoi_candidates(opt, monitor, *winding, threads, out)
+                                                 : mesh_random_candidates(opt, monitor, *winding, threads, out);
         if (st.ok()) {
-            const MeshDistance distance(out.surface.mesh);
-            out.fallback_balls = add_fallback_balls(out, winding, distance);
+            auto distance = std::make_shared<const MeshDistance>(out.surface.mesh);
+            out.fallback_balls = add_fallback_balls(out, *winding, *distance);
+            out.winding = std::move(winding);
+            out.distance = std::move(distance);
         }
         if (st.ok() && opt.connect_samples > 0)
             out.connect_samples = sample_surface(out.surface.mesh, opt.connect_samples, stream_seed(opt.seed, 4));

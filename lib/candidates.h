@@ -10,6 +10,8 @@
 #include "delaunay.h"
 #include "surface.h"
 
+#include <memory>
+
 namespace ca {
 
 enum class Generator : int32_t { voronoi = 0, random = 1 };
@@ -27,6 +29,9 @@ struct CandidateOptions {
 };
 
 // Everything later steps need, in internal (unit-cube) units.
+class WindingNumber;
+class MeshDistance;
+
 struct CandidateSet {
     Surface surface;                      // empty mesh when built from caller arrays
     std::vector<Vec3> cover_samples;      // S
@@ -37,6 +42,11 @@ struct CandidateSet {
     // Empty otherwise (the medial-axis route then builds them itself).
     std::vector<Tet> voronoi_tets;
     std::vector<uint8_t> voronoi_inner;
+    // Meshes: the inside and distance queries on surface.mesh built by generate_candidates, shared
+    // with the connection step (which builds its own when they are null). Whoever changes
+    // surface.mesh afterwards must reset them.
+    std::shared_ptr<const WindingNumber> winding;
+    std::shared_ptr<const MeshDistance> distance;
     std::vector<Ball> balls;              // P, undilated medial radii
     size_t fallback_balls = 0;            // of which added by add_fallback_balls (at the end)
     double time_sampling_s = 0, time_candidates_s = 0;
@@ -45,8 +55,6 @@ struct CandidateSet {
 Status generate_candidates(Surface surface, const CandidateOptions& opt, const Monitor& monitor,
                            CandidateSet& out);
 
-class WindingNumber;
-class MeshDistance;
 // Every cover sample that no candidate reaches within kFallbackReach gets a small inner ball
 // under it (candidates_fallback.cpp), so a cover exists for every offset delta >= kFallbackReach.
 constexpr double kFallbackReach = 0.005;   // unit-cube units (0.5 % of the longest bbox side)

@@ -23,7 +23,9 @@
 //    counts as inside (those balls are inner balls); any other point must be inside the shape:
 //    generalised winding number > 1/2 for meshes; for point clouds, inside 0.95 x one of its 16
 //    nearest candidate balls.
-//    One failing point removes the element. On the medial route (meshes), removal and hole filling also require the
+//    One failing point removes the element (InsideTest, connect_inside.cpp: the rule is evaluated
+//    exactly, but most winding-number and distance queries are skipped by a Lipschitz bound and
+//    by surface-free balls on closed meshes). On the medial route (meshes), removal and hole filling also require the
 //    element's reconstruction to stay in the shape: at each test point the interpolated ball
 //    (radius interpolated like the centre) must have distance to the surface >= radius - delta
 //    (a cone or slab bridging a concave gap, e.g. between fingers, bulges out of the shape and
@@ -36,7 +38,9 @@
 //  * reconnect: if the skeleton has several components, they are joined Kruskal-style by the
 //    shortest segments between balls of different components whose test points (same rule)
 //    are all inside; a connected shape thus gets a connected skeleton unless no such segment
-//    exists. Only edges are added (each joins two components, so b1 does not change).
+//    exists. On the medial route a first pass takes only segments that also pass the envelope
+//    rule, the centre-line pass then joins what is left (same components in the end). Only
+//    edges are added (each joins two components, so b1 does not change).
 #pragma once
 #include "candidates.h"
 #include "selection.h"
@@ -78,8 +82,10 @@ public:
     bool segment_inside(const Ball& a, const Ball& b, double h, double envelope_tol = -1, double outside_tol = 0) const;
     bool triangle_inside(const Ball& a, const Ball& b, const Ball& c, double h, double envelope_tol = -1) const;
 private:
-    bool envelope_inside(const Vec3& p, double r, double tol) const;
     struct Impl;
+    class Probes;   // per-element cache of exact distances (connect_inside.cpp)
+    bool point_ok(Probes* probes, const Vec3& p, double r, double tol, double outside_tol,
+                  const Ball* const* own, int n_own) const;
     std::unique_ptr<Impl> impl_;
 };
 

@@ -47,7 +47,9 @@ Status voronoi_diagram(const CandidateSet& set, const Monitor& monitor, std::vec
     for (uint32_t i : remove_near_duplicates(raw, 1e-7)) pts.push_back(raw[i]);
     Status st = delaunay_tetrahedra(pts, tets);
     if (!st.ok()) return st;
-    const WindingNumber winding(set.surface.mesh);
+    const std::shared_ptr<const WindingNumber> own =
+        set.winding ? nullptr : std::make_shared<const WindingNumber>(set.surface.mesh);
+    const WindingNumber& winding = set.winding ? *set.winding : *own;
     inner.assign(tets.size(), 0);
     const bool done = parallel_for(tets.size(), resolve_threads(0), 8192, monitor, "connect", [&](size_t b, size_t e) {
         for (size_t t = b; t < e; ++t) {
@@ -59,8 +61,10 @@ Status voronoi_diagram(const CandidateSet& set, const Monitor& monitor, std::vec
     return done ? Status::success() : cancelled();
 }
 
-uint64_t edge_key(uint32_t a, uint32_t b) { return a < b ? (uint64_t(a) << 32) | b : (uint64_t(b) << 32) | a; }
-
+// The medial mesh from the tetrahedra around each sample: per sample u (ascending), the faces and
+// Delaunay edges whose smallest vertex is u are grouped by a small local sort of its incident
+// tetrahedra, which gives the same elements in the same order as one global sort by
+// (vertex indices, tetrahedron) and is several times faster (cache-friendly, short sorts).
 MedialMesh build_medial_mesh(const std::vector<Vec3>& pts, const std::vector<Tet>& tets,
                              const std::vector<uint8_t>& inner) {
     MedialMesh m;
@@ -73,76 +77,90 @@ MedialMesh build_medial_mesh(const std::vector<Vec3>& pts, const std::vector<Tet
         vertex_of[t] = uint32_t(m.vertices.size());
         m.vertices.push_back(c);
     }
-    // faces shared by two inner tetrahedra -> medial edges
-    struct FaceRef { std::array<uint32_t, 3> key; uint32_t tet; };
-    std::vector<FaceRef> faces;
-    faces.reserve(tets.size() * 4);
-    for (size_t t = 0; t < tets.size(); ++t) {
-        if (vertex_of[t] == kNone) continue;
-        for (int skip = 0; skip < 4; ++skip) {
-            std::array<uint32_t, 3> f;
-            int n = 0;
-            for (int i = 0; i < 4; ++i)
-                if (i != skip) f[size_t(n++)] = tets[t][size_t(i)];
-            std::sort(f.begin(), f.end());
-            faces.push_back({f, uint32_t(t)});
-        }
+    // tetrahedra incident to each sample, ascending (counting sort)
+    const size_t np = pts.size();
+    std::vector<uint32_t> start(np + 1, 0), incident(tets.size() * 4);
+    for (const Tet& q : tets)
+        for (uint32_t v : q) ++start[size_t(v) + 1];
+    for (size_t i = 1; i <= np; ++i) start[i] += start[i - 1];
+    {
+        std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+        for (size_t t = 0; t < tets.size(); ++t)
+            for (uint32_t v : tets[t]) incident[fill[v]++] = uint32_t(t);
     }
-    std::sort(faces.begin(), faces.end(), [](const FaceRef& a, const FaceRef& b) {
-        return a.key != b.key ? a.key < b.key : a.tet < b.tet;
-    });
-    for (size_t i = 0; i + 1 < faces.size(); ++i)
-        if (faces[i].key == faces[i + 1].key)
-            m.edges.push_back({vertex_of[faces[i].tet], vertex_of[faces[i + 1].tet]});
-    // Delaunay edges -> ring of tetrahedra around them (all tetrahedra, to see outer ones)
-    struct EdgeRef { uint64_t key; uint32_t tet; };
+    struct FaceRef { uint32_t b, c, tet; };   // face (u, b, c), u < b < c
+    struct EdgeRef { uint32_t v, tet; };      // Delaunay edge (u, v), u < v
+    std::vector<FaceRef> faces;
     std::vector<EdgeRef> refs;
-    refs.reserve(tets.size() * 6);
-    for (size_t t = 0; t < tets.size(); ++t)
-        for (int i = 0; i < 4; ++i)
-            for (int j = i + 1; j < 4; ++j) refs.push_back({edge_key(tets[t][size_t(i)], tets[t][size_t(j)]), uint32_t(t)});
-    std::sort(refs.begin(), refs.end(), [](const EdgeRef& a, const EdgeRef& b) {
-        return a.key != b.key ? a.key < b.key : a.tet < b.tet;
-    });
     std::vector<std::array<uint32_t, 2>> link;   // per ring tetrahedron: its two other vertices
     std::vector<uint32_t> ring;
     std::vector<uint8_t> used;
-    for (size_t b = 0; b < refs.size();) {
-        size_t e = b;
-        bool all_inner = true;
-        while (e < refs.size() && refs[e].key == refs[b].key) all_inner = all_inner && vertex_of[refs[e].tet] != kNone, ++e;
-        const size_t n = e - b;
-        if (all_inner && n >= 3) {
-            const uint32_t u = uint32_t(refs[b].key >> 32), v = uint32_t(refs[b].key & 0xffffffffu);
-            link.clear();
-            for (size_t r = b; r < e; ++r) {
-                std::array<uint32_t, 2> o{};
-                int k = 0;
-                for (uint32_t w : tets[refs[r].tet])
-                    if (w != u && w != v) o[size_t(k++)] = w;
-                link.push_back(o);
-            }
-            // walk the link cycle: consecutive tetrahedra share one link vertex
-            ring.assign(1, 0);
-            used.assign(n, 0);
-            used[0] = 1;
-            uint32_t next_vertex = link[0][1];
-            bool closed = false;
-            for (size_t step = 1; step <= n; ++step) {
-                size_t found = n;
-                for (size_t r = 0; r < n; ++r)
-                    if (!used[r] && (link[r][0] == next_vertex || link[r][1] == next_vertex)) { found = r; break; }
-                if (found == n) { closed = ring.size() == n && next_vertex == link[0][0]; break; }
-                used[found] = 1;
-                ring.push_back(uint32_t(found));
-                next_vertex = link[found][0] == next_vertex ? link[found][1] : link[found][0];
-            }
-            if (closed)
-                for (size_t r = 1; r + 1 < n; ++r)
-                    m.triangles.push_back({vertex_of[refs[b + ring[0]].tet], vertex_of[refs[b + ring[r]].tet],
-                                           vertex_of[refs[b + ring[r + 1]].tet]});
+    for (uint32_t u = 0; u < np; ++u) {
+        faces.clear();
+        refs.clear();
+        for (uint32_t a = start[u]; a < start[u + 1]; ++a) {
+            const uint32_t t = incident[a];
+            uint32_t o[3];
+            int k = 0;
+            for (uint32_t w : tets[t])
+                if (w != u) o[k++] = w;
+            std::sort(o, o + 3);
+            for (uint32_t w : o)
+                if (w > u) refs.push_back({w, t});
+            // faces containing u with u smallest: pairs of the other vertices above u
+            if (vertex_of[t] != kNone)
+                for (int i = 0; i < 3; ++i)
+                    for (int j = i + 1; j < 3; ++j)
+                        if (o[i] > u) faces.push_back({o[i], o[j], t});
         }
-        b = e;
+        // faces shared by two inner tetrahedra -> medial edges
+        std::sort(faces.begin(), faces.end(), [](const FaceRef& x, const FaceRef& y) {
+            return x.b != y.b ? x.b < y.b : x.c != y.c ? x.c < y.c : x.tet < y.tet;
+        });
+        for (size_t i = 0; i + 1 < faces.size(); ++i)
+            if (faces[i].b == faces[i + 1].b && faces[i].c == faces[i + 1].c)
+                m.edges.push_back({vertex_of[faces[i].tet], vertex_of[faces[i + 1].tet]});
+        // Delaunay edges -> ring of tetrahedra around them (all tetrahedra, to see outer ones)
+        std::sort(refs.begin(), refs.end(), [](const EdgeRef& x, const EdgeRef& y) {
+            return x.v != y.v ? x.v < y.v : x.tet < y.tet;
+        });
+        for (size_t b = 0; b < refs.size();) {
+            size_t e = b;
+            bool all_inner = true;
+            while (e < refs.size() && refs[e].v == refs[b].v) all_inner = all_inner && vertex_of[refs[e].tet] != kNone, ++e;
+            const size_t n = e - b;
+            if (all_inner && n >= 3) {
+                const uint32_t v = refs[b].v;
+                link.clear();
+                for (size_t r = b; r < e; ++r) {
+                    std::array<uint32_t, 2> o{};
+                    int k = 0;
+                    for (uint32_t w : tets[refs[r].tet])
+                        if (w != u && w != v) o[size_t(k++)] = w;
+                    link.push_back(o);
+                }
+                // walk the link cycle: consecutive tetrahedra share one link vertex
+                ring.assign(1, 0);
+                used.assign(n, 0);
+                used[0] = 1;
+                uint32_t next_vertex = link[0][1];
+                bool closed = false;
+                for (size_t step = 1; step <= n; ++step) {
+                    size_t found = n;
+                    for (size_t r = 0; r < n; ++r)
+                        if (!used[r] && (link[r][0] == next_vertex || link[r][1] == next_vertex)) { found = r; break; }
+                    if (found == n) { closed = ring.size() == n && next_vertex == link[0][0]; break; }
+                    used[found] = 1;
+                    ring.push_back(uint32_t(found));
+                    next_vertex = link[found][0] == next_vertex ? link[found][1] : link[found][0];
+                }
+                if (closed)
+                    for (size_t r = 1; r + 1 < n; ++r)
+                        m.triangles.push_back({vertex_of[refs[b + ring[0]].tet], vertex_of[refs[b + ring[r]].tet],
+                                               vertex_of[refs[b + ring[r + 1]].tet]});
+            }
+            b = e;
+        }
     }
     return m;
 }

@@ -2,7 +2,9 @@
 // skeleton topology: torus (one loop), genus-3 solid (three loops), capsule (a path), two disjoint
 // spheres (two components), a thin plate (a sheet: triangles). Every element of every skeleton
 // must stay inside the shape (rule in `leaves_shape`). Plus the medial route's refusal of point
-// clouds and cancellation.
+// clouds and cancellation, the inside test's exact shortcuts against direct evaluation on a
+// closed and an open mesh, and the medial route's reconnection preferring segments that pass the
+// envelope rule.
 #include <doctest/doctest.h>
 
 #include "candidates.h"
@@ -12,6 +14,7 @@
 #include "selection.h"
 #include "support/mesh_convert.h"
 #include "support/shapes.h"
+#include "union_find.h"
 #include "winding.h"
 
 #include <atomic>
@@ -194,5 +197,112 @@ TEST_CASE("test_connect: the medial route refuses point clouds; both routes can 
     for (ca::ConnectMethod m : kRoutes) {
         opt.method = m;
         CHECK(ca::connect_balls(p.set, p.sel, opt, stop, sk).code == ca::Code::cancelled);
+    }
+}
+
+namespace {
+
+// InsideTest::segment_inside / triangle_inside (with their probe shortcuts) against the rule
+// evaluated directly at every test point, on local edges and triangles of candidate balls.
+// Returns how many elements passed and failed (both must occur for the check to mean anything).
+std::pair<int, int> compare_inside_test(ca::Mesh mesh) {
+    ca::Surface surface;
+    REQUIRE(ca::prepare_surface(std::move(mesh), {}, surface).ok());
+    ca::CandidateSet set;
+    REQUIRE(ca::generate_candidates(std::move(surface), {}, ca::Monitor{}, set).ok());
+    const ca::InsideTest test(set);
+    const ca::WindingNumber winding(set.surface.mesh);
+    const ca::MeshDistance distance(set.surface.mesh);
+    const double h = 0.005;
+    auto point_ok = [&](const ca::Vec3& q, double r, double tol, double outside_tol,
+                        std::initializer_list<const ca::Ball*> own) {
+        if (tol >= 0 && r - tol > 0 && !(distance.distance_below(q, r - tol) >= r - tol)) return false;
+        for (const ca::Ball* b : own)
+            if ((q - b->center).squaredNorm() < 0.95 * 0.95 * b->radius * b->radius) return true;
+        if (winding.inside(q)) return true;
+        return outside_tol > 0 && distance.distance_below(q, outside_tol) < outside_tol;
+    };
+    auto segment = [&](const ca::Ball& a, const ca::Ball& b, double tol, double outside_tol) {
+        const int n = std::max(1, int(std::ceil((b.center - a.center).norm() / h)));
+        for (int i = 1; i < n; ++i) {
+            const double t = double(i) / n;
+            if (!point_ok(a.center + (b.center - a.center) * t, (1 - t) * a.radius + t * b.radius, tol, outside_tol, {&a, &b}))
+                return false;
+        }
+        return true;
+    };
+    auto triangle = [&](const ca::Ball& a, const ca::Ball& b, const ca::Ball& c, double tol) {
+        const int n = std::max(1, int(std::ceil(std::max({(b.center - a.center).norm(), (c.center - b.center).norm(),
+                                                          (a.center - c.center).norm()}) / h)));
+        for (int i = 0; i <= n; ++i)
+            for (int j = 0; i + j <= n; ++j) {
+                const int k = n - i - j;
+                if (i == n || j == n || k == n) continue;
+                const ca::Vec3 q = (a.center * i + b.center * j + c.center * k) / double(n);
+                if (!point_ok(q, (a.radius * i + b.radius * j + c.radius * k) / double(n), tol, 0, {&a, &b, &c}))
+                    return false;
+            }
+        return true;
+    };
+    ca::Rng rng(11);
+    const auto& balls = set.balls;
+    int pass = 0, fail = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        const ca::Ball& a = balls[size_t(rng.uniform() * double(balls.size())) % balls.size()];
+        // two partners among balls at most 0.3 away (skeleton elements are local)
+        std::vector<size_t> near;
+        for (size_t i = 0; i < balls.size(); ++i)
+            if ((balls[i].center - a.center).norm() < 0.3) near.push_back(i);
+        const ca::Ball& b = balls[near[size_t(rng.uniform() * double(near.size())) % near.size()]];
+        const ca::Ball& c = balls[near[size_t(rng.uniform() * double(near.size())) % near.size()]];
+        for (double tol : {-1.0, 0.02}) {
+            const bool seg = test.segment_inside(a, b, h, tol, trial % 2 ? h : 0);
+            CHECK(seg == segment(a, b, tol, trial % 2 ? h : 0));
+            const bool tri = test.triangle_inside(a, b, c, h, tol);
+            CHECK(tri == triangle(a, b, c, tol));
+            (seg ? pass : fail)++;
+            (tri ? pass : fail)++;
+        }
+    }
+    return {pass, fail};
+}
+
+}  // namespace
+
+TEST_CASE("test_connect: the inside test's shortcuts decide like direct evaluation") {
+    SUBCASE("closed mesh (genus 3)") {
+        const auto [pass, fail] = compare_inside_test(read_obj(std::string(CA_TEST_DATA) + "/genus3.obj"));
+        CHECK(pass > 50);
+        CHECK(fail > 50);
+    }
+    SUBCASE("open mesh (torus with a hole: the winding number is not integer-valued)") {
+        ca::Mesh torus = shapes::torus(1.0, 0.3, 48, 16);
+        torus.triangles.erase(torus.triangles.begin(), torus.triangles.begin() + 300);
+        const auto [pass, fail] = compare_inside_test(std::move(torus));
+        CHECK(pass > 50);
+        CHECK(fail > 50);
+    }
+}
+
+TEST_CASE("test_connect: medial reconnection takes a segment that passes the envelope rule when one exists") {
+    // After the repairs every edge that fails the envelope rule was added by the reconnection's
+    // centre-line pass. That pass may only run when no envelope-valid segment joins two
+    // components of the envelope-valid edges. Fails with a centre-line-only reconnection (cow_spot
+    // and fox then have 5 and 36 envelope-valid joining segments left).
+    for (const std::string model : {"/cow_spot.obj", "/fox.obj", "/fish.obj"}) {
+        CAPTURE(model);
+        const Prepared p = prepare(read_obj(CA_TEST_DATA + model), ca::Solver::greedy);
+        const ca::Skeleton sk = connect(p, ca::ConnectMethod::medial);
+        const ca::InsideTest test(p.set);
+        const double delta = p.sel.delta, h = delta / 4;
+        ca::UnionFind uf(sk.balls.size());
+        for (const auto& e : sk.edges)
+            if (test.segment_inside(sk.balls[e[0]], sk.balls[e[1]], h, delta)) uf.unite(e[0], e[1]);
+        size_t joinable = 0;
+        for (uint32_t i = 0; i < sk.balls.size(); ++i)
+            for (uint32_t j = i + 1; j < sk.balls.size(); ++j)
+                if (uf.find(i) != uf.find(j) && test.segment_inside(sk.balls[i], sk.balls[j], h, delta, h)) ++joinable;
+        CHECK(joinable == 0);
+        CHECK(ca::topology(sk).components == 1);
     }
 }

@@ -1,0 +1,202 @@
+// connect_inside.cpp: the inside test for skeleton elements (InsideTest, rule in connect.h).
+// An element is tested at hundreds of grid points; most of the cost is the winding number and the
+// distance to the surface at each. Two exact shortcuts skip most of those queries without
+// changing any decision (a cache of "probes" per element, points where the exact distance d to
+// the surface is known):
+//  * the distance is 1-Lipschitz: dist(p) >= d(q) - |p - q|, which often proves the envelope
+//    condition dist(p) >= r(p) - tol at the grid points near a probe q;
+//  * on a closed mesh (every directed edge matched by its reverse) the exact winding number is
+//    an integer, constant on each ball B(q, d(q)) that the surface does not cross, so a point in
+//    that ball is inside iff q is (the hierarchical approximation errs by far less than 1/2), and
+//    two probes whose balls overlap are on the same side. On open meshes (holes) the winding
+//    number varies continuously and is evaluated at every point.
+#include "connect.h"
+
+#include "bvh.h"
+#include "distance.h"
+#include "kdtree.h"
+#include "winding.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+namespace ca {
+
+namespace {
+
+// A test point closer than this fraction of a vertex's radius to that vertex's centre is inside
+// that (inner) ball; the margin absorbs Voronoi balls that graze the surface between samples.
+constexpr double kBallTrust = 0.95;
+
+bool in_ball(const Vec3& p, const Ball& b) { return (p - b.center).squaredNorm() < kBallTrust * kBallTrust * b.radius * b.radius; }
+
+// Margin (internal units, the model spans ~1) by which a shortcut must hold; distances are
+// computed to ~1e-16, so a decision within this margin is always evaluated directly.
+constexpr double kProbeMargin = 1e-9;
+// Probes searched per test point (the most recent ones: grid points are visited row by row).
+constexpr size_t kProbeWindow = 48;
+
+// Whether the boundary of the mesh (as a 2-chain) vanishes: for every undirected edge, as many
+// half-edges a->b as b->a, and every triangle valid. Then the winding number is integer-valued.
+bool closed_mesh(const Mesh& mesh) {
+    std::unordered_map<uint64_t, int> balance;
+    balance.reserve(mesh.triangles.size() * 3);
+    for (const Tri& f : mesh.triangles) {
+        if (!detail::triangle_ok(mesh, f)) return false;
+        for (int i = 0; i < 3; ++i) {
+            const uint32_t a = f[size_t(i)], b = f[size_t((i + 1) % 3)];
+            if (a == b) continue;
+            const uint64_t key = a < b ? (uint64_t(a) << 32) | b : (uint64_t(b) << 32) | a;
+            balance[key] += a < b ? 1 : -1;
+        }
+    }
+    for (const auto& kv : balance)
+        if (kv.second != 0) return false;
+    return true;
+}
+
+}  // namespace
+
+struct InsideTest::Impl {
+    std::shared_ptr<const WindingNumber> winding;   // meshes only (the candidate set's, if it has them)
+    std::shared_ptr<const MeshDistance> distance;   // meshes only (envelope rule, shortcuts)
+    bool closed = false;                      // winding number integer-valued (shortcut allowed)
+    std::vector<Vec3> centers;                // the candidate balls (point clouds)
+    std::vector<double> radii;
+    std::unique_ptr<PointTree> tree;
+};
+
+// The per-element probe cache (meshes). Each query answers exactly what the direct evaluation
+// at p would answer.
+class InsideTest::Probes {
+public:
+    explicit Probes(const InsideTest::Impl& impl) : impl_(impl) {}
+
+    // dist(p) >= need (need > 0), as distance_below(p, need) >= need would decide.
+    bool distance_at_least(const Vec3& p, double need) {
+        const size_t stop = probes_.size() > kProbeWindow ? probes_.size() - kProbeWindow : 0;
+        for (size_t i = probes_.size(); i-- > stop;)
+            if (probes_[i].d - (p - probes_[i].q).norm() >= need + kProbeMargin) return true;
+        const Probe& pr = add(p);
+        return !(pr.d2 < need * need) || pr.d >= need;
+    }
+
+    // Winding number > 1/2 at p.
+    bool inside(const Vec3& p) {
+        if (!impl_.closed) return impl_.winding->inside(p);
+        const size_t stop = probes_.size() > kProbeWindow ? probes_.size() - kProbeWindow : 0;
+        for (size_t i = probes_.size(); i-- > stop;) {
+            Probe& pr = probes_[i];
+            const double reach = pr.d - kProbeMargin;
+            if (reach > 0 && (p - pr.q).squaredNorm() < reach * reach) return resolve(i);
+        }
+        add(p);
+        return resolve(probes_.size() - 1);
+    }
+
+private:
+    struct Probe {
+        Vec3 q;
+        double d2, d;      // exact squared distance and distance to the surface
+        int in;            // winding number > 1/2 at q: 1, 0, or -1 (not evaluated yet)
+    };
+    // Whether probe i is inside: inherited from a probe whose ball overlaps its ball (the union
+    // of the two surface-free balls is connected), else the winding number at its point.
+    bool resolve(size_t i) {
+        Probe& pr = probes_[i];
+        if (pr.in < 0) {
+            const size_t stop = probes_.size() > kProbeWindow ? probes_.size() - kProbeWindow : 0;
+            for (size_t j = probes_.size(); j-- > stop && pr.in < 0;) {
+                const Probe& o = probes_[j];
+                const double reach = pr.d + o.d - kProbeMargin;
+                if (o.in >= 0 && pr.d > kProbeMargin && o.d > kProbeMargin && (pr.q - o.q).squaredNorm() < reach * reach)
+                    pr.in = o.in;
+            }
+            if (pr.in < 0) pr.in = impl_.winding->inside(pr.q) ? 1 : 0;
+        }
+        return pr.in == 1;
+    }
+    Probe& add(const Vec3& p) {
+        const double d = impl_.distance->distance(p);
+        probes_.push_back({p, d * d, d, -1});
+        return probes_.back();
+    }
+    const InsideTest::Impl& impl_;
+    std::vector<Probe> probes_;
+};
+
+InsideTest::InsideTest(const CandidateSet& set) : impl_(std::make_unique<Impl>()) {
+    if (!set.surface.mesh.triangles.empty()) {
+        impl_->winding = set.winding ? set.winding : std::make_shared<const WindingNumber>(set.surface.mesh);
+        impl_->distance = set.distance ? set.distance : std::make_shared<const MeshDistance>(set.surface.mesh);
+        impl_->closed = closed_mesh(set.surface.mesh);
+        return;
+    }
+    for (const Ball& b : set.balls) {
+        impl_->centers.push_back(b.center);
+        impl_->radii.push_back(b.radius);
+    }
+    impl_->tree = std::make_unique<PointTree>(impl_->centers);
+}
+InsideTest::~InsideTest() = default;
+InsideTest::InsideTest(InsideTest&&) noexcept = default;
+InsideTest& InsideTest::operator=(InsideTest&&) noexcept = default;
+
+bool InsideTest::inside(const Vec3& p) const {
+    if (impl_->winding) return impl_->winding->inside(p);
+    // Point clouds: inside one of the 16 nearest candidate balls (shrunk by kBallTrust). Not used
+    // for meshes: Voronoi balls clamped to the nearest sample can graze thin features.
+    constexpr size_t k = 16;
+    size_t idx[k];
+    double d2[k];
+    const size_t found = impl_->tree->nearest(p, k, idx, d2);
+    for (size_t i = 0; i < found; ++i)
+        if (d2[i] < kBallTrust * kBallTrust * impl_->radii[idx[i]] * impl_->radii[idx[i]]) return true;
+    return false;
+}
+
+// One test point: the envelope condition (tol >= 0, meshes), then inside one of the element's
+// own balls, inside the shape, or (outside_tol > 0, meshes) at most outside_tol outside it.
+bool InsideTest::point_ok(Probes* probes, const Vec3& p, double r, double tol, double outside_tol,
+                          const Ball* const* own, int n_own) const {
+    if (tol >= 0 && probes) {
+        const double need = r - tol;
+        if (need > 0 && !probes->distance_at_least(p, need)) return false;
+    }
+    for (int i = 0; i < n_own; ++i)
+        if (in_ball(p, *own[i])) return true;
+    if (probes ? probes->inside(p) : inside(p)) return true;
+    return outside_tol > 0 && impl_->distance && impl_->distance->distance_below(p, outside_tol) < outside_tol;
+}
+
+bool InsideTest::segment_inside(const Ball& a, const Ball& b, double h, double tol, double outside_tol) const {
+    const int n = std::max(1, int(std::ceil((b.center - a.center).norm() / h)));
+    const Ball* own[2] = {&a, &b};
+    std::unique_ptr<Probes> probes = impl_->winding ? std::make_unique<Probes>(*impl_) : nullptr;
+    for (int i = 1; i < n; ++i) {
+        const double t = double(i) / n;
+        const Vec3 p = a.center + (b.center - a.center) * t;
+        if (!point_ok(probes.get(), p, (1 - t) * a.radius + t * b.radius, tol, outside_tol, own, 2)) return false;
+    }
+    return true;
+}
+
+bool InsideTest::triangle_inside(const Ball& a, const Ball& b, const Ball& c, double h, double tol) const {
+    const double longest = std::max({(b.center - a.center).norm(), (c.center - b.center).norm(),
+                                     (a.center - c.center).norm()});
+    const int n = std::max(1, int(std::ceil(longest / h)));
+    const Ball* own[3] = {&a, &b, &c};
+    std::unique_ptr<Probes> probes = impl_->winding ? std::make_unique<Probes>(*impl_) : nullptr;
+    for (int i = 0; i <= n; ++i)
+        for (int j = 0; i + j <= n; ++j) {
+            const int k = n - i - j;
+            if (i == n || j == n || k == n) continue;   // the vertices themselves
+            const Vec3 p = (a.center * i + b.center * j + c.center * k) / double(n);
+            const double r = (a.radius * i + b.radius * j + c.radius * k) / double(n);
+            if (!point_ok(probes.get(), p, r, tol, 0, own, 3)) return false;
+        }
+    return true;
+}
+
+}  // namespace ca
