@@ -22,8 +22,10 @@ struct CoverOptions {
     double time_limit_s = 60.0;
     int32_t threads = 1;          // CBC threads (1 = serial, deterministic)
     // Exact solver internal switch (tests, benchmarks): before CBC on a whole kernel component,
-    // try row generation (exact ILPs on growing row subsets) with part of the budget.
-    bool row_generation = true;
+    // try row generation (exact ILPs on growing row subsets) with part of the budget. Off by
+    // default: on the paper kernels it only delayed CBC (it still runs on components too large
+    // for one CBC solve).
+    bool row_generation = false;
     // Optional per-sample / per-ball masks (empty = none). Non-zero = set.
     std::vector<uint8_t> ignorable_samples;   // need not be covered
     std::vector<uint8_t> forced_in;           // must be selected

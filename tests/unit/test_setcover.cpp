@@ -166,6 +166,7 @@ TEST_CASE("set cover: row generation equals the brute-force minimum and the one-
         const int best = brute_min(c);
         REQUIRE(best >= 0);
         CoverOptions opt;
+        opt.row_generation = true;
         CoverResult rg, one;
         REQUIRE(solve_set_cover(c, opt, false, Monitor{}, rg).ok());
         opt.row_generation = false;
@@ -191,6 +192,7 @@ TEST_CASE("set cover: row generation over several rounds stays exact") {
     for (int t = 0; t < 12; ++t) {
         const Coverage c = random_cover(rng, 60, 60, 0.08);
         CoverOptions opt;
+        opt.row_generation = true;
         CoverResult rg, one;
         REQUIRE(solve_set_cover(c, opt, false, Monitor{}, rg).ok());
         opt.row_generation = false;
