@@ -489,8 +489,9 @@ struct ComponentResult {
     size_t rowgen_rounds = 0;
 };
 
-// Swaps of the local search per component (deterministic), and its seed.
-constexpr uint64_t kLocalSearchSteps = 100000;
+// Most swaps of the local search per component (it usually stops earlier, when it stalls), and
+// its seed.
+constexpr uint64_t kLocalSearchSteps = 1000000;
 constexpr uint64_t kLocalSearchSeed = 3;
 
 // Largest component CBC solves as a whole (its root LP cannot be interrupted).

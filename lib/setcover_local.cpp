@@ -2,8 +2,9 @@
 // search for unicost set cover (RWLS, Gao, Weise & Li 2015). Starting from a cover, it looks
 // for covers one column smaller: drop a column, then swap columns (remove the one whose loss of
 // weighted coverage is smallest, add the best column for a random uncovered row), raising the
-// weight of rows that stay uncovered so that the search leaves local minima. Deterministic for a
-// seed (own RNG arithmetic, a step limit; the deadline is only a safety stop).
+// weight of rows that stay uncovered so that the search leaves local minima. Stops at a step
+// limit, at the lower bound, or when it stalls. Deterministic for a seed (own RNG arithmetic;
+// the deadline is only a safety stop).
 #include "setcover_internal.h"
 
 #include <algorithm>
@@ -23,6 +24,9 @@ struct SplitMix {
         return z ^ (z >> 31);
     }
 };
+// Stall rule: stop once the steps since the last improvement exceed kStallSteps plus as many
+// steps as the last improvement needed.
+constexpr uint64_t kStallSteps = 100000;
 }  // namespace
 
 std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start, size_t lower_bound,
@@ -114,10 +118,12 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
     for (uint32_t c : start) add(c);
     std::vector<uint32_t> best = start;
     uint32_t last_added = UINT32_MAX;
+    uint64_t last_improved = 0;
     for (uint64_t step = 1; step <= max_steps; ++step) {
         while (uncovered.empty()) {
             if (sel.size() < best.size()) {
                 best = sel;
+                last_improved = step;
                 std::sort(best.begin(), best.end());
                 if (best.size() <= lower_bound) return best;
             }
@@ -126,6 +132,7 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
             stamp[c] = step;
         }
         if ((step & 255) == 0 && Clock::now() > deadline) break;
+        if (step > 2 * last_improved + kStallSteps) break;  // no progress for a long while
         // swap: drop one, add the best column (configuration allowed) for a random uncovered row
         const uint32_t d = pick_drop(last_added);
         if (d != UINT32_MAX) {
