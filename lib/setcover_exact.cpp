@@ -222,7 +222,7 @@ CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int 
     Cbc_solve(m);
     out.ok = true;
     const bool finished = Cbc_status(m) == 0;
-    out.bound = Cbc_getBestPossibleObjValue(m);
+    const double bp = Cbc_getBestPossibleObjValue(m);
     const double* x = Cbc_bestSolution(m) ? Cbc_getColSolution(m) : nullptr;
     if (x) {
         for (uint32_t c = 0; c < P.C; ++c)
@@ -230,11 +230,20 @@ CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int 
         out.has_solution = covers_problem(P, out.solution) && out.solution.size() < incumbent;
         if (!out.has_solution) out.solution.clear();
     }
+    // CBC 2.10 reports "finished, linear relaxation infeasible or worse than the cutoff"
+    // (status 0, secondary status 1) also when its time limit interrupts the root LP, with the
+    // interrupted LP value (below the cutoff) as bound: seen on a 333 x 605 row-generation
+    // sub-problem with 36 ms left, where it falsely "proved" a 62-ball cover optimal. Such a
+    // claim is trusted only with a bound at or above the cutoff, and its bound is not used.
+    const double cutoff = out.has_solution ? double(out.solution.size()) - 1.0 + kCutoffSlack
+                                           : double(incumbent) - 1.0 + kCutoffSlack;
+    const bool trusted = Cbc_secondaryStatus(m) != 1 || bp >= cutoff - 1e-9;
+    if (trusted && std::isfinite(bp) && bp < 1e40) out.bound = bp;
     // Optimal below the cutoff, or proven that nothing beats the incumbent.
     if (out.has_solution)
-        out.proven = Cbc_isProvenOptimal(m) != 0;
+        out.proven = finished && trusted && Cbc_isProvenOptimal(m) != 0;
     else
-        out.proven = finished && Cbc_isProvenInfeasible(m) != 0;
+        out.proven = finished && trusted && Cbc_isProvenInfeasible(m) != 0;
     return out;
 }
 
