@@ -219,7 +219,9 @@ CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int 
     // kernels and rarely beat a local-search incumbent.
     if (!heuristics) Cbc_setParameter(m, "heuristicsOnOff", "off");
     if (first_solution) Cbc_setParameter(m, "maxSolutions", "1");
+    const Clock::time_point t0 = Clock::now();
     Cbc_solve(m);
+    const double elapsed = seconds_since(t0);
     out.ok = true;
     const bool finished = Cbc_status(m) == 0;
     const double bp = Cbc_getBestPossibleObjValue(m);
@@ -233,11 +235,14 @@ CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int 
     // CBC 2.10 reports "finished, linear relaxation infeasible or worse than the cutoff"
     // (status 0, secondary status 1) also when its time limit interrupts the root LP, with the
     // interrupted LP value (below the cutoff) as bound: seen on a 333 x 605 row-generation
-    // sub-problem with 36 ms left, where it falsely "proved" a 62-ball cover optimal. Such a
-    // claim is trusted only with a bound at or above the cutoff, and its bound is not used.
+    // sub-problem with 36 ms left, where it falsely "proved" a 62-ball cover optimal. When CBC
+    // used half its time limit or more, such a claim is trusted only with a bound at or above
+    // the cutoff (a genuine one can come from preprocessing with a lower LP bound), and its
+    // bound is not used.
     const double cutoff = out.has_solution ? double(out.solution.size()) - 1.0 + kCutoffSlack
                                            : double(incumbent) - 1.0 + kCutoffSlack;
-    const bool trusted = Cbc_secondaryStatus(m) != 1 || bp >= cutoff - 1e-9;
+    const bool near_limit = time_limit_s > 0 && std::isfinite(time_limit_s) && elapsed >= 0.5 * time_limit_s;
+    const bool trusted = Cbc_secondaryStatus(m) != 1 || bp >= cutoff - 1e-9 || !near_limit;
     if (trusted && std::isfinite(bp) && bp < 1e40) out.bound = bp;
     // Optimal below the cutoff, or proven that nothing beats the incumbent.
     if (out.has_solution)
