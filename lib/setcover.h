@@ -1,7 +1,8 @@
 // setcover.h: choose the fewest balls that cover every (non-ignorable) sample: reduction to a
-// fixpoint (forced balls, dominated balls, dominated samples), then an exact ILP solve with CBC
-// on the kernel (greedy start, time budget, honest bound/gap), or a heuristic (greedy,
-// Coverage Axis++), each followed by redundancy removal.
+// fixpoint (forced balls, dominated balls, dominated samples), then an exact solve of the kernel
+// (greedy, Lagrangian / LP bounds, row-weighting local search for the incumbent, CBC to prove it;
+// time budget, honest bound/gap), or a heuristic (greedy, Coverage Axis++), each followed by
+// redundancy removal.
 // CBC is not thread-safe: every CBC call in the process goes through one mutex (the only
 // process-wide state of the library).
 #pragma once
