@@ -8,11 +8,13 @@
 // columns, so optima and bounds add): greedy cover -> Lagrangian subgradient (bound, and a
 // reduced-cost greedy that improves the incumbent) -> if that leaves a gap, the LP relaxation's
 // duals (Clp) as multipliers, with small subgradient steps around them for the greedy ->
-// done if ceil(bound) meets the incumbent;
-// otherwise reduced-cost fixing (drop every column that no cover smaller than the incumbent can
-// contain), reduction again, then row generation on what is left (exact ILPs on growing row
-// subsets, see row_generation) with a quarter of the remaining budget, and if that does not
-// finish, CBC on the whole of it with the best cover as cutoff.
+// done if ceil(bound) meets the incumbent; otherwise row-weighting local search
+// (setcover_local.cpp, a quarter of the remaining budget) for a better incumbent, then
+// reduced-cost fixing (drop every column that no cover smaller than the incumbent can
+// contain), reduction again, and CBC on what is left with the incumbent as cutoff and CBC's
+// own heuristics off (it only has to prove). Row generation (exact ILPs on growing row subsets,
+// see row_generation) runs first only on request (CoverOptions::row_generation) or when the
+// component is too large for one CBC solve.
 // Heuristic kernel solve: greedy / Coverage Axis++.
 // Reductions never change the optimum value, so forced + a kernel lower bound is a valid lower
 // bound of the original problem.
@@ -487,6 +489,11 @@ struct ComponentResult {
     size_t rowgen_rounds = 0;
 };
 
+// Most swaps of the local search per component (it usually stops earlier, when it stalls), and
+// its seed.
+constexpr uint64_t kLocalSearchSteps = 1000000;
+constexpr uint64_t kLocalSearchSeed = 3;
+
 // Largest component CBC solves as a whole (its root LP cannot be interrupted).
 constexpr uint32_t kWholeCbcMaxRows = 4000;
 
@@ -524,6 +531,14 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
     if (L.best.size() < out.sel.size()) out.sel = L.best;
     out.lb = std::max(out.lb, std::ceil(L.bound - 1e-6));
     if (done() || monitor.cancelled()) return out;
+    // Row-weighting local search from the best cover, with at most a quarter of what is left:
+    // usually reaches the optimum, so that CBC only has to prove it.
+    {
+        Clock::time_point ls_deadline = deadline;
+        if (has_deadline) ls_deadline = Clock::now() + (deadline - Clock::now()) / 4;
+        out.sel = local_search(P, out.sel, size_t(out.lb), kLocalSearchSteps, kLocalSearchSeed, ls_deadline);
+        if (done() || monitor.cancelled()) return out;
+    }
 
     // Covers smaller than the incumbent have value <= target; a column j with
     // L(u) + c_j(u) > target is in none of them.
@@ -600,7 +615,7 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
     }
     CbcOutcome cbc;
     try {
-        cbc = run_cbc(K, kbest, has_deadline ? remaining : 0.0, threads);
+        cbc = run_cbc(K, kbest, has_deadline ? remaining : 0.0, threads, false, false);
     } catch (const std::bad_alloc&) {
         throw;
     } catch (...) {

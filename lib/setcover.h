@@ -1,7 +1,8 @@
 // setcover.h: choose the fewest balls that cover every (non-ignorable) sample: reduction to a
-// fixpoint (forced balls, dominated balls, dominated samples), then an exact ILP solve with CBC
-// on the kernel (greedy start, time budget, honest bound/gap), or a heuristic (greedy,
-// Coverage Axis++), each followed by redundancy removal.
+// fixpoint (forced balls, dominated balls, dominated samples), then an exact solve of the kernel
+// (greedy, Lagrangian / LP bounds, row-weighting local search for the incumbent, CBC to prove it;
+// time budget, honest bound/gap), or a heuristic (greedy, Coverage Axis++), each followed by
+// redundancy removal.
 // CBC is not thread-safe: every CBC call in the process goes through one mutex (the only
 // process-wide state of the library).
 #pragma once
@@ -22,8 +23,10 @@ struct CoverOptions {
     double time_limit_s = 60.0;
     int32_t threads = 1;          // CBC threads (1 = serial, deterministic)
     // Exact solver internal switch (tests, benchmarks): before CBC on a whole kernel component,
-    // try row generation (exact ILPs on growing row subsets) with part of the budget.
-    bool row_generation = true;
+    // try row generation (exact ILPs on growing row subsets) with part of the budget. Off by
+    // default: on the paper kernels it only delayed CBC (it still runs on components too large
+    // for one CBC solve).
+    bool row_generation = false;
     // Optional per-sample / per-ball masks (empty = none). Non-zero = set.
     std::vector<uint8_t> ignorable_samples;   // need not be covered
     std::vector<uint8_t> forced_in;           // must be selected

@@ -1,7 +1,8 @@
 // setcover_internal.h: what the set-cover files share; not part of the library's interface.
 // The compact problem (rows = samples x columns = balls, stored both ways) with its heuristics
 // and bounds (setcover_problem.cpp), the exact machinery (setcover_exact.cpp: Lagrangian bound,
-// CBC behind the process-wide mutex, row generation), and the reduction of a compact problem
+// CBC behind the process-wide mutex, row generation), the local search (setcover_local.cpp),
+// and the reduction of a compact problem
 // (setcover.cpp, which also holds the reduction of the input and the solve driver).
 #pragma once
 #include "setcover.h"
@@ -72,7 +73,11 @@ struct CbcOutcome {
     double bound = -std::numeric_limits<double>::infinity();  // valid for solutions below the cutoff
     std::vector<uint32_t> solution;  // columns, ascending
 };
-CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int threads, bool first_solution = false);
+// Looks for covers smaller than `incumbent` (cutoff incumbent - 1 + kCutoffSlack); with
+// `first_solution` stops at the first one; `heuristics` = CBC's own primal heuristics.
+constexpr double kCutoffSlack = 1e-3;
+CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int threads, bool first_solution = false,
+                   bool heuristics = true);
 
 // Row generation (lazy covering constraints) on a reduced component K, looking for covers
 // smaller than `target` (the incumbent's size; `best` below, lowered as better covers appear).
@@ -96,6 +101,15 @@ struct RowGenOutcome {
 constexpr double kRowGenShare = 0.25;
 RowGenOutcome row_generation(const Problem& K, size_t target, Clock::time_point deadline, bool has_deadline,
                              int threads, const Monitor& monitor);
+
+// ---- setcover_local.cpp ----
+// Row-weighting local search (RWLS) from the cover `start` of P: returns the smallest cover
+// found (ascending, redundancy-free, never larger than `start`). Stops after `max_steps` swaps,
+// when it stalls (no improvement for 100000 + as many swaps as the last improvement took), at
+// `deadline`, or when a cover of `lower_bound` columns is found. Deterministic for a seed
+// unless the deadline cuts it short.
+std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start, size_t lower_bound,
+                                   uint64_t max_steps, uint64_t seed, Clock::time_point deadline);
 
 // ---- setcover.cpp ----
 // Reduction of a compact problem to its kernel (forced columns returned separately).

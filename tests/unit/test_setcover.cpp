@@ -166,6 +166,7 @@ TEST_CASE("set cover: row generation equals the brute-force minimum and the one-
         const int best = brute_min(c);
         REQUIRE(best >= 0);
         CoverOptions opt;
+        opt.row_generation = true;
         CoverResult rg, one;
         REQUIRE(solve_set_cover(c, opt, false, Monitor{}, rg).ok());
         opt.row_generation = false;
@@ -191,6 +192,7 @@ TEST_CASE("set cover: row generation over several rounds stays exact") {
     for (int t = 0; t < 12; ++t) {
         const Coverage c = random_cover(rng, 60, 60, 0.08);
         CoverOptions opt;
+        opt.row_generation = true;
         CoverResult rg, one;
         REQUIRE(solve_set_cover(c, opt, false, Monitor{}, rg).ok());
         opt.row_generation = false;
@@ -598,4 +600,52 @@ TEST_CASE("set cover: a kernel too large for one CBC solve keeps a valid cover a
     REQUIRE(solve_set_cover(c, g, false, Monitor{}, gr).ok());
     CHECK(res.objective <= gr.objective);
     CHECK(gr.lower_bound <= res.objective);
+}
+
+TEST_CASE("set cover: the local search returns valid covers, never worse than its start, mostly optimal") {
+    // Random instances with a brute-force optimum: the local search from the greedy cover must
+    // return a cover of the instance, no larger than the start and no smaller than the optimum,
+    // the same one for the same seed, and (these are easy for it) the optimum on nearly all.
+    const auto far = sc::Clock::now() + std::chrono::hours(1);
+    Rng rng(2024);
+    int optimal = 0, improved = 0, total = 0;
+    for (int t = 0; t < 80; ++t) {
+        const Coverage c = random_cover(rng, 22 + t % 7, 18 + t % 5, t % 2 ? 0.15 : 0.25);
+        const int best = brute_min(c);
+        REQUIRE(best >= 0);
+        const sc::Problem P = to_problem(c);
+        std::vector<uint32_t> g = sc::greedy_cover(P);
+        sc::remove_redundant(P.cptr, P.crow, P.R, nullptr, nullptr, g);
+        const std::vector<uint32_t> a = sc::local_search(P, g, 0, 20000, 7, far);
+        const std::vector<uint32_t> b = sc::local_search(P, g, 0, 20000, 7, far);
+        INFO("instance " << t << " greedy " << g.size() << " optimum " << best << " local " << a.size());
+        CHECK(valid_cover(c, a));
+        CHECK(std::is_sorted(a.begin(), a.end()));
+        CHECK(a.size() <= g.size());
+        CHECK(int(a.size()) >= best);
+        CHECK(a == b);
+        // stops at the lower bound: given the optimum as bound, it returns a cover of that size
+        const std::vector<uint32_t> s = sc::local_search(P, g, size_t(best), 20000, 7, far);
+        CHECK(int(s.size()) == best);
+        CHECK(valid_cover(c, s));
+        optimal += int(a.size()) == best;
+        improved += a.size() < g.size();
+        ++total;
+    }
+    CHECK(optimal >= total - 2);
+    CHECK(improved >= 5);  // the greedy start is not already optimal everywhere
+}
+
+TEST_CASE("set cover: the local search with no steps or an expired deadline keeps its start") {
+    Rng rng(5);
+    const Coverage c = random_cover(rng, 40, 30, 0.15);
+    const sc::Problem P = to_problem(c);
+    std::vector<uint32_t> g = sc::greedy_cover(P);
+    sc::remove_redundant(P.cptr, P.crow, P.R, nullptr, nullptr, g);
+    const std::vector<uint32_t> z = sc::local_search(P, g, 0, 0, 1, sc::Clock::now() + std::chrono::hours(1));
+    CHECK(valid_cover(c, z));
+    CHECK(z.size() <= g.size());
+    const std::vector<uint32_t> e = sc::local_search(P, g, 0, 1000000, 1, sc::Clock::now() - std::chrono::seconds(1));
+    CHECK(valid_cover(c, e));
+    CHECK(e.size() <= g.size());
 }

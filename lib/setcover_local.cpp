@@ -1,0 +1,168 @@
+// setcover_local.cpp: the anytime primal heuristic of the exact solver: row-weighting local
+// search for unicost set cover (RWLS, Gao, Weise & Li 2015). Starting from a cover, it looks
+// for covers one column smaller: drop a column, then swap columns (remove the one whose loss of
+// weighted coverage is smallest, add the best column for a random uncovered row), raising the
+// weight of rows that stay uncovered so that the search leaves local minima. Stops at a step
+// limit, at the lower bound, or when it stalls. Deterministic for a seed (own RNG arithmetic;
+// the deadline is only a safety stop).
+#include "setcover_internal.h"
+
+#include <algorithm>
+#include <cstdint>
+
+namespace ca {
+namespace sc {
+
+namespace {
+// splitmix64: portable, deterministic
+struct SplitMix {
+    uint64_t s;
+    uint64_t next() {
+        uint64_t z = (s += 0x9e3779b97f4a7c15ull);
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+        return z ^ (z >> 31);
+    }
+};
+// Stall rule: stop once the steps since the last improvement exceed kStallSteps plus as many
+// steps as the last improvement needed.
+constexpr uint64_t kStallSteps = 100000;
+}  // namespace
+
+std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start, size_t lower_bound,
+                                   uint64_t max_steps, uint64_t seed, Clock::time_point deadline) {
+    std::sort(start.begin(), start.end());
+    if (P.R == 0 || start.size() <= lower_bound || !covers_problem(P, start)) return start;
+    const uint32_t R = P.R, C = P.C;
+    std::vector<int64_t> w(R, 1), score(C, 0);
+    std::vector<uint32_t> cnt(R, 0), upos(R, UINT32_MAX), uncovered;
+    std::vector<uint64_t> stamp(C, 0);
+    std::vector<uint8_t> in(C, 0), conf(C, 1);
+    std::vector<uint32_t> sel;  // current columns (unordered)
+    std::vector<uint32_t> spos(C, UINT32_MAX);
+    SplitMix rng{seed};
+
+    auto uncover = [&](uint32_t r) { upos[r] = uint32_t(uncovered.size()); uncovered.push_back(r); };
+    auto recover = [&](uint32_t r) {
+        const uint32_t p = upos[r], last = uncovered.back();
+        uncovered[p] = last;
+        upos[last] = p;
+        uncovered.pop_back();
+        upos[r] = UINT32_MAX;
+    };
+    // the one selected column covering r (cnt[r] == 1)
+    auto owner = [&](uint32_t r) {
+        for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q)
+            if (in[P.rcol[q]]) return P.rcol[q];
+        return UINT32_MAX;
+    };
+    auto add = [&](uint32_t c) {
+        int64_t sc = 0;
+        for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) {
+            const uint32_t r = P.crow[k];
+            if (cnt[r] == 0) {
+                recover(r);
+                for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q)
+                    if (P.rcol[q] != c) score[P.rcol[q]] -= w[r];
+                sc -= w[r];
+            } else if (cnt[r] == 1) {
+                score[owner(r)] += w[r];
+            }
+            cnt[r]++;
+            // configuration change: the columns around c may enter again
+            for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q) conf[P.rcol[q]] = 1;
+        }
+        in[c] = 1;
+        score[c] = sc;
+        spos[c] = uint32_t(sel.size());
+        sel.push_back(c);
+    };
+    auto remove = [&](uint32_t c) {
+        in[c] = 0;
+        const uint32_t p = spos[c], last = sel.back();
+        sel[p] = last;
+        spos[last] = p;
+        sel.pop_back();
+        spos[c] = UINT32_MAX;
+        int64_t sc = 0;
+        for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) {
+            const uint32_t r = P.crow[k];
+            cnt[r]--;
+            if (cnt[r] == 0) {
+                uncover(r);
+                for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q)
+                    if (P.rcol[q] != c) score[P.rcol[q]] += w[r];
+                sc += w[r];
+            } else if (cnt[r] == 1) {
+                score[owner(r)] -= w[r];
+            }
+            for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q) conf[P.rcol[q]] = 1;
+        }
+        score[c] = sc;
+        conf[c] = 0;
+    };
+    // best selected column to drop: largest score (smallest loss), ties to the oldest
+    auto pick_drop = [&](uint32_t tabu) {
+        uint32_t best = UINT32_MAX;
+        for (uint32_t c : sel) {
+            if (c == tabu) continue;
+            if (best == UINT32_MAX || score[c] > score[best] || (score[c] == score[best] && stamp[c] < stamp[best]))
+                best = c;
+        }
+        return best;
+    };
+
+    // empty selection: every row uncovered, a column's score is its size; then add the start
+    for (uint32_t r = 0; r < R; ++r) uncover(r);
+    for (uint32_t c = 0; c < C; ++c) score[c] = int64_t(P.cptr[c + 1] - P.cptr[c]);
+    for (uint32_t c : start) add(c);
+    std::vector<uint32_t> best = start;
+    uint32_t last_added = UINT32_MAX;
+    uint64_t last_improved = 0;
+    for (uint64_t step = 1; step <= max_steps; ++step) {
+        while (uncovered.empty()) {
+            if (sel.size() < best.size()) {
+                best = sel;
+                last_improved = step;
+                std::sort(best.begin(), best.end());
+                if (best.size() <= lower_bound) return best;
+            }
+            const uint32_t c = pick_drop(UINT32_MAX);
+            remove(c);
+            stamp[c] = step;
+        }
+        if ((step & 255) == 0 && Clock::now() > deadline) break;
+        if (step > 2 * last_improved + kStallSteps) break;  // no progress for a long while
+        // swap: drop one, add the best column (configuration allowed) for a random uncovered row
+        const uint32_t d = pick_drop(last_added);
+        if (d != UINT32_MAX) {
+            remove(d);
+            stamp[d] = step;
+        }
+        const uint32_t r = uncovered[size_t(rng.next() % uncovered.size())];
+        uint32_t a = UINT32_MAX;
+        for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q) {
+            const uint32_t c = P.rcol[q];
+            if (!conf[c]) continue;
+            if (a == UINT32_MAX || score[c] > score[a] || (score[c] == score[a] && stamp[c] < stamp[a])) a = c;
+        }
+        if (a == UINT32_MAX) a = P.rcol[P.rptr[r]];  // every candidate just left: take one anyway
+        add(a);
+        stamp[a] = step;
+        last_added = a;
+        // rows still uncovered weigh more
+        for (uint32_t u : uncovered) {
+            w[u]++;
+            for (uint32_t q = P.rptr[u]; q < P.rptr[u + 1]; ++q) score[P.rcol[q]]++;
+        }
+    }
+    if (uncovered.empty() && sel.size() < best.size()) {
+        best = sel;
+        std::sort(best.begin(), best.end());
+    }
+    remove_redundant(P.cptr, P.crow, P.R, nullptr, nullptr, best);
+    return best;
+}
+
+}  // namespace sc
+}  // namespace ca
