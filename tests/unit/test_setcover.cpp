@@ -649,3 +649,39 @@ TEST_CASE("set cover: the local search with no steps or an expired deadline keep
     CHECK(valid_cover(c, e));
     CHECK(e.size() <= g.size());
 }
+
+TEST_CASE("set cover: the local search's patience is proportional to the problem") {
+    // 50 disjoint groups of 3 rows, two identical columns per group: the start (one column per
+    // group) is optimal, so the search never improves and must stop after max(2000, 20 (R + C))
+    // swaps past its start, not after a fixed large count.
+    Coverage c;
+    c.n_samples = 150;
+    c.n_balls = 100;
+    c.ball_ptr = {0};
+    for (uint32_t b = 0; b < 100; ++b) {
+        for (uint32_t k = 0; k < 3; ++k) c.ball_samples.push_back(3 * (b / 2) + k);
+        c.ball_ptr.push_back(uint32_t(c.ball_samples.size()));
+    }
+    c.build_transpose();
+    const sc::Problem P = to_problem(c);
+    std::vector<uint32_t> start;
+    for (uint32_t g = 0; g < 50; ++g) start.push_back(2 * g);
+    const auto far = sc::Clock::now() + std::chrono::hours(1);
+    uint64_t steps = 0;
+    const std::vector<uint32_t> s = sc::local_search(P, start, 0, 1000000, 3, far, &steps);
+    CHECK(s.size() == 50);
+    CHECK(valid_cover(c, s));
+    CHECK(steps == 20 * (150 + 100) + 1);
+    // a small problem gets the minimum patience
+    Rng rng(11);
+    const Coverage small = random_cover(rng, 20, 15, 0.25);
+    const int best = brute_min(small);
+    REQUIRE(best >= 0);
+    const sc::Problem Q = to_problem(small);
+    std::vector<uint32_t> g = sc::greedy_cover(Q);
+    sc::remove_redundant(Q.cptr, Q.crow, Q.R, nullptr, nullptr, g);
+    const std::vector<uint32_t> a = sc::local_search(Q, g, 0, 1000000, 3, far, &steps);
+    CHECK(int(a.size()) == best);
+    CHECK(steps <= 2 * 2000 + 2000 + 1);
+    CHECK(steps >= 2000);
+}
