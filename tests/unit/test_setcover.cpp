@@ -685,3 +685,48 @@ TEST_CASE("set cover: the local search's patience is proportional to the problem
     CHECK(steps <= 2 * 2000 + 2000 + 1);
     CHECK(steps >= 2000);
 }
+
+TEST_CASE("set cover: the reduction reaches its fixpoint (incremental dominance passes miss nothing)") {
+    // Larger random instances need several rounds; the kernel must have no sample with one ball,
+    // no sample whose balls contain another's, no ball whose samples another ball contains, and
+    // keep the optimum (brute force on the smaller ones).
+    Rng rng(77);
+    auto subset = [](const uint32_t* x, uint32_t nx, const uint32_t* y, uint32_t ny) {
+        return std::includes(y, y + ny, x, x + nx);
+    };
+    int multi_round = 0;
+    for (int t = 0; t < 120; ++t) {
+        const bool small = t % 3 == 0;
+        const size_t m = small ? 18 + t % 10 : 60 + 7 * (t % 11), n = small ? 16 + t % 9 : 80 + 13 * (t % 7);
+        const Coverage c = random_cover(rng, m, n, 0.04 + 0.03 * (t % 5));
+        std::vector<uint32_t> forced, kb, ks;
+        Coverage ker;
+        REQUIRE(detail::reduce_set_cover(c, CoverOptions{}, false, Monitor{}, forced, ker, kb, ks).ok());
+        INFO("instance " << t);
+        multi_round += !forced.empty() && ker.n_balls > 0;
+        for (size_t j = 0; j < ker.n_samples; ++j) {
+            const uint32_t dj = ker.sample_ptr[j + 1] - ker.sample_ptr[j];
+            CHECK(dj >= 2);
+            for (size_t k = 0; k < ker.n_samples; ++k) {
+                if (k == j) continue;
+                const uint32_t dk = ker.sample_ptr[k + 1] - ker.sample_ptr[k];
+                CHECK_FALSE(subset(&ker.sample_balls[ker.sample_ptr[k]], dk, &ker.sample_balls[ker.sample_ptr[j]], dj));
+            }
+        }
+        for (size_t a = 0; a < ker.n_balls; ++a) {
+            const uint32_t na = ker.ball_ptr[a + 1] - ker.ball_ptr[a];
+            CHECK(na >= 1);
+            for (size_t b = 0; b < ker.n_balls; ++b) {
+                if (b == a) continue;
+                const uint32_t nb = ker.ball_ptr[b + 1] - ker.ball_ptr[b];
+                CHECK_FALSE(subset(&ker.ball_samples[ker.ball_ptr[a]], na, &ker.ball_samples[ker.ball_ptr[b]], nb));
+            }
+        }
+        if (small) {
+            const int kopt = ker.n_samples == 0 ? 0 : brute_min(ker);
+            REQUIRE(kopt >= 0);
+            CHECK(int(forced.size()) + kopt == brute_min(c));
+        }
+    }
+    CHECK(multi_round >= 10);
+}
