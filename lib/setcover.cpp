@@ -92,8 +92,8 @@ public:
             if (b_alive[a]) {
                 for (uint32_t k = bptr[a]; k < bptr[a + 1]; ++k)
                     if (s_alive[bs[k]]) ns.push_back(bs[k]);
-                if (ns.size() - nptr[a] < bsize(uint32_t(a))) dirty_b_[a] = 1;
-            } else {
+                if (balls_full_ && ns.size() - nptr[a] < bsize(uint32_t(a))) dirty_b_[a] = 1;
+            } else if (samples_full_) {  // before the first complete pass nothing is tracked
                 for (uint32_t k = bptr[a]; k < bptr[a + 1]; ++k) dirty_s_[bs[k]] = 1;
             }
             nptr[a + 1] = uint32_t(ns.size());
