@@ -3,7 +3,9 @@
 // setcover_problem.cpp, the exact machinery in setcover_exact.cpp (setcover_internal.h).
 //
 // Pipeline: input checks -> reduction to a fixpoint (forced balls, degree-1 samples, dominated
-// samples, dominated balls, empty balls) -> kernel solve -> redundancy removal -> verification.
+// samples, dominated balls, empty balls; after one complete pass of each dominance test only
+// the balls / samples whose lists shrank are tested again) -> kernel solve -> redundancy
+// removal -> verification.
 // Exact kernel solve, per connected component of the kernel (components share no rows and no
 // columns, so optima and bounds add): greedy cover -> Lagrangian subgradient (bound, and a
 // reduced-cost greedy that improves the incumbent) -> if that leaves a gap, the LP relaxation's
@@ -78,13 +80,22 @@ public:
     }
 
     // Drop dead samples/balls from the lists (cost: the current lists, not the original ones).
+    // Records what changed for the incremental dominance passes: an alive ball that lost a
+    // sample is dirty for ball dominance, an alive sample that lost a ball (a ball of its list
+    // died) is dirty for sample dominance.
     void rebuild() {
+        dirty_b_.resize(n_, 0);
+        dirty_s_.resize(m_, 0);
         std::vector<uint32_t> nptr(n_ + 1, 0), ns;
         ns.reserve(bptr[n_]);
         for (size_t a = 0; a < n_; ++a) {
-            if (b_alive[a])
+            if (b_alive[a]) {
                 for (uint32_t k = bptr[a]; k < bptr[a + 1]; ++k)
                     if (s_alive[bs[k]]) ns.push_back(bs[k]);
+                if (balls_full_ && ns.size() - nptr[a] < bsize(uint32_t(a))) dirty_b_[a] = 1;
+            } else if (samples_full_) {  // before the first complete pass nothing is tracked
+                for (uint32_t k = bptr[a]; k < bptr[a + 1]; ++k) dirty_s_[bs[k]] = 1;
+            }
             nptr[a + 1] = uint32_t(ns.size());
         }
         own_bptr.swap(nptr);
@@ -114,6 +125,9 @@ public:
     // must be one of j's balls; the subset test uses a stamp of j's balls, first on a few
     // inline probes (k's next rarest balls, cache-friendly), then on k's whole list.
     bool sample_dominance() {
+        if (samples_full_) return sample_dominance_dirty();
+        samples_full_ = true;
+        dirty_s_.assign(m_, 0);
         std::vector<uint32_t> gptr(n_ + 1, 0);
         std::vector<Probe> pr(m_);
         for (uint32_t j = 0; j < m_; ++j) {
@@ -160,6 +174,9 @@ public:
     // candidates a are grouped by their rarest sample (which b must contain); dead candidates
     // are removed from the groups as they are met. Same probe filter as above.
     bool ball_dominance() {
+        if (balls_full_) return ball_dominance_dirty();
+        balls_full_ = true;
+        dirty_b_.assign(n_, 0);
         std::vector<uint32_t> gptr(m_ + 1, 0), order;
         std::vector<Probe> pr(n_);
         order.reserve(n_);
@@ -211,7 +228,81 @@ public:
         return any;
     }
 
+    // After a complete pass no alive sample dominates another. A pair (k, j) can only become
+    // one (balls(k) ⊆ balls(j)) when k loses a ball, so the later passes test only the dirty
+    // samples k as dominators, against the samples j of k's rarest ball (j must contain it).
+    bool sample_dominance_dirty() {
+        bool any = false;
+        for (uint32_t k = 0; k < m_; ++k) {
+            if (!dirty_s_[k]) continue;
+            dirty_s_[k] = 0;
+            if (!s_alive[k] || sdeg(k) == 0) continue;
+            const uint32_t* lk = &sb[sptr[k]];
+            const uint32_t dk = sdeg(k);
+            uint32_t rare = lk[0];
+            for (uint32_t e = 1; e < dk; ++e)
+                if (bsize(lk[e]) < bsize(rare)) rare = lk[e];
+            for (uint32_t q = bptr[rare]; q < bptr[rare + 1]; ++q) {
+                const uint32_t j = bs[q];
+                if (j == k || !s_alive[j] || sdeg(j) < dk) continue;
+                if (!sorted_subset(lk, dk, &sb[sptr[j]], sdeg(j))) continue;
+                any = true;
+                if (sdeg(j) > dk || k < j) {
+                    s_alive[j] = 0;  // k dominates j
+                } else {
+                    s_alive[k] = 0;  // equal sets: the lower index j stays
+                    break;
+                }
+            }
+        }
+        return any;
+    }
+
+    // Same for balls: a pair (a, b) can only become one (samples(a) ⊆ samples(b)) when a loses
+    // a sample, so the later passes test only the dirty balls a, against the balls b of a's
+    // rarest sample.
+    bool ball_dominance_dirty() {
+        bool any = false;
+        for (uint32_t a = 0; a < n_; ++a) {
+            if (!dirty_b_[a]) continue;
+            dirty_b_[a] = 0;
+            if (!b_alive[a] || bsize(a) == 0) continue;
+            const uint32_t* la = &bs[bptr[a]];
+            const uint32_t na = bsize(a);
+            uint32_t rare = la[0];
+            for (uint32_t e = 1; e < na; ++e)
+                if (sdeg(la[e]) < sdeg(rare)) rare = la[e];
+            for (uint32_t q = sptr[rare]; q < sptr[rare + 1]; ++q) {
+                const uint32_t b = sb[q];
+                if (b == a || !b_alive[b] || bsize(b) < na) continue;
+                if (bsize(b) == na && b > a) continue;  // equal sets: the lower index stays
+                if (!sorted_subset(la, na, &bs[bptr[b]], bsize(b))) continue;
+                b_alive[a] = 0;
+                any = true;
+                break;
+            }
+        }
+        return any;
+    }
+
 private:
+    // x[0..nx) ⊆ y[0..ny), both ascending: galloping merge.
+    static bool sorted_subset(const uint32_t* x, uint32_t nx, const uint32_t* y, uint32_t ny) {
+        if (nx > ny) return false;
+        const uint32_t* yi = y;
+        const uint32_t* ye = y + ny;
+        for (uint32_t i = 0; i < nx; ++i) {
+            yi = std::lower_bound(yi, ye, x[i]);
+            if (yi == ye || *yi != x[i]) return false;
+            ++yi;
+            if (uint32_t(ye - yi) < nx - i - 1) return false;
+        }
+        return true;
+    }
+
+    bool balls_full_ = false, samples_full_ = false;
+    std::vector<uint8_t> dirty_b_, dirty_s_;
+
     // Per element: list size, its rarest member (`key`, the group it is filed under) and the
     // next rarest members (`p`, padded with key), kept inline so most failing subset tests
     // never touch the element's list.

@@ -105,11 +105,13 @@ RowGenOutcome row_generation(const Problem& K, size_t target, Clock::time_point 
 // ---- setcover_local.cpp ----
 // Row-weighting local search (RWLS) from the cover `start` of P: returns the smallest cover
 // found (ascending, redundancy-free, never larger than `start`). Stops after `max_steps` swaps,
-// when it stalls (no improvement for 100000 + as many swaps as the last improvement took), at
-// `deadline`, or when a cover of `lower_bound` columns is found. Deterministic for a seed
-// unless the deadline cuts it short.
+// when it stalls (no improvement for max(2000, 20 (R + C)) swaps + as many as the last
+// improvement took), at `deadline`, or when a cover of `lower_bound` columns is found.
+// Deterministic for a seed unless the deadline cuts it short. `steps` (optional) receives the
+// number of swaps made.
 std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start, size_t lower_bound,
-                                   uint64_t max_steps, uint64_t seed, Clock::time_point deadline);
+                                   uint64_t max_steps, uint64_t seed, Clock::time_point deadline,
+                                   uint64_t* steps = nullptr);
 
 // ---- setcover.cpp ----
 // Reduction of a compact problem to its kernel (forced columns returned separately).

@@ -24,16 +24,28 @@ struct SplitMix {
         return z ^ (z >> 31);
     }
 };
-// Stall rule: stop once the steps since the last improvement exceed kStallSteps plus as many
-// steps as the last improvement needed.
-constexpr uint64_t kStallSteps = 100000;
+// Stall rule: stop once the steps since the last improvement exceed as many steps as the last
+// improvement needed plus a patience proportional to the problem, kStallPerElement swaps per
+// row and column but at least kStallMin (on the paper models' kernels the latest improvement
+// came ~10 (R + C) swaps past twice the step of the previous one, most come much sooner; the old
+// fixed 100000 swaps cost 0.3-0.5 s on small kernels that cannot improve).
+constexpr uint64_t kStallPerElement = 20;
+constexpr uint64_t kStallMin = 2000;
 }  // namespace
 
 std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start, size_t lower_bound,
-                                   uint64_t max_steps, uint64_t seed, Clock::time_point deadline) {
+                                   uint64_t max_steps, uint64_t seed, Clock::time_point deadline,
+                                   uint64_t* steps) {
+    if (steps) *steps = 0;
     std::sort(start.begin(), start.end());
     if (P.R == 0 || start.size() <= lower_bound || !covers_problem(P, start)) return start;
     const uint32_t R = P.R, C = P.C;
+    // raw pointers: the byte stores into `conf` may alias anything, and would otherwise make the
+    // compiler reload the vectors' data pointers in every inner loop
+    const uint32_t* const rptr = P.rptr.data();
+    const uint32_t* const rcol = P.rcol.data();
+    const uint32_t* const cptr = P.cptr.data();
+    const uint32_t* const crow = P.crow.data();
     std::vector<int64_t> w(R, 1), score(C, 0);
     std::vector<uint32_t> cnt(R, 0), upos(R, UINT32_MAX), uncovered;
     std::vector<uint64_t> stamp(C, 0);
@@ -52,25 +64,25 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
     };
     // the one selected column covering r (cnt[r] == 1)
     auto owner = [&](uint32_t r) {
-        for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q)
-            if (in[P.rcol[q]]) return P.rcol[q];
+        for (uint32_t q = rptr[r]; q < rptr[r + 1]; ++q)
+            if (in[rcol[q]]) return rcol[q];
         return UINT32_MAX;
     };
     auto add = [&](uint32_t c) {
         int64_t sc = 0;
-        for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) {
-            const uint32_t r = P.crow[k];
+        for (uint32_t k = cptr[c]; k < cptr[c + 1]; ++k) {
+            const uint32_t r = crow[k];
             if (cnt[r] == 0) {
                 recover(r);
-                for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q)
-                    if (P.rcol[q] != c) score[P.rcol[q]] -= w[r];
+                for (uint32_t q = rptr[r]; q < rptr[r + 1]; ++q)
+                    if (rcol[q] != c) score[rcol[q]] -= w[r];
                 sc -= w[r];
             } else if (cnt[r] == 1) {
                 score[owner(r)] += w[r];
             }
             cnt[r]++;
             // configuration change: the columns around c may enter again
-            for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q) conf[P.rcol[q]] = 1;
+            for (uint32_t q = rptr[r]; q < rptr[r + 1]; ++q) conf[rcol[q]] = 1;
         }
         in[c] = 1;
         score[c] = sc;
@@ -85,18 +97,18 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
         sel.pop_back();
         spos[c] = UINT32_MAX;
         int64_t sc = 0;
-        for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) {
-            const uint32_t r = P.crow[k];
+        for (uint32_t k = cptr[c]; k < cptr[c + 1]; ++k) {
+            const uint32_t r = crow[k];
             cnt[r]--;
             if (cnt[r] == 0) {
                 uncover(r);
-                for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q)
-                    if (P.rcol[q] != c) score[P.rcol[q]] += w[r];
+                for (uint32_t q = rptr[r]; q < rptr[r + 1]; ++q)
+                    if (rcol[q] != c) score[rcol[q]] += w[r];
                 sc += w[r];
             } else if (cnt[r] == 1) {
                 score[owner(r)] -= w[r];
             }
-            for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q) conf[P.rcol[q]] = 1;
+            for (uint32_t q = rptr[r]; q < rptr[r + 1]; ++q) conf[rcol[q]] = 1;
         }
         score[c] = sc;
         conf[c] = 0;
@@ -114,12 +126,14 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
 
     // empty selection: every row uncovered, a column's score is its size; then add the start
     for (uint32_t r = 0; r < R; ++r) uncover(r);
-    for (uint32_t c = 0; c < C; ++c) score[c] = int64_t(P.cptr[c + 1] - P.cptr[c]);
+    for (uint32_t c = 0; c < C; ++c) score[c] = int64_t(cptr[c + 1] - cptr[c]);
     for (uint32_t c : start) add(c);
     std::vector<uint32_t> best = start;
     uint32_t last_added = UINT32_MAX;
     uint64_t last_improved = 0;
+    const uint64_t patience = std::max<uint64_t>(kStallMin, kStallPerElement * (uint64_t(R) + C));
     for (uint64_t step = 1; step <= max_steps; ++step) {
+        if (steps) *steps = step;
         while (uncovered.empty()) {
             if (sel.size() < best.size()) {
                 best = sel;
@@ -132,7 +146,7 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
             stamp[c] = step;
         }
         if ((step & 255) == 0 && Clock::now() > deadline) break;
-        if (step > 2 * last_improved + kStallSteps) break;  // no progress for a long while
+        if (step > 2 * last_improved + patience) break;  // no progress for a long while
         // swap: drop one, add the best column (configuration allowed) for a random uncovered row
         const uint32_t d = pick_drop(last_added);
         if (d != UINT32_MAX) {
@@ -141,19 +155,19 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
         }
         const uint32_t r = uncovered[size_t(rng.next() % uncovered.size())];
         uint32_t a = UINT32_MAX;
-        for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q) {
-            const uint32_t c = P.rcol[q];
+        for (uint32_t q = rptr[r]; q < rptr[r + 1]; ++q) {
+            const uint32_t c = rcol[q];
             if (!conf[c]) continue;
             if (a == UINT32_MAX || score[c] > score[a] || (score[c] == score[a] && stamp[c] < stamp[a])) a = c;
         }
-        if (a == UINT32_MAX) a = P.rcol[P.rptr[r]];  // every candidate just left: take one anyway
+        if (a == UINT32_MAX) a = rcol[rptr[r]];  // every candidate just left: take one anyway
         add(a);
         stamp[a] = step;
         last_added = a;
         // rows still uncovered weigh more
         for (uint32_t u : uncovered) {
             w[u]++;
-            for (uint32_t q = P.rptr[u]; q < P.rptr[u + 1]; ++q) score[P.rcol[q]]++;
+            for (uint32_t q = rptr[u]; q < rptr[u + 1]; ++q) score[rcol[q]]++;
         }
     }
     if (uncovered.empty() && sel.size() < best.size()) {

@@ -649,3 +649,84 @@ TEST_CASE("set cover: the local search with no steps or an expired deadline keep
     CHECK(valid_cover(c, e));
     CHECK(e.size() <= g.size());
 }
+
+TEST_CASE("set cover: the local search's patience is proportional to the problem") {
+    // 50 disjoint groups of 3 rows, two identical columns per group: the start (one column per
+    // group) is optimal, so the search never improves and must stop after max(2000, 20 (R + C))
+    // swaps past its start, not after a fixed large count.
+    Coverage c;
+    c.n_samples = 150;
+    c.n_balls = 100;
+    c.ball_ptr = {0};
+    for (uint32_t b = 0; b < 100; ++b) {
+        for (uint32_t k = 0; k < 3; ++k) c.ball_samples.push_back(3 * (b / 2) + k);
+        c.ball_ptr.push_back(uint32_t(c.ball_samples.size()));
+    }
+    c.build_transpose();
+    const sc::Problem P = to_problem(c);
+    std::vector<uint32_t> start;
+    for (uint32_t g = 0; g < 50; ++g) start.push_back(2 * g);
+    const auto far = sc::Clock::now() + std::chrono::hours(1);
+    uint64_t steps = 0;
+    const std::vector<uint32_t> s = sc::local_search(P, start, 0, 1000000, 3, far, &steps);
+    CHECK(s.size() == 50);
+    CHECK(valid_cover(c, s));
+    CHECK(steps == 20 * (150 + 100) + 1);
+    // a small problem gets the minimum patience
+    Rng rng(11);
+    const Coverage small = random_cover(rng, 20, 15, 0.25);
+    const int best = brute_min(small);
+    REQUIRE(best >= 0);
+    const sc::Problem Q = to_problem(small);
+    std::vector<uint32_t> g = sc::greedy_cover(Q);
+    sc::remove_redundant(Q.cptr, Q.crow, Q.R, nullptr, nullptr, g);
+    const std::vector<uint32_t> a = sc::local_search(Q, g, 0, 1000000, 3, far, &steps);
+    CHECK(int(a.size()) == best);
+    CHECK(steps <= 2 * 2000 + 2000 + 1);
+    CHECK(steps >= 2000);
+}
+
+TEST_CASE("set cover: the reduction reaches its fixpoint (incremental dominance passes miss nothing)") {
+    // Larger random instances need several rounds; the kernel must have no sample with one ball,
+    // no sample whose balls contain another's, no ball whose samples another ball contains, and
+    // keep the optimum (brute force on the smaller ones).
+    Rng rng(77);
+    auto subset = [](const uint32_t* x, uint32_t nx, const uint32_t* y, uint32_t ny) {
+        return std::includes(y, y + ny, x, x + nx);
+    };
+    int multi_round = 0;
+    for (int t = 0; t < 120; ++t) {
+        const bool small = t % 3 == 0;
+        const size_t m = small ? 18 + t % 10 : 60 + 7 * (t % 11), n = small ? 16 + t % 9 : 80 + 13 * (t % 7);
+        const Coverage c = random_cover(rng, m, n, 0.04 + 0.03 * (t % 5));
+        std::vector<uint32_t> forced, kb, ks;
+        Coverage ker;
+        REQUIRE(detail::reduce_set_cover(c, CoverOptions{}, false, Monitor{}, forced, ker, kb, ks).ok());
+        INFO("instance " << t);
+        multi_round += !forced.empty() && ker.n_balls > 0;
+        for (size_t j = 0; j < ker.n_samples; ++j) {
+            const uint32_t dj = ker.sample_ptr[j + 1] - ker.sample_ptr[j];
+            CHECK(dj >= 2);
+            for (size_t k = 0; k < ker.n_samples; ++k) {
+                if (k == j) continue;
+                const uint32_t dk = ker.sample_ptr[k + 1] - ker.sample_ptr[k];
+                CHECK_FALSE(subset(&ker.sample_balls[ker.sample_ptr[k]], dk, &ker.sample_balls[ker.sample_ptr[j]], dj));
+            }
+        }
+        for (size_t a = 0; a < ker.n_balls; ++a) {
+            const uint32_t na = ker.ball_ptr[a + 1] - ker.ball_ptr[a];
+            CHECK(na >= 1);
+            for (size_t b = 0; b < ker.n_balls; ++b) {
+                if (b == a) continue;
+                const uint32_t nb = ker.ball_ptr[b + 1] - ker.ball_ptr[b];
+                CHECK_FALSE(subset(&ker.ball_samples[ker.ball_ptr[a]], na, &ker.ball_samples[ker.ball_ptr[b]], nb));
+            }
+        }
+        if (small) {
+            const int kopt = ker.n_samples == 0 ? 0 : brute_min(ker);
+            REQUIRE(kopt >= 0);
+            CHECK(int(forced.size()) + kopt == brute_min(c));
+        }
+    }
+    CHECK(multi_round >= 10);
+}
