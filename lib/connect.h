@@ -23,6 +23,10 @@
 //    counts as inside (those balls are inner balls); any other point must be inside the shape:
 //    generalised winding number > 1/2 for meshes; for point clouds, inside 0.95 x one of its 16
 //    nearest candidate balls.
+//    On the medial route the removals are replayed as elementary collapses: a removed triangle
+//    whose removed edges were all used by earlier removed triangles also loses its longest edge
+//    that is on no kept triangle, so removal adds no loop (the medial mesh has the shape's
+//    topology; genus-3 gave b1 = 4 or 5 on some covers).
 //    One failing point removes the element (InsideTest, connect_inside.cpp: the rule is evaluated
 //    exactly, but most winding-number and distance queries are skipped by a Lipschitz bound and
 //    by surface-free balls on closed meshes). On the medial route (meshes), removal and hole filling also require the

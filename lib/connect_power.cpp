@@ -13,7 +13,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numeric>
+#include <set>
 
 namespace ca {
 
@@ -67,8 +69,8 @@ Status connect_power(const CandidateSet& set, const Selection& sel, const Monito
 
 // Removes the triangles, then the edges (with their triangles), that fail the inside test.
 // `failed` gets the faces that failed it themselves (sorted), which hole filling need not retest.
-bool remove_outside(const InsideTest& test, double h, double tol, int threads, const Monitor& monitor, Skeleton& s,
-                    std::vector<Tri>& failed) {
+bool remove_outside(const InsideTest& test, double h, double tol, bool collapse, int threads, const Monitor& monitor,
+                    Skeleton& s, std::vector<Tri>& failed) {
     std::vector<uint8_t> face_ok(s.faces.size(), 1), edge_ok(s.edges.size(), 1);
     if (!parallel_for(s.edges.size(), threads, 1024, monitor, "connect", [&](size_t b, size_t e) {
             for (size_t i = b; i < e; ++i)
@@ -94,6 +96,35 @@ bool remove_outside(const InsideTest& test, double h, double tol, int threads, c
         const Tri& f = s.faces[i];
         if (!face_ok[i]) failed.push_back(f);
         if (face_ok[i] && has_edge(f[0], f[1]) && has_edge(f[0], f[2]) && has_edge(f[1], f[2])) faces.push_back(f);
+    }
+    if (collapse) {
+        // Removing a triangle can leave a new loop (its boundary, or with the other triangles of a
+        // removed edge, a longer cycle). The removals are replayed as elementary collapses (same
+        // homotopy type): each removed triangle, in order, is collapsed through one of its removed
+        // edges that no earlier removed triangle used, or else through its longest edge that is on
+        // no kept triangle, which is then removed too. The medial mesh has the shape's topology, so
+        // the loops that removal alone would add are spurious (genus-3 gave b1 = 4 or 5 on some covers).
+        std::map<std::array<uint32_t, 2>, int> on_faces;
+        for (const Tri& f : faces)   // sorted vertices
+            ++on_faces[{f[0], f[1]}], ++on_faces[{f[0], f[2]}], ++on_faces[{f[1], f[2]}];
+        std::set<std::array<uint32_t, 2>> alive(edges.begin(), edges.end()), used;
+        for (const Tri& f : s.faces) {
+            if (std::binary_search(faces.begin(), faces.end(), f)) continue;
+            const std::array<uint32_t, 2> fe[3] = {{f[0], f[1]}, {f[0], f[2]}, {f[1], f[2]}};
+            bool done = false;
+            for (int a = 0; a < 3 && !done; ++a)
+                if (!alive.count(fe[a]) && !used.count(fe[a])) used.insert(fe[a]), done = true;
+            if (done) continue;
+            int best = -1;
+            double best_len = -1;
+            for (int a = 0; a < 3; ++a) {
+                if (!alive.count(fe[a]) || on_faces.count(fe[a])) continue;
+                const double len = (s.balls[fe[a][0]].center - s.balls[fe[a][1]].center).squaredNorm();
+                if (len > best_len) best_len = len, best = a;
+            }
+            if (best >= 0) alive.erase(fe[best]), used.insert(fe[best]);
+        }
+        edges.assign(alive.begin(), alive.end());
     }
     s.edges = std::move(edges);   // still sorted (canonical input)
     s.faces = std::move(faces);
@@ -239,7 +270,7 @@ Status connect_balls(const CandidateSet& set, const Selection& sel, const Connec
         // centre-line rule applies.
         const double tol = opt.method == ConnectMethod::medial ? (sel.delta > 0 ? sel.delta : 0.02) : -1;
         std::vector<Tri> failed;   // faces that failed the removal test
-        if (opt.remove_outside && !remove_outside(test, h, tol, threads, monitor, out, failed)) return cancelled();
+        if (opt.remove_outside && !remove_outside(test, h, tol, opt.method == ConnectMethod::medial, threads, monitor, out, failed)) return cancelled();
         if (!monitor.report("connect", 0.75)) return cancelled();
         if (opt.fill_holes && !fill_small_holes(test, h, tol, threads, monitor, failed, out)) return cancelled();
         if (opt.reconnect) reconnect(test, h, tol, out);
