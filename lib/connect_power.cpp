@@ -276,6 +276,39 @@ void reconnect(const CandidateSet& set, const InsideTest& test, double h, double
         }
 }
 
+// Medial route: the medial mesh has the shape's loops and the collapsing removal keeps them, so
+// hole filling must not span one (a triangle over a thin handle passes the inside test when its
+// own balls cover the handle's hole; fertility lost 2 of its 4 loops). The triangles filling
+// added are undone, last first, while b1 is below `target` and undoing one raises it; then added
+// chords on no triangle are dropped while b1 is above `target` and dropping one lowers it.
+void keep_loops(const Skeleton& before, long target, Skeleton& s) {
+    long b1 = topology(s).betti1;
+    if (b1 >= target) return;
+    std::vector<Tri> added;
+    std::set_difference(s.faces.begin(), s.faces.end(), before.faces.begin(), before.faces.end(),
+                        std::back_inserter(added));
+    for (size_t i = added.size(); i-- > 0 && b1 < target;) {
+        Skeleton t = s;
+        t.faces.erase(std::lower_bound(t.faces.begin(), t.faces.end(), added[i]));
+        const long b = topology(t).betti1;
+        if (b > b1) s = std::move(t), b1 = b;
+    }
+    std::vector<std::array<uint32_t, 2>> chords;
+    std::set_difference(s.edges.begin(), s.edges.end(), before.edges.begin(), before.edges.end(),
+                        std::back_inserter(chords));
+    for (size_t i = chords.size(); i-- > 0 && b1 > target;) {
+        bool on_face = false;
+        for (const Tri& f : s.faces)
+            on_face = on_face || ((f[0] == chords[i][0] || f[1] == chords[i][0] || f[2] == chords[i][0]) &&
+                                  (f[0] == chords[i][1] || f[1] == chords[i][1] || f[2] == chords[i][1]));
+        if (on_face) continue;
+        Skeleton t = s;
+        t.edges.erase(std::lower_bound(t.edges.begin(), t.edges.end(), chords[i]));
+        const TopologyStats ts = topology(t);
+        if (ts.betti1 < b1 && ts.components == topology(s).components) s = std::move(t), b1 = ts.betti1;
+    }
+}
+
 }  // namespace
 
 // ---- dispatcher ----
@@ -310,7 +343,13 @@ Status connect_balls(const CandidateSet& set, const Selection& sel, const Connec
         std::vector<Tri> failed;   // faces that failed the removal test
         if (opt.remove_outside && !remove_outside(test, h, tol, opt.method == ConnectMethod::medial, threads, monitor, out, failed)) return cancelled();
         if (!monitor.report("connect", 0.75)) return cancelled();
-        if (opt.fill_holes && !fill_small_holes(test, h, tol, threads, monitor, failed, out)) return cancelled();
+        if (opt.fill_holes) {
+            const bool medial = opt.method == ConnectMethod::medial;
+            const Skeleton before = medial ? out : Skeleton{};
+            const long target = medial ? topology(out).betti1 : 0;
+            if (!fill_small_holes(test, h, tol, threads, monitor, failed, out)) return cancelled();
+            if (medial) keep_loops(before, target, out);
+        }
         if (opt.reconnect) reconnect(set, test, h, tol, out);
         canonicalize(out);
     }
