@@ -281,6 +281,8 @@ void reconnect(const CandidateSet& set, const InsideTest& test, double h, double
 // own balls cover the handle's hole; fertility lost 2 of its 4 loops). The triangles filling
 // added are undone, last first, while b1 is below `target` and undoing one raises it; then added
 // chords on no triangle are dropped while b1 is above `target` and dropping one lowers it.
+// `target` is the smaller of b1 before removal and before filling: loops that removal added
+// (duck: one, where a removed edge left a cycle) may still be filled.
 void keep_loops(const Skeleton& before, long target, Skeleton& s) {
     long b1 = topology(s).betti1;
     if (b1 >= target) return;
@@ -341,12 +343,14 @@ Status connect_balls(const CandidateSet& set, const Selection& sel, const Connec
         // centre-line rule applies.
         const double tol = opt.method == ConnectMethod::medial ? (sel.delta > 0 ? sel.delta : 0.02) : -1;
         std::vector<Tri> failed;   // faces that failed the removal test
+        const long raw_b1 = opt.method == ConnectMethod::medial && opt.fill_holes ? topology(out).betti1 : 0;
         if (opt.remove_outside && !remove_outside(test, h, tol, opt.method == ConnectMethod::medial, threads, monitor, out, failed)) return cancelled();
         if (!monitor.report("connect", 0.75)) return cancelled();
         if (opt.fill_holes) {
             const bool medial = opt.method == ConnectMethod::medial;
             const Skeleton before = medial ? out : Skeleton{};
-            const long target = medial ? topology(out).betti1 : 0;
+            // loops of the medial mesh that survived removal (not those that removal added)
+            const long target = medial ? std::min(raw_b1, topology(out).betti1) : 0;
             if (!fill_small_holes(test, h, tol, threads, monitor, failed, out)) return cancelled();
             if (medial) keep_loops(before, target, out);
         }
