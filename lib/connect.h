@@ -41,7 +41,8 @@
 //    come between the balls; a real tunnel cannot be spanned by inside triangles).
 //    On the medial route filling must not span one of the loops left after removal (a triangle
 //    over a thin handle passes when its own balls cover the hole: fertility lost 2 of 4 loops):
-//    added triangles are undone, last first, while b1 is below its value before filling.
+//    added triangles are undone, last first, while b1 is below the smaller of its values
+//    before removal and before filling.
 //  * reconnect: if the skeleton has several components, they are joined Kruskal-style by the
 //    shortest segments between balls of different components whose test points (same rule)
 //    are all inside; a connected shape thus gets a connected skeleton unless no such segment
