@@ -221,9 +221,14 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
         auto winding = std::make_shared<const WindingNumber>(out.surface.mesh);
         st = opt.generator == Generator::voronoi ? mesh_voronoi_candidates(opt, monitor, *winding, threads, out)
                                                  : mesh_random_candidates(opt, monitor, *winding, threads, out);
+        // open meshes: no ball reaches out through a hole (candidates_holes.cpp)
+        const Mesh caps = hole_caps(out.surface.mesh);
+        std::unique_ptr<const MeshDistance> cap_distance;
+        if (!caps.triangles.empty()) cap_distance = std::make_unique<const MeshDistance>(caps);
+        if (st.ok() && cap_distance && !clamp_to_hole_caps(out, *cap_distance, threads, monitor)) st = cancelled();
         if (st.ok()) {
             auto distance = std::make_shared<const MeshDistance>(out.surface.mesh);
-            out.fallback_balls = add_fallback_balls(out, *winding, *distance);
+            out.fallback_balls = add_fallback_balls(out, *winding, *distance, cap_distance.get());
             out.winding = std::move(winding);
             out.distance = std::move(distance);
         }

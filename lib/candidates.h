@@ -49,6 +49,7 @@ struct CandidateSet {
     std::shared_ptr<const MeshDistance> distance;
     std::vector<Ball> balls;              // P, undilated medial radii
     size_t fallback_balls = 0;            // of which added by add_fallback_balls (at the end)
+    size_t hole_clamped = 0;              // radii clamped by clamp_to_hole_caps (open meshes)
     double time_sampling_s = 0, time_candidates_s = 0;
 };
 
@@ -58,6 +59,14 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
 // Every cover sample that no candidate reaches within kFallbackReach gets a small inner ball
 // under it (candidates_fallback.cpp), so a cover exists for every offset delta >= kFallbackReach.
 constexpr double kFallbackReach = 0.005;   // unit-cube units (0.5 % of the longest bbox side)
-size_t add_fallback_balls(CandidateSet& set, const WindingNumber& winding, const MeshDistance& distance);
+// `caps` (optional): distances to the hole caps of an open mesh, which also bound the radius.
+size_t add_fallback_balls(CandidateSet& set, const WindingNumber& winding, const MeshDistance& distance,
+                          const MeshDistance* caps = nullptr);
+
+// Open meshes (candidates_holes.cpp): every closed boundary loop is capped by a fan from its
+// centroid (for distances only) and every candidate's radius is clamped to its distance to the
+// caps, so no ball reaches out through a hole. Closed meshes are unchanged. False if cancelled.
+Mesh hole_caps(const Mesh& mesh);
+bool clamp_to_hole_caps(CandidateSet& set, const MeshDistance& caps, int threads, const Monitor& monitor);
 
 }  // namespace ca

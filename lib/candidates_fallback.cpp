@@ -8,7 +8,8 @@
 // shrinking-ball construction of the medial axis). Its dilated radius reaches the sample for every
 // offset delta >= kFallbackReach / 2, so a cover exists for every delta >= kFallbackReach. The
 // optimiser uses such balls only where nothing else covers the sample. Samples where no point below the surface is inside (open
-// sheets, non-orientable strips) get no ball and are still reported as uncoverable.
+// sheets, non-orientable strips) get no ball and are still reported as uncoverable. On an open
+// mesh the radius is also the distance to the hole caps (candidates_holes.cpp).
 #include "candidates.h"
 
 #include "coverage.h"
@@ -17,7 +18,14 @@
 
 namespace ca {
 
-size_t add_fallback_balls(CandidateSet& set, const WindingNumber& winding, const MeshDistance& distance) {
+size_t add_fallback_balls(CandidateSet& set, const WindingNumber& winding, const MeshDistance& distance,
+                          const MeshDistance* caps) {
+    // radius at c: distance to the surface, and to the hole caps of an open mesh (a ball under a
+    // hole must not grow out through it)
+    auto radius_at = [&](const Vec3& c) {
+        const double r = distance.distance(c);
+        return caps ? caps->distance_below(c, r) : r;
+    };
     const Mesh& mesh = set.surface.mesh;
     if (mesh.triangles.empty() || set.cover_samples.empty()) return 0;
     std::vector<Vec3> centers(set.balls.size());
@@ -46,7 +54,7 @@ size_t add_fallback_balls(CandidateSet& set, const WindingNumber& winding, const
         for (; depth > 1e-4 * kFallbackReach; depth *= 0.25) {
             const Vec3 c = s - depth * n;
             if (!winding.inside(c)) continue;
-            best = {c, distance.distance(c)};
+            best = {c, radius_at(c)};
             break;
         }
         if (!(best.radius > 0)) continue;
@@ -55,7 +63,7 @@ size_t add_fallback_balls(CandidateSet& set, const WindingNumber& winding, const
         auto touches_at_s = [&](double t, Ball& ball) {
             const Vec3 c = s - t * n;
             if (!winding.inside(c)) return false;
-            const double r = distance.distance(c);
+            const double r = radius_at(c);
             if (t - r > 0.5 * kFallbackReach) return false;
             ball = {c, r};
             return true;

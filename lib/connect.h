@@ -23,6 +23,10 @@
 //    counts as inside (those balls are inner balls); any other point must be inside the shape:
 //    generalised winding number > 1/2 for meshes; for point clouds, inside 0.95 x one of its 16
 //    nearest candidate balls.
+//    On the medial route the removals are replayed as elementary collapses: a removed triangle
+//    whose removed edges were all used by earlier removed triangles also loses its longest edge
+//    that is on no kept triangle, so removal adds no loop (the medial mesh has the shape's
+//    topology; genus-3 gave b1 = 4 or 5 on some covers).
 //    One failing point removes the element (InsideTest, connect_inside.cpp: the rule is evaluated
 //    exactly, but most winding-number and distance queries are skipped by a Lipschitz bound and
 //    by surface-free balls on closed meshes). On the medial route (meshes), removal and hole filling also require the
@@ -35,12 +39,19 @@
 //  * fill_holes: holes bounded by 3 or 4 edges are filled with triangles (and chords) when
 //    those pass the same inside test (the power diagram misses triangles where sample cells
 //    come between the balls; a real tunnel cannot be spanned by inside triangles).
+//    On the medial route filling must not span one of the loops left after removal (a triangle
+//    over a thin handle passes when its own balls cover the hole: fertility lost 2 of 4 loops):
+//    added triangles are undone, last first, while b1 is below the smaller of its values
+//    before removal and before filling.
 //  * reconnect: if the skeleton has several components, they are joined Kruskal-style by the
 //    shortest segments between balls of different components whose test points (same rule)
 //    are all inside; a connected shape thus gets a connected skeleton unless no such segment
 //    exists. On the medial route a first pass takes only segments that also pass the envelope
-//    rule, the centre-line pass then joins what is left (same components in the end). Only
-//    edges are added (each joins two components, so b1 does not change).
+//    rule, the centre-line pass then joins what is left. Then, on meshes, components whose
+//    balls lie on one connected piece of the surface (the piece of the triangle nearest to each
+//    centre) are joined by segments whose test points are at most delta/2, then delta outside
+//    (pig: a small ball in the tail stayed alone); disjoint pieces stay apart. Only edges are
+//    added (each joins two components, so b1 does not change).
 #pragma once
 #include "candidates.h"
 #include "selection.h"

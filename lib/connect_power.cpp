@@ -13,7 +13,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numeric>
+#include <set>
 
 namespace ca {
 
@@ -67,8 +69,8 @@ Status connect_power(const CandidateSet& set, const Selection& sel, const Monito
 
 // Removes the triangles, then the edges (with their triangles), that fail the inside test.
 // `failed` gets the faces that failed it themselves (sorted), which hole filling need not retest.
-bool remove_outside(const InsideTest& test, double h, double tol, int threads, const Monitor& monitor, Skeleton& s,
-                    std::vector<Tri>& failed) {
+bool remove_outside(const InsideTest& test, double h, double tol, bool collapse, int threads, const Monitor& monitor,
+                    Skeleton& s, std::vector<Tri>& failed) {
     std::vector<uint8_t> face_ok(s.faces.size(), 1), edge_ok(s.edges.size(), 1);
     if (!parallel_for(s.edges.size(), threads, 1024, monitor, "connect", [&](size_t b, size_t e) {
             for (size_t i = b; i < e; ++i)
@@ -94,6 +96,35 @@ bool remove_outside(const InsideTest& test, double h, double tol, int threads, c
         const Tri& f = s.faces[i];
         if (!face_ok[i]) failed.push_back(f);
         if (face_ok[i] && has_edge(f[0], f[1]) && has_edge(f[0], f[2]) && has_edge(f[1], f[2])) faces.push_back(f);
+    }
+    if (collapse) {
+        // Removing a triangle can leave a new loop (its boundary, or with the other triangles of a
+        // removed edge, a longer cycle). The removals are replayed as elementary collapses (same
+        // homotopy type): each removed triangle, in order, is collapsed through one of its removed
+        // edges that no earlier removed triangle used, or else through its longest edge that is on
+        // no kept triangle, which is then removed too. The medial mesh has the shape's topology, so
+        // the loops that removal alone would add are spurious (genus-3 gave b1 = 4 or 5 on some covers).
+        std::map<std::array<uint32_t, 2>, int> on_faces;
+        for (const Tri& f : faces)   // sorted vertices
+            ++on_faces[{f[0], f[1]}], ++on_faces[{f[0], f[2]}], ++on_faces[{f[1], f[2]}];
+        std::set<std::array<uint32_t, 2>> alive(edges.begin(), edges.end()), used;
+        for (const Tri& f : s.faces) {
+            if (std::binary_search(faces.begin(), faces.end(), f)) continue;
+            const std::array<uint32_t, 2> fe[3] = {{f[0], f[1]}, {f[0], f[2]}, {f[1], f[2]}};
+            bool done = false;
+            for (int a = 0; a < 3 && !done; ++a)
+                if (!alive.count(fe[a]) && !used.count(fe[a])) used.insert(fe[a]), done = true;
+            if (done) continue;
+            int best = -1;
+            double best_len = -1;
+            for (int a = 0; a < 3; ++a) {
+                if (!alive.count(fe[a]) || on_faces.count(fe[a])) continue;
+                const double len = (s.balls[fe[a][0]].center - s.balls[fe[a][1]].center).squaredNorm();
+                if (len > best_len) best_len = len, best = a;
+            }
+            if (best >= 0) alive.erase(fe[best]), used.insert(fe[best]);
+        }
+        edges.assign(alive.begin(), alive.end());
     }
     s.edges = std::move(edges);   // still sorted (canonical input)
     s.faces = std::move(faces);
@@ -182,7 +213,34 @@ bool fill_small_holes(const InsideTest& test, double h, double tol, int threads,
 // shortest one whose cone bulges out (two-sided Hausdorff at a 5 s cover: bear 3.50 -> 2.94 %,
 // duck 3.17 -> 2.37 %, vase 3.76 -> 2.83 %); the second pass uses the centre-line rule alone. Both passes accept only edges between components, so the
 // components reached and b1 are those of the centre-line rule alone.
-void reconnect(const InsideTest& test, double h, double tol, Skeleton& s) {
+// Then, on a mesh, components whose balls lie on one connected piece of the surface (the piece of
+// the triangle nearest to a ball's centre; vertices welded by position) are still joined, Kruskal
+// order again, by segments at most 2h, then 4h (= delta) outside the surface (pig: a small ball
+// in the tail, every straight segment to the rest leaves by 0.007-0.02 with h = 0.005): a
+// connected shape gets a connected skeleton, disjoint pieces stay apart.
+std::vector<uint32_t> surface_piece(const CandidateSet& set, const Skeleton& s) {
+    const Mesh& mesh = set.surface.mesh;
+    std::vector<uint32_t> piece(s.balls.size(), 0);
+    if (mesh.triangles.empty()) return piece;
+    std::map<std::array<double, 3>, uint32_t> id_of;
+    UnionFind uf(mesh.vertices.size());
+    std::vector<uint32_t> weld(mesh.vertices.size());
+    for (size_t i = 0; i < mesh.vertices.size(); ++i) {
+        const Vec3& v = mesh.vertices[i];
+        weld[i] = id_of.emplace(std::array<double, 3>{v.x(), v.y(), v.z()}, uint32_t(i)).first->second;
+    }
+    for (const Tri& t : mesh.triangles) uf.unite(weld[t[0]], weld[t[1]]), uf.unite(weld[t[0]], weld[t[2]]);
+    const std::shared_ptr<const MeshDistance> own = set.distance ? nullptr : std::make_shared<const MeshDistance>(mesh);
+    const MeshDistance& distance = set.distance ? *set.distance : *own;
+    for (size_t i = 0; i < s.balls.size(); ++i) {
+        uint32_t tri = 0;
+        distance.distance(s.balls[i].center, nullptr, &tri);
+        piece[i] = uf.find(weld[mesh.triangles[tri][0]]);
+    }
+    return piece;
+}
+
+void reconnect(const CandidateSet& set, const InsideTest& test, double h, double tol, Skeleton& s) {
     const uint32_t n = uint32_t(s.balls.size());
     UnionFind uf(n);
     size_t components = n;
@@ -205,6 +263,52 @@ void reconnect(const InsideTest& test, double h, double tol, Skeleton& s) {
             s.edges.push_back({p.i, p.j});
             --components;
         }
+    if (components <= 1 || set.surface.mesh.triangles.empty()) return;
+    const std::vector<uint32_t> piece = surface_piece(set, s);
+    for (double outside : {2 * h, 4 * h})
+        for (const Pair& p : pairs) {
+            if (components <= 1) return;
+            if (piece[p.i] != piece[p.j] || uf.find(p.i) == uf.find(p.j)) continue;
+            if (!test.segment_inside(s.balls[p.i], s.balls[p.j], h, -1, outside)) continue;
+            uf.unite(p.i, p.j);
+            s.edges.push_back({p.i, p.j});
+            --components;
+        }
+}
+
+// Medial route: the medial mesh has the shape's loops and the collapsing removal keeps them, so
+// hole filling must not span one (a triangle over a thin handle passes the inside test when its
+// own balls cover the handle's hole; fertility lost 2 of its 4 loops). The triangles filling
+// added are undone, last first, while b1 is below `target` and undoing one raises it; then added
+// chords on no triangle are dropped while b1 is above `target` and dropping one lowers it.
+// `target` is the smaller of b1 before removal and before filling: loops that removal added
+// (duck: one, where a removed edge left a cycle) may still be filled.
+void keep_loops(const Skeleton& before, long target, Skeleton& s) {
+    long b1 = topology(s).betti1;
+    if (b1 >= target) return;
+    std::vector<Tri> added;
+    std::set_difference(s.faces.begin(), s.faces.end(), before.faces.begin(), before.faces.end(),
+                        std::back_inserter(added));
+    for (size_t i = added.size(); i-- > 0 && b1 < target;) {
+        Skeleton t = s;
+        t.faces.erase(std::lower_bound(t.faces.begin(), t.faces.end(), added[i]));
+        const long b = topology(t).betti1;
+        if (b > b1) s = std::move(t), b1 = b;
+    }
+    std::vector<std::array<uint32_t, 2>> chords;
+    std::set_difference(s.edges.begin(), s.edges.end(), before.edges.begin(), before.edges.end(),
+                        std::back_inserter(chords));
+    for (size_t i = chords.size(); i-- > 0 && b1 > target;) {
+        bool on_face = false;
+        for (const Tri& f : s.faces)
+            on_face = on_face || ((f[0] == chords[i][0] || f[1] == chords[i][0] || f[2] == chords[i][0]) &&
+                                  (f[0] == chords[i][1] || f[1] == chords[i][1] || f[2] == chords[i][1]));
+        if (on_face) continue;
+        Skeleton t = s;
+        t.edges.erase(std::lower_bound(t.edges.begin(), t.edges.end(), chords[i]));
+        const TopologyStats ts = topology(t);
+        if (ts.betti1 < b1 && ts.components == topology(s).components) s = std::move(t), b1 = ts.betti1;
+    }
 }
 
 }  // namespace
@@ -239,10 +343,18 @@ Status connect_balls(const CandidateSet& set, const Selection& sel, const Connec
         // centre-line rule applies.
         const double tol = opt.method == ConnectMethod::medial ? (sel.delta > 0 ? sel.delta : 0.02) : -1;
         std::vector<Tri> failed;   // faces that failed the removal test
-        if (opt.remove_outside && !remove_outside(test, h, tol, threads, monitor, out, failed)) return cancelled();
+        const long raw_b1 = opt.method == ConnectMethod::medial && opt.fill_holes ? topology(out).betti1 : 0;
+        if (opt.remove_outside && !remove_outside(test, h, tol, opt.method == ConnectMethod::medial, threads, monitor, out, failed)) return cancelled();
         if (!monitor.report("connect", 0.75)) return cancelled();
-        if (opt.fill_holes && !fill_small_holes(test, h, tol, threads, monitor, failed, out)) return cancelled();
-        if (opt.reconnect) reconnect(test, h, tol, out);
+        if (opt.fill_holes) {
+            const bool medial = opt.method == ConnectMethod::medial;
+            const Skeleton before = medial ? out : Skeleton{};
+            // loops of the medial mesh that survived removal (not those that removal added)
+            const long target = medial ? std::min(raw_b1, topology(out).betti1) : 0;
+            if (!fill_small_holes(test, h, tol, threads, monitor, failed, out)) return cancelled();
+            if (medial) keep_loops(before, target, out);
+        }
+        if (opt.reconnect) reconnect(set, test, h, tol, out);
         canonicalize(out);
     }
     if (!monitor.report("connect", 1)) return cancelled();

@@ -7,9 +7,11 @@
 #include "distance.h"
 #include "kdtree.h"
 #include "sampling.h"
+#include "selection.h"
 #include "support/shapes.h"
 #include "winding.h"
 
+#include <algorithm>
 #include <cmath>
 
 TEST_CASE("fallback balls: every unreachable sample gets an inner ball that reaches it") {
@@ -58,5 +60,42 @@ TEST_CASE("Voronoi candidates are empty balls: radius <= distance to the nearest
         REQUIRE(tree.nearest(b.center, 1, &idx, &d2) == 1);
         CHECK(b.radius <= std::sqrt(d2) + 1e-12);
         CHECK(winding(b.center) > 0.5);
+    }
+}
+
+TEST_CASE("open mesh: no candidate ball reaches out through a hole; closed meshes are unchanged") {
+    // A sphere (axis x) without its cap beyond x = 0.6 R: Voronoi balls under the hole would reach
+    // R - 0.6 R = 0.2 of the diameter beyond the hole's plane (the fallback balls too).
+    const ca::Mesh closed = shapes::sphere(1.0, 24, 48);
+    CHECK(ca::hole_caps(closed).triangles.empty());
+    ca::Mesh open = closed;
+    open.triangles.clear();
+    for (const ca::Tri& t : closed.triangles)
+        if ((closed.vertices[t[0]].x() + closed.vertices[t[1]].x() + closed.vertices[t[2]].x()) / 3 < 0.6)
+            open.triangles.push_back(t);
+    const ca::Mesh caps = ca::hole_caps(open);
+    CHECK(caps.triangles.size() == 48);   // one loop of 48 edges
+    for (const ca::Mesh* m : {&closed, static_cast<const ca::Mesh*>(&open)}) {
+        ca::Surface surface;
+        REQUIRE(ca::prepare_surface(*m, {}, surface).ok());
+        ca::CandidateSet set;
+        REQUIRE(ca::generate_candidates(std::move(surface), {}, ca::Monitor{}, set).ok());
+        if (m == &closed) {
+            CHECK(set.hole_clamped == 0);
+            continue;
+        }
+        CHECK(set.hole_clamped > 0);
+        double plane = -1e9;   // the rim's x, internal units
+        for (const ca::Tri& t : set.surface.mesh.triangles)
+            for (uint32_t v : t) plane = std::max(plane, set.surface.mesh.vertices[v].x());
+        double beyond = 0;
+        for (const ca::Ball& b : set.balls) beyond = std::max(beyond, b.center.x() + b.radius - plane);
+        CHECK(beyond < 0.005);
+        // every sample stays coverable
+        ca::SelectOptions sopt;
+        sopt.cover.solver = ca::Solver::greedy;
+        ca::Selection sel;
+        const ca::Status st = ca::select_balls(set, sopt, ca::Monitor{}, sel);
+        CHECK_MESSAGE(st.ok(), st.message);
     }
 }

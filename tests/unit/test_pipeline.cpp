@@ -18,9 +18,11 @@ struct Run {
     ca::Skeleton skeleton;
 };
 
-// Runs the three steps; balls come back in the mesh's own units.
+// Runs the three steps; balls come back in the mesh's own units. The exact cover runs without a
+// time limit and must be proven optimal, so that results do not depend on the machine's load.
 Run run(ca::Mesh mesh, ca::CandidateOptions copt = {}, ca::SelectOptions sopt = {}) {
     Run r;
+    sopt.cover.time_limit_s = 0;
     ca::Surface surface;
     REQUIRE(ca::prepare_surface(std::move(mesh), {}, surface).ok());
     ca::Monitor monitor;
@@ -28,6 +30,7 @@ Run run(ca::Mesh mesh, ca::CandidateOptions copt = {}, ca::SelectOptions sopt = 
     REQUIRE_MESSAGE(st.ok(), st.message);
     st = ca::select_balls(r.set, sopt, monitor, r.sel);
     REQUIRE_MESSAGE(st.ok(), st.message);
+    if (sopt.cover.solver == ca::Solver::exact) REQUIRE(r.sel.cover.proven_optimal == 1);
     st = ca::connect_balls(r.set, r.sel, {}, monitor, r.skeleton);
     REQUIRE_MESSAGE(st.ok(), st.message);
     for (ca::Ball& b : r.skeleton.balls) {
