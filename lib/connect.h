@@ -47,11 +47,8 @@
 //    shortest segments between balls of different components whose test points (same rule)
 //    are all inside; a connected shape thus gets a connected skeleton unless no such segment
 //    exists. On the medial route a first pass takes only segments that also pass the envelope
-//    rule, the centre-line pass then joins what is left. Then, on meshes, components whose
-//    balls lie on one connected piece of the surface (the piece of the triangle nearest to each
-//    centre) are joined by segments whose test points are at most delta/2, then delta outside
-//    (pig: a small ball in the tail stayed alone); disjoint pieces stay apart. Only edges are
-//    added (each joins two components, so b1 does not change).
+//    rule, the centre-line pass then joins what is left (same components in the end). Only
+//    edges are added (each joins two components, so b1 does not change).
 #pragma once
 #include "candidates.h"
 #include "selection.h"

@@ -213,34 +213,7 @@ bool fill_small_holes(const InsideTest& test, double h, double tol, int threads,
 // shortest one whose cone bulges out (two-sided Hausdorff at a 5 s cover: bear 3.50 -> 2.94 %,
 // duck 3.17 -> 2.37 %, vase 3.76 -> 2.83 %); the second pass uses the centre-line rule alone. Both passes accept only edges between components, so the
 // components reached and b1 are those of the centre-line rule alone.
-// Then, on a mesh, components whose balls lie on one connected piece of the surface (the piece of
-// the triangle nearest to a ball's centre; vertices welded by position) are still joined, Kruskal
-// order again, by segments at most 2h, then 4h (= delta) outside the surface (pig: a small ball
-// in the tail, every straight segment to the rest leaves by 0.007-0.02 with h = 0.005): a
-// connected shape gets a connected skeleton, disjoint pieces stay apart.
-std::vector<uint32_t> surface_piece(const CandidateSet& set, const Skeleton& s) {
-    const Mesh& mesh = set.surface.mesh;
-    std::vector<uint32_t> piece(s.balls.size(), 0);
-    if (mesh.triangles.empty()) return piece;
-    std::map<std::array<double, 3>, uint32_t> id_of;
-    UnionFind uf(mesh.vertices.size());
-    std::vector<uint32_t> weld(mesh.vertices.size());
-    for (size_t i = 0; i < mesh.vertices.size(); ++i) {
-        const Vec3& v = mesh.vertices[i];
-        weld[i] = id_of.emplace(std::array<double, 3>{v.x(), v.y(), v.z()}, uint32_t(i)).first->second;
-    }
-    for (const Tri& t : mesh.triangles) uf.unite(weld[t[0]], weld[t[1]]), uf.unite(weld[t[0]], weld[t[2]]);
-    const std::shared_ptr<const MeshDistance> own = set.distance ? nullptr : std::make_shared<const MeshDistance>(mesh);
-    const MeshDistance& distance = set.distance ? *set.distance : *own;
-    for (size_t i = 0; i < s.balls.size(); ++i) {
-        uint32_t tri = 0;
-        distance.distance(s.balls[i].center, nullptr, &tri);
-        piece[i] = uf.find(weld[mesh.triangles[tri][0]]);
-    }
-    return piece;
-}
-
-void reconnect(const CandidateSet& set, const InsideTest& test, double h, double tol, Skeleton& s) {
+void reconnect(const InsideTest& test, double h, double tol, Skeleton& s) {
     const uint32_t n = uint32_t(s.balls.size());
     UnionFind uf(n);
     size_t components = n;
@@ -259,17 +232,6 @@ void reconnect(const CandidateSet& set, const InsideTest& test, double h, double
             if (components <= 1) break;
             if (uf.find(p.i) == uf.find(p.j)) continue;
             if (!test.segment_inside(s.balls[p.i], s.balls[p.j], h, pass == 0 ? tol : -1, h)) continue;
-            uf.unite(p.i, p.j);
-            s.edges.push_back({p.i, p.j});
-            --components;
-        }
-    if (components <= 1 || set.surface.mesh.triangles.empty()) return;
-    const std::vector<uint32_t> piece = surface_piece(set, s);
-    for (double outside : {2 * h, 4 * h})
-        for (const Pair& p : pairs) {
-            if (components <= 1) return;
-            if (piece[p.i] != piece[p.j] || uf.find(p.i) == uf.find(p.j)) continue;
-            if (!test.segment_inside(s.balls[p.i], s.balls[p.j], h, -1, outside)) continue;
             uf.unite(p.i, p.j);
             s.edges.push_back({p.i, p.j});
             --components;
@@ -354,7 +316,7 @@ Status connect_balls(const CandidateSet& set, const Selection& sel, const Connec
             if (!fill_small_holes(test, h, tol, threads, monitor, failed, out)) return cancelled();
             if (medial) keep_loops(before, target, out);
         }
-        if (opt.reconnect) reconnect(set, test, h, tol, out);
+        if (opt.reconnect) reconnect(test, h, tol, out);
         canonicalize(out);
     }
     if (!monitor.report("connect", 1)) return cancelled();
