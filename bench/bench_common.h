@@ -59,6 +59,26 @@ struct PipelineRun {
     ca_evaluation alt_eval{};
 };
 
+// Size and topology of a skeleton, and with `evaluate` its Hausdorff distances to the surface.
+inline ca_status measure_skeleton(ca_context* ctx, const ca_surface_view& v, const ca_skeleton* sk, bool evaluate,
+                                  size_t& edges, size_t& faces, size_t& components, long& betti1, ca_evaluation& eval) {
+    ca_skeleton_stats ks;
+    ks.struct_size = sizeof ks;
+    ca_skeleton_stats_get(sk, &ks);
+    edges = ks.edges;
+    faces = ks.faces;
+    components = ks.components;
+    betti1 = long(ks.betti1);
+    if (!evaluate) return CA_OK;
+    ca_skeleton_view view;
+    ca_skeleton_view_init(&view);
+    ca_skeleton_get_view(sk, &view);
+    ca_evaluate_options eo;
+    ca_evaluate_options_init(&eo);
+    eval.struct_size = sizeof eval;
+    return ca_evaluate(ctx, &v, &view, &eo, &eval);
+}
+
 inline PipelineRun run_pipeline(const caio::MeshData& mesh, const ca_candidate_options& co, const ca_select_options& so,
                                 const ca_connect_options& cop, bool evaluate = false,
                                 const ca_connect_options* alt = nullptr) {
@@ -97,50 +117,19 @@ inline PipelineRun run_pipeline(const caio::MeshData& mesh, const ca_candidate_o
         r.t_connect = seconds_since(t);
     }
     if (r.status == CA_OK) {
-        ca_skeleton_stats ks;
-        ks.struct_size = sizeof ks;
-        ca_skeleton_stats_get(sk, &ks);
-        r.edges = ks.edges;
-        r.faces = ks.faces;
-        r.components = ks.components;
-        r.betti1 = long(ks.betti1);
-        if (evaluate) {
-            ca_skeleton_view view;
-            ca_skeleton_view_init(&view);
-            ca_skeleton_get_view(sk, &view);
-            ca_evaluate_options eo;
-            ca_evaluate_options_init(&eo);
-            r.eval.struct_size = sizeof r.eval;
-            t = std::chrono::steady_clock::now();
-            r.status = ca_evaluate(ctx, &v, &view, &eo, &r.eval);
-            r.t_evaluate = seconds_since(t);
-            if (r.status != CA_OK) r.message = ca_context_last_error(ctx);
-        }
+        t = std::chrono::steady_clock::now();
+        r.status = measure_skeleton(ctx, v, sk, evaluate, r.edges, r.faces, r.components, r.betti1, r.eval);
+        r.t_evaluate = seconds_since(t);
         ca_skeleton* ak = nullptr;
         if (r.status == CA_OK && alt) {
             t = std::chrono::steady_clock::now();
             r.status = ca_connect(ctx, set, sel, alt, &ak);
             r.t_alt_connect = seconds_since(t);
-            if (r.status == CA_OK) {
-                ca_skeleton_stats as;
-                as.struct_size = sizeof as;
-                ca_skeleton_stats_get(ak, &as);
-                r.alt_edges = as.edges;
-                r.alt_faces = as.faces;
-                r.alt_components = as.components;
-                r.alt_betti1 = long(as.betti1);
-                if (evaluate) {
-                    ca_skeleton_view view;
-                    ca_skeleton_view_init(&view);
-                    ca_skeleton_get_view(ak, &view);
-                    ca_evaluate_options eo;
-                    ca_evaluate_options_init(&eo);
-                    r.alt_eval.struct_size = sizeof r.alt_eval;
-                    r.status = ca_evaluate(ctx, &v, &view, &eo, &r.alt_eval);
-                }
-            }
-            if (r.status != CA_OK) r.message = ca_context_last_error(ctx);
+            if (r.status == CA_OK)
+                r.status = measure_skeleton(ctx, v, ak, evaluate, r.alt_edges, r.alt_faces, r.alt_components,
+                                            r.alt_betti1, r.alt_eval);
         }
+        if (r.status != CA_OK) r.message = ca_context_last_error(ctx);
         ca_skeleton_destroy(ak);
     } else {
         r.message = ca_context_last_error(ctx);
