@@ -455,6 +455,7 @@ void ca_select_options_init(ca_select_options* o) {
     o->time_limit_s = 60;
     o->target_tolerance = 1e-4;
     o->divide_threshold = 100000;
+    o->effort = CA_EFFORT_FAST;
 }
 
 ca_status ca_select(ca_context* ctx, const ca_candidate_set* set, const ca_select_options* options, ca_selection** out) {
@@ -470,6 +471,8 @@ ca_status ca_select(ca_context* ctx, const ca_candidate_set* set, const ca_selec
         if (o.solver < CA_SOLVER_EXACT || o.solver > CA_SOLVER_CAPP)
             return ca::fail(Code::invalid_argument, "unknown solver " + std::to_string(o.solver));
         if (std::isnan(o.time_limit_s)) return ca::fail(Code::invalid_argument, "time_limit_s is NaN");
+        if (o.effort != CA_EFFORT_FAST && o.effort != CA_EFFORT_PROVE)
+            return ca::fail(Code::invalid_argument, "unknown effort " + std::to_string(o.effort));
         if (o.target_count && !(std::isfinite(o.target_tolerance) && o.target_tolerance > 0))
             return ca::fail(Code::invalid_argument, "target_tolerance must be a finite number > 0");
         ca::SelectOptions so;
@@ -479,6 +482,7 @@ ca_status ca_select(ca_context* ctx, const ca_candidate_set* set, const ca_selec
         so.skip_uncoverable = o.skip_uncoverable != 0;
         so.cover.solver = static_cast<ca::Solver>(o.solver);
         so.cover.time_limit_s = o.time_limit_s;
+        so.cover.effort = static_cast<ca::Effort>(o.effort);
         so.target_count = o.target_count;
         so.target_tolerance = o.target_tolerance;
         so.dc_threshold = o.divide_threshold;

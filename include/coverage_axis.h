@@ -194,9 +194,15 @@ CA_API ca_status ca_candidate_set_copy(const ca_candidate_set* set, double* cent
 #define CA_DILATE_OFFSET 0 /* r' = r + delta * reference_length */
 #define CA_DILATE_SCALE  1 /* r' = r * scale */
 
-#define CA_SOLVER_EXACT  0 /* reduction + CBC branch and bound: proven optimum within the time limit */
+#define CA_SOLVER_EXACT  0 /* reduction, LP bound, local search, CBC branch and bound (see CA_EFFORT_*) */
 #define CA_SOLVER_GREEDY 1 /* classic greedy + redundancy removal */
 #define CA_SOLVER_CAPP   2 /* Coverage Axis++ score greedy + redundancy removal */
+
+/* Effort of the exact solver (deterministic for a seed unless the time limit ends the work). */
+#define CA_EFFORT_FAST  0 /* default: LP bound + local search; CBC only when one ball separates the
+                             cover from the bound on a small kernel, with a node limit; otherwise the
+                             cover is returned unproven with its bound and gap */
+#define CA_EFFORT_PROVE 1 /* CBC until the cover is proven optimal or the time limit ends it */
 
 typedef struct ca_select_options {
     uint32_t struct_size;        /* sizeof(ca_select_options) */
@@ -204,7 +210,8 @@ typedef struct ca_select_options {
     double delta;                /* offset, fraction of the longest bbox side; default 0.02 */
     double scale;                /* scale factor; default 1.5 */
     int32_t solver;              /* CA_SOLVER_*; default EXACT */
-    double time_limit_s;         /* exact solver wall-clock budget; default 60; <= 0: no limit */
+    double time_limit_s;         /* exact solver wall-clock budget (a safety net: results then depend on
+                                    the machine's speed); default 60; <= 0: no limit */
     int32_t skip_uncoverable;    /* 0 (default): uncoverable samples fail with CA_ERROR_UNCOVERABLE;
                                     1: they are ignored and listed in the result */
     /* Optional masks (NULL = none), non-zero = set; borrowed during the call. */
@@ -217,6 +224,7 @@ typedef struct ca_select_options {
     double target_tolerance;     /* bisection tolerance on delta (fraction of L) or scale; default 1e-4 */
     uint32_t divide_threshold;   /* more samples than this: divide and conquer (paper 8.1);
                                     default 100000; 0 = never */
+    int32_t effort;              /* CA_EFFORT_*; default FAST */
 } ca_select_options;
 
 CA_API void ca_select_options_init(ca_select_options* options);

@@ -14,7 +14,9 @@
 // (setcover_local.cpp, a quarter of the remaining budget) for a better incumbent, then
 // reduced-cost fixing (drop every column that no cover smaller than the incumbent can
 // contain), reduction again, and CBC on what is left with the incumbent as cutoff and CBC's
-// own heuristics off (it only has to prove). Row generation (exact ILPs on growing row subsets,
+// own heuristics off (it only has to prove). With the fast effort (the default) CBC runs only
+// when one ball separates incumbent and bound on a small kernel, with a node limit (see Effort);
+// otherwise the local-search cover is returned with its bound. Row generation (exact ILPs on growing row subsets,
 // see row_generation) runs first only on request (CoverOptions::row_generation) or when the
 // component is too large for one CBC solve.
 // Heuristic kernel solve: greedy / Coverage Axis++.
@@ -589,7 +591,7 @@ constexpr uint64_t kLocalSearchSeed = 3;
 constexpr uint32_t kWholeCbcMaxRows = 4000;
 
 ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bool has_deadline, int threads,
-                                bool row_gen, const Monitor& monitor) {
+                                bool row_gen, Effort effort, const Monitor& monitor) {
     ComponentResult out;
     out.sel = greedy_cover(P);
     remove_redundant(P.cptr, P.crow, P.R, nullptr, nullptr, out.sel);
@@ -609,7 +611,7 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
     if (std::ceil(L.bound - 1e-6) < double(L.best.size()) && !monitor.cancelled()) {
         double lp_limit = 0;
         if (has_deadline) lp_limit = std::max(1e-3, std::chrono::duration<double>(deadline - Clock::now()).count() / 4);
-        const std::vector<double> duals = lp_duals(P, lp_limit);
+        const std::vector<double> duals = lp_duals_core(P, L.cost, lp_limit);
         lp_ok = !duals.empty();
         if (!duals.empty()) {
             // bound and costs at the duals, then small steps around them for the reduced-cost greedy
@@ -653,6 +655,9 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
         out.proven = true;
         return out;
     }
+    // Fast effort: CBC only for a one-ball gap on a small kernel, with a node limit.
+    const bool fast = effort == Effort::fast;
+    if (fast && (double(inc) - out.lb > 1.0 || K.R > kFastCbcMaxRows)) return out;
     double remaining = 0;
     if (has_deadline) {
         remaining = std::chrono::duration<double>(deadline - Clock::now()).count();
@@ -673,7 +678,7 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
     // its share, or one with more than kWholeCbcMaxRows rows, CBC never gets the whole of it:
     // row generation (small sub-problems) keeps the budget.
     const bool whole_cbc = lp_ok && K.R <= kWholeCbcMaxRows;
-    if (row_gen || !whole_cbc) {
+    if (!fast && (row_gen || !whole_cbc)) {
         // Row generation first, with part of the budget; if it does not finish, one CBC solve
         // of the whole of K takes over with its incumbent.
         Clock::time_point rg_deadline = deadline;
@@ -706,7 +711,7 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
     }
     CbcOutcome cbc;
     try {
-        cbc = run_cbc(K, kbest, has_deadline ? remaining : 0.0, threads, false, false);
+        cbc = run_cbc(K, kbest, has_deadline ? remaining : 0.0, threads, false, false, fast ? kFastCbcNodes : 0);
     } catch (const std::bad_alloc&) {
         throw;
     } catch (...) {
@@ -733,6 +738,8 @@ Status solve_impl(const Coverage& cov, const CoverOptions& opt, bool skip_uncove
     if (opt.solver != Solver::exact && opt.solver != Solver::greedy && opt.solver != Solver::capp)
         return fail(Code::invalid_argument, "set cover: unknown solver");
     if (std::isnan(opt.time_limit_s)) return fail(Code::invalid_argument, "set cover: time limit is NaN");
+    if (opt.effort != Effort::fast && opt.effort != Effort::prove)
+        return fail(Code::invalid_argument, "set cover: unknown effort");
     if (opt.solver == Solver::capp) {
         if (!opt.centers || !opt.radii || opt.centers->size() != n || opt.radii->size() != n)
             return fail(Code::invalid_argument, "set cover: the capp solver needs centers and radii for every ball");
@@ -779,7 +786,8 @@ Status solve_impl(const Coverage& cov, const CoverOptions& opt, bool skip_uncove
             klb = 0;
             for (const Problem& Q : split_components(P)) {
                 if (monitor.cancelled()) return fail(Code::cancelled, "set cover: cancelled");
-                const ComponentResult cr = solve_component(Q, deadline, has_deadline, opt.threads, opt.row_generation, monitor);
+                const ComponentResult cr =
+                    solve_component(Q, deadline, has_deadline, opt.threads, opt.row_generation, opt.effort, monitor);
                 for (uint32_t c : cr.sel) ksel.push_back(Q.col_id[c]);
                 klb += cr.lb;
                 proven = proven && cr.proven;

@@ -13,6 +13,18 @@ namespace ca {
 
 enum class Solver : int32_t { exact = 0, greedy = 1, capp = 2 };
 
+// How hard the exact solver works for a proof (deterministic either way, unless the time limit
+// cuts it short):
+// - fast (default): greedy, the LP bound, local search; CBC only when a single ball separates
+//   the incumbent from the bound and the kernel left after reduced-cost fixing is small
+//   (kFastCbcMaxRows rows), with at most kFastCbcNodes branch-and-bound nodes. Otherwise the
+//   local-search cover is returned with its LP bound and gap (usually already the optimum:
+//   CBC's remaining work is the proof).
+// - prove: CBC until the cover is proven optimal or the time limit ends it.
+enum class Effort : int32_t { fast = 0, prove = 1 };
+constexpr uint32_t kFastCbcMaxRows = 400;
+constexpr int kFastCbcNodes = 200;
+
 struct CoverOptions {
     Solver solver = Solver::exact;
     // Wall-clock budget of the whole solve (reduction included); <= 0 means no limit. Anytime:
@@ -21,6 +33,7 @@ struct CoverOptions {
     // and CBC checks its limit only between nodes, so its root LP and cut loop on a large
     // kernel can overrun the budget (seconds on dense kernels of ~1000 x 2000).
     double time_limit_s = 60.0;
+    Effort effort = Effort::fast;  // see Effort
     int32_t threads = 1;          // CBC threads (1 = serial, deterministic)
     // Exact solver internal switch (tests, benchmarks): before CBC on a whole kernel component,
     // try row generation (exact ILPs on growing row subsets) with part of the budget. Off by

@@ -179,13 +179,74 @@ std::vector<double> lp_duals(const Problem& P, double time_limit_s) {
     return u;
 }
 
+std::vector<double> lp_duals_core(const Problem& P, const std::vector<double>& cost, double time_limit_s) {
+    if (cost.size() != P.C) return lp_duals(P, time_limit_s);
+    // The core: reduced cost below 0.1, and the 5 cheapest columns of every row.
+    constexpr double kCoreCost = 0.1;
+    constexpr size_t kCorePerRow = 5;
+    std::vector<uint8_t> in_core(P.C, 0);
+    for (uint32_t c = 0; c < P.C; ++c) in_core[c] = cost[c] < kCoreCost;
+    std::vector<uint32_t> cols;
+    for (uint32_t r = 0; r < P.R; ++r) {
+        cols.assign(P.rcol.begin() + P.rptr[r], P.rcol.begin() + P.rptr[r + 1]);
+        const size_t k = std::min(kCorePerRow, cols.size());
+        std::partial_sort(cols.begin(), cols.begin() + k, cols.end(),
+                          [&](uint32_t a, uint32_t b) { return cost[a] != cost[b] ? cost[a] < cost[b] : a < b; });
+        for (size_t i = 0; i < k; ++i) in_core[cols[i]] = 1;
+    }
+    // Column-major arrays of the columns to add (all of the core first).
+    std::vector<CoinBigIndex> colstart(1, 0);
+    std::vector<int> rowidx;
+    auto add_column = [&](uint32_t c) {
+        for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) rowidx.push_back(int(P.crow[k]));
+        colstart.push_back(CoinBigIndex(rowidx.size()));
+    };
+    for (uint32_t c = 0; c < P.C; ++c)
+        if (in_core[c]) add_column(c);
+    std::vector<double> val(P.crow.size(), 1.0), lb(P.C, 0.0), ub(P.C, 1.0), obj(P.C, 1.0), rlb(P.R, 1.0);
+
+    std::lock_guard<std::mutex> lock(coin_mutex());
+    struct Deleter { void operator()(Clp_Simplex* m) const { Clp_deleteModel(m); } };
+    std::unique_ptr<Clp_Simplex, Deleter> model(Clp_newModel());
+    if (!model) return {};
+    Clp_Simplex* m = model.get();
+    Clp_setLogLevel(m, 0);
+    Clp_loadProblem(m, int(colstart.size() - 1), int(P.R), colstart.data(), rowidx.data(), val.data(), lb.data(),
+                    ub.data(), obj.data(), rlb.data(), nullptr);
+    if (time_limit_s > 0 && std::isfinite(time_limit_s)) Clp_setMaximumSeconds(m, time_limit_s);
+    Clp_dual(m, 0);
+    std::vector<double> u(P.R);
+    // Every round adds at least one column, so at most P.C rounds; in practice 2-5.
+    for (;;) {
+        if (Clp_status(m) != 0) return {};  // infeasible core (cannot be: every row has a column), time, numerics
+        const double* y = Clp_getRowPrice(m);
+        if (!y) return {};
+        for (uint32_t r = 0; r < P.R; ++r) u[r] = std::isfinite(y[r]) ? std::max(0.0, y[r]) : 0.0;
+        colstart.assign(1, 0);
+        rowidx.clear();
+        for (uint32_t c = 0; c < P.C; ++c) {
+            if (in_core[c]) continue;
+            double rc = 1.0;
+            for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) rc -= u[P.crow[k]];
+            if (rc < -1e-9) {
+                in_core[c] = 1;
+                add_column(c);
+            }
+        }
+        const int added = int(colstart.size()) - 1;
+        if (added == 0) return u;
+        Clp_addColumns(m, added, lb.data(), ub.data(), obj.data(), colstart.data(), rowidx.data(), val.data());
+        Clp_primal(m, 0);  // the basis stays primal feasible: continue from it
+    }
+}
+
 // Solves the kernel with CBC, looking only for covers smaller than `incumbent` (the best known
 // cover): the cutoff incumbent - 1 + kCutoffSlack prunes at least as much as a MIP start would. A MIP start (Cbc_setMIPStartI) is deliberately not used: in CBC 2.10 its
 // processing ("Reduced search") ignored the time limit and took over a minute on a dense
 // 1500 x 2000 kernel where the cutoff alone gives the same result in seconds.
 // With `first_solution`, CBC stops at the first cover below the cutoff (not proven optimal).
 CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int threads, bool first_solution,
-                   bool heuristics) {
+                   bool heuristics, int max_nodes) {
     CbcOutcome out;
     std::vector<CoinBigIndex> colstart(P.C + 1);
     std::vector<int> rowidx(P.crow.begin(), P.crow.end());
@@ -219,6 +280,10 @@ CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int 
     // kernels and rarely beat a local-search incumbent.
     if (!heuristics) Cbc_setParameter(m, "heuristicsOnOff", "off");
     if (first_solution) Cbc_setParameter(m, "maxSolutions", "1");
+    if (max_nodes > 0) {
+        std::snprintf(buf, sizeof buf, "%d", max_nodes);
+        Cbc_setParameter(m, "maxNodes", buf);
+    }
     const Clock::time_point t0 = Clock::now();
     Cbc_solve(m);
     const double elapsed = seconds_since(t0);

@@ -65,6 +65,12 @@ Lagrange lagrangian(const Problem& P, std::vector<uint32_t> incumbent, int max_i
 // The LP optimum equals the best Lagrangian bound; the bound itself is then recomputed from these
 // multipliers by `lagrangian`, so it stays valid whatever the LP's tolerances.
 std::vector<double> lp_duals(const Problem& P, double time_limit_s);
+// The same LP by column generation from a core (columns of small reduced cost `cost` at the
+// subgradient's multipliers, a few per row at least): the core LP is solved, every other
+// column is priced at its duals and those with a negative reduced cost join it (primal simplex
+// from the current basis) until none is left, so the duals are optimal for the whole of P.
+// 1.5-3x faster than the whole LP on the paper kernels. Empty on failure, like lp_duals.
+std::vector<double> lp_duals_core(const Problem& P, const std::vector<double>& cost, double time_limit_s);
 
 struct CbcOutcome {
     bool ok = false;            // CBC ran and returned without error
@@ -76,8 +82,9 @@ struct CbcOutcome {
 // Looks for covers smaller than `incumbent` (cutoff incumbent - 1 + kCutoffSlack); with
 // `first_solution` stops at the first one; `heuristics` = CBC's own primal heuristics.
 constexpr double kCutoffSlack = 1e-3;
+// `max_nodes` > 0: CBC's branch-and-bound node limit (deterministic, unlike the time limit).
 CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int threads, bool first_solution = false,
-                   bool heuristics = true);
+                   bool heuristics = true, int max_nodes = 0);
 
 // Row generation (lazy covering constraints) on a reduced component K, looking for covers
 // smaller than `target` (the incumbent's size; `best` below, lowered as better covers appear).

@@ -48,7 +48,8 @@ class _SelectOptions(Structure):
     _fields_ = [("struct_size", c_uint32), ("dilation", c_int32), ("delta", c_double), ("scale", c_double),
                 ("solver", c_int32), ("time_limit_s", c_double), ("skip_uncoverable", c_int32),
                 ("ignorable_samples", POINTER(c_uint8)), ("forced_in", POINTER(c_uint8)), ("forced_out", POINTER(c_uint8)),
-                ("target_count", c_uint32), ("target_tolerance", c_double), ("divide_threshold", c_uint32)]
+                ("target_count", c_uint32), ("target_tolerance", c_double), ("divide_threshold", c_uint32),
+                ("effort", c_int32)]
 
 
 class _SelectStats(Structure):

@@ -30,6 +30,8 @@ const char* kUsage =
     "  --candidates KIND         voronoi (default) | random[:N] (default N 10000) | FILE (v x y z r)\n"
     "  --surface-samples FILE    cover these samples (v x y z, input units) instead of sampling\n"
     "  --solver NAME             exact (default) | greedy | capp\n"
+    "  --effort NAME             exact solver: fast (default: LP bound + local search, CBC only for a\n"
+    "                            one-ball gap on a small kernel) | prove (CBC until proven optimal)\n"
     "  --target-count K          at most K balls, with the smallest delta (or scale) that achieves it\n"
     "  --divide N                divide and conquer above N surface samples (default 100000; 0 = never)\n"
     "  --connect ROUTE           auto (default: medial for meshes, power for point clouds) | medial | power\n"
@@ -48,7 +50,7 @@ const char* kUsage =
 
 struct Args {
     std::string input, out_ma, out_obj, out_ply, candidates = "voronoi", surface_samples;
-    std::string export_samples, export_candidates, solver = "exact";
+    std::string export_samples, export_candidates, solver = "exact", effort = "fast";
     std::string ignore_samples, force_in, force_out, connect = "auto";
     long target_count = 0;
     long divide = -1;  // -1: the library default
@@ -103,6 +105,10 @@ int parse_args(int argc, char** argv, Args& a) {
             else if (k == "--solver") {
                 a.solver = v;
                 if (a.solver != "exact" && a.solver != "greedy" && a.solver != "capp") return usage_error("--solver takes exact, greedy or capp");
+            }
+            else if (k == "--effort") {
+                a.effort = v;
+                if (a.effort != "fast" && a.effort != "prove") return usage_error("--effort takes fast or prove");
             }
             else if (k == "--seed") { char* e; a.seed = std::strtoull(v, &e, 10); if (*e || e == v) return usage_error("--seed takes a non-negative integer"); }
             else if (k == "--time-limit") { if (!parse_number(v, d)) return usage_error("--time-limit takes seconds"); a.time_limit = d; }
@@ -275,6 +281,7 @@ int main(int argc, char** argv) {
     else so.delta = a.delta;
     so.solver = a.solver == "greedy" ? CA_SOLVER_GREEDY : a.solver == "capp" ? CA_SOLVER_CAPP : CA_SOLVER_EXACT;
     so.time_limit_s = a.time_limit;
+    so.effort = a.effort == "prove" ? CA_EFFORT_PROVE : CA_EFFORT_FAST;
     so.skip_uncoverable = a.skip_uncoverable ? 1 : 0;
     so.target_count = uint32_t(a.target_count);
     if (a.divide >= 0) so.divide_threshold = uint32_t(std::min<long>(a.divide, UINT32_MAX));
@@ -348,13 +355,13 @@ int main(int argc, char** argv) {
         std::printf("{\"input\":\"%s\",\"surface_samples\":%zu,\"candidates\":%zu,\"selected\":%zu,\"edges\":%llu,"
                     "\"faces\":%llu,\"components\":%llu,\"isolated\":%llu,\"betti1\":%lld,\"uncovered\":%zu,"
                     "\"optimal\":%s,\"objective\":%.0f,\"lower_bound\":%.0f,\"gap\":%.6g,\"delta\":%.9g,"
-                    "\"solver\":\"%s\",\"connect\":\"%s\",\"probes\":%llu,\"parts\":%llu,\"output\":\"%s\",%s%s"
+                    "\"solver\":\"%s\",\"effort\":\"%s\",\"connect\":\"%s\",\"probes\":%llu,\"parts\":%llu,\"output\":\"%s\",%s%s"
                     "\"time_s\":{\"read\":%.4f,\"candidates\":%.4f,\"select\":%.4f,\"connect\":%.4f,\"write\":%.4f,"
                     "\"evaluate\":%.4f,\"total\":%.4f}}\n",
                     json_escape(a.input).c_str(), n_samples, n_candidates, nv, (unsigned long long)ks.edges,
                     (unsigned long long)ks.faces, (unsigned long long)ks.components, (unsigned long long)ks.isolated,
                     (long long)ks.betti1, uncovered, ss.proven_optimal ? "true" : "false", ss.objective, ss.lower_bound,
-                    ss.gap, ss.delta_absolute, a.solver.c_str(), ks.method == CA_CONNECT_MEDIAL ? "medial" : "power",
+                    ss.gap, ss.delta_absolute, a.solver.c_str(), a.effort.c_str(), ks.method == CA_CONNECT_MEDIAL ? "medial" : "power",
                     (unsigned long long)ss.probes, (unsigned long long)ss.parts, json_escape(a.out_ma).c_str(),
                     a.evaluate ? cli::evaluation_json(ev).c_str() : "", a.evaluate ? "," : "", t_read, t_candidates,
                     t_select, t_connect, t_write, t_evaluate, t_total);

@@ -198,6 +198,15 @@ static void test_arrays_uncoverable_and_copy(void) {
     ca_select_options_init(&so);
     so.solver = 42;
     CHECK(ca_select(ctx, set, &so, &sel) == CA_ERROR_INVALID_ARGUMENT && sel == NULL);
+    ca_select_options_init(&so);
+    CHECK(so.effort == CA_EFFORT_FAST);
+    so.effort = 9;
+    CHECK(ca_select(ctx, set, &so, &sel) == CA_ERROR_INVALID_ARGUMENT && sel == NULL);
+    so.effort = CA_EFFORT_PROVE;
+    so.skip_uncoverable = 1; /* sample 3 is covered by no ball */
+    CHECK(ca_select(ctx, set, &so, &sel) == CA_OK && sel != NULL && ca_selection_count(sel) == 2);
+    ca_selection_destroy(sel);
+    sel = NULL;
     /* NaN radius */
     {
         const double bad_r[] = {NAN, 0.1};

@@ -36,6 +36,7 @@ struct Prepared {
 ca::Selection select(const ca::CandidateSet& set, ca::Solver solver) {
     ca::SelectOptions sopt;
     sopt.cover.time_limit_s = 0;
+    sopt.cover.effort = ca::Effort::prove;
     sopt.cover.solver = solver;
     ca::Selection sel;
     const ca::Status st = ca::select_balls(set, sopt, ca::Monitor{}, sel);

@@ -137,6 +137,7 @@ TEST_CASE("set cover: exact equals the brute-force minimum and is proven optimal
         const int best = brute_min(c);
         REQUIRE(best >= 0);
         CoverOptions opt;
+        opt.effort = Effort::prove;
         CoverResult res;
         Status st = solve_set_cover(c, opt, false, Monitor{}, res);
         INFO("instance " << t << " m=" << c.n_samples << " n=" << c.n_balls);
@@ -166,6 +167,7 @@ TEST_CASE("set cover: row generation equals the brute-force minimum and the one-
         const int best = brute_min(c);
         REQUIRE(best >= 0);
         CoverOptions opt;
+        opt.effort = Effort::prove;  // row generation is part of the proving path
         opt.row_generation = true;
         CoverResult rg, one;
         REQUIRE(solve_set_cover(c, opt, false, Monitor{}, rg).ok());
@@ -192,6 +194,7 @@ TEST_CASE("set cover: row generation over several rounds stays exact") {
     for (int t = 0; t < 12; ++t) {
         const Coverage c = random_cover(rng, 60, 60, 0.08);
         CoverOptions opt;
+        opt.effort = Effort::prove;  // row generation is part of the proving path
         opt.row_generation = true;
         CoverResult rg, one;
         REQUIRE(solve_set_cover(c, opt, false, Monitor{}, rg).ok());
@@ -542,6 +545,69 @@ sc::Problem to_problem(const Coverage& c) {
     return P;
 }
 }  // namespace
+
+TEST_CASE("set cover: the fast effort gives valid covers, valid bounds and the same result every time") {
+    // Instances large enough that the LP bound often leaves a gap of two balls or more (where
+    // the fast effort does not run CBC); the prove effort gives the optimum to compare with.
+    Rng rng(9090);
+    int unproven = 0, optimal = 0;
+    for (int t = 0; t < 40; ++t) {
+        const Coverage c = random_cover(rng, 70 + rng.below(40), 60 + rng.below(40), 0.06);
+        CoverOptions fast, prove;
+        prove.effort = Effort::prove;
+        prove.time_limit_s = 0;
+        CoverResult a, b, p;
+        REQUIRE(solve_set_cover(c, fast, false, Monitor{}, a).ok());
+        REQUIRE(solve_set_cover(c, fast, false, Monitor{}, b).ok());
+        REQUIRE(solve_set_cover(c, prove, false, Monitor{}, p).ok());
+        INFO("instance " << t << " fast " << a.objective << " >= " << a.lower_bound << ", optimum " << p.objective);
+        REQUIRE(p.proven_optimal == 1);
+        CHECK(valid_cover(c, a.selected));
+        CHECK(a.selected == b.selected);             // deterministic
+        CHECK(a.lower_bound == b.lower_bound);
+        CHECK(a.lower_bound <= p.objective + 1e-9);   // a valid bound
+        CHECK(a.objective >= p.objective);
+        CHECK(a.gap == doctest::Approx((a.objective - a.lower_bound) / a.objective));
+        if (a.proven_optimal) CHECK(a.objective == p.objective);
+        else ++unproven;
+        if (a.objective == p.objective) ++optimal;
+    }
+    CHECK(unproven > 0);       // the fast path's early stop is exercised
+    CHECK(optimal >= 30);      // and it mostly finds the optimum anyway
+}
+
+TEST_CASE("set cover: an unknown effort is refused") {
+    Rng rng(5);
+    const Coverage c = random_cover(rng, 10, 10, 0.3);
+    CoverOptions opt;
+    opt.effort = static_cast<Effort>(7);
+    CoverResult res;
+    CHECK(solve_set_cover(c, opt, false, Monitor{}, res).code == Code::invalid_argument);
+}
+
+TEST_CASE("set cover: the core LP (column generation) has the whole LP's optimum") {
+    const auto far = sc::Clock::now() + std::chrono::hours(1);
+    const auto insts = small_instances(4321, 120);
+    Rng rng(11);
+    for (size_t t = 0; t < insts.size(); ++t) {
+        const sc::Problem P = to_problem(insts[t].cov);
+        std::vector<uint32_t> all(P.C);
+        for (uint32_t i = 0; i < P.C; ++i) all[i] = i;
+        const std::vector<double> y = sc::lp_duals(P, 0);
+        REQUIRE(y.size() == P.R);
+        const double lp = sc::lagrangian(P, all, 1, far, &y).bound;
+        // cores from the subgradient's reduced costs, and from random costs (a poor core that
+        // needs several pricing rounds)
+        std::vector<double> random_cost(P.C);
+        for (double& v : random_cost) v = rng.uniform();
+        for (const std::vector<double>& cost : {sc::lagrangian(P, all, 50, far).cost, random_cost}) {
+            const std::vector<double> yc = sc::lp_duals_core(P, cost, 0);
+            INFO("instance " << t);
+            REQUIRE(yc.size() == P.R);
+            CHECK(sc::lagrangian(P, all, 1, far, &yc).bound == doctest::Approx(lp).epsilon(1e-7));
+        }
+    }
+}
 
 TEST_CASE("set cover: the bound at the LP duals equals the LP optimum and bounds the brute-force minimum") {
     const auto far = sc::Clock::now() + std::chrono::hours(1);
