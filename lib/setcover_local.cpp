@@ -40,7 +40,7 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
     std::sort(start.begin(), start.end());
     if (P.R == 0 || start.size() <= lower_bound || !covers_problem(P, start)) return start;
     const uint32_t R = P.R, C = P.C;
-    // raw pointers: the byte stores into `conf` may alias anything, and would otherwise make the
+    // raw pointers: the byte stores into `in` may alias anything, and would otherwise make the
     // compiler reload the vectors' data pointers in every inner loop
     const uint32_t* const rptr = P.rptr.data();
     const uint32_t* const rcol = P.rcol.data();
@@ -49,7 +49,17 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
     std::vector<int64_t> w(R, 1), score(C, 0);
     std::vector<uint32_t> cnt(R, 0), upos(R, UINT32_MAX), uncovered;
     std::vector<uint64_t> stamp(C, 0);
-    std::vector<uint8_t> in(C, 0), conf(C, 1);
+    std::vector<uint8_t> in(C, 0);
+    // Configuration checking, kept lazily: a column removed at operation t may enter again once
+    // a column sharing a row with it has been added or removed after t. row_change[r] = the last
+    // operation that added or removed a column of row r; removed_at[c] = c's last removal
+    // (kNever: never removed, allowed). Same rule as marking every neighbour on each change,
+    // at |c| reads per tested candidate instead of sum over rows of their sizes per change.
+    constexpr uint64_t kNever = UINT64_MAX;
+    std::vector<uint64_t> row_change(R, 0), removed_at(C, kNever);
+    uint64_t op = 0;
+    // XOR of the selected columns covering each row: the owner when exactly one covers it.
+    std::vector<uint32_t> owner_xor(R, 0);
     std::vector<uint32_t> sel;  // current columns (unordered)
     std::vector<uint32_t> spos(C, UINT32_MAX);
     SplitMix rng{seed};
@@ -63,12 +73,16 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
         upos[r] = UINT32_MAX;
     };
     // the one selected column covering r (cnt[r] == 1)
-    auto owner = [&](uint32_t r) {
-        for (uint32_t q = rptr[r]; q < rptr[r + 1]; ++q)
-            if (in[rcol[q]]) return rcol[q];
-        return UINT32_MAX;
+    auto owner = [&](uint32_t r) { return owner_xor[r]; };
+    auto allowed = [&](uint32_t c) {
+        const uint64_t t = removed_at[c];
+        if (t == kNever) return true;
+        for (uint32_t k = cptr[c]; k < cptr[c + 1]; ++k)
+            if (row_change[crow[k]] > t) return true;
+        return false;
     };
     auto add = [&](uint32_t c) {
+        ++op;
         int64_t sc = 0;
         for (uint32_t k = cptr[c]; k < cptr[c + 1]; ++k) {
             const uint32_t r = crow[k];
@@ -81,8 +95,8 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
                 score[owner(r)] += w[r];
             }
             cnt[r]++;
-            // configuration change: the columns around c may enter again
-            for (uint32_t q = rptr[r]; q < rptr[r + 1]; ++q) conf[rcol[q]] = 1;
+            owner_xor[r] ^= c;
+            row_change[r] = op;  // configuration change: the columns around c may enter again
         }
         in[c] = 1;
         score[c] = sc;
@@ -90,6 +104,7 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
         sel.push_back(c);
     };
     auto remove = [&](uint32_t c) {
+        ++op;
         in[c] = 0;
         const uint32_t p = spos[c], last = sel.back();
         sel[p] = last;
@@ -100,6 +115,8 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
         for (uint32_t k = cptr[c]; k < cptr[c + 1]; ++k) {
             const uint32_t r = crow[k];
             cnt[r]--;
+            owner_xor[r] ^= c;
+            row_change[r] = op;
             if (cnt[r] == 0) {
                 uncover(r);
                 for (uint32_t q = rptr[r]; q < rptr[r + 1]; ++q)
@@ -108,10 +125,9 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
             } else if (cnt[r] == 1) {
                 score[owner(r)] -= w[r];
             }
-            for (uint32_t q = rptr[r]; q < rptr[r + 1]; ++q) conf[rcol[q]] = 1;
         }
         score[c] = sc;
-        conf[c] = 0;
+        removed_at[c] = op;
     };
     // best selected column to drop: largest score (smallest loss), ties to the oldest
     auto pick_drop = [&](uint32_t tabu) {
@@ -157,8 +173,8 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
         uint32_t a = UINT32_MAX;
         for (uint32_t q = rptr[r]; q < rptr[r + 1]; ++q) {
             const uint32_t c = rcol[q];
-            if (!conf[c]) continue;
-            if (a == UINT32_MAX || score[c] > score[a] || (score[c] == score[a] && stamp[c] < stamp[a])) a = c;
+            if (a == UINT32_MAX || score[c] > score[a] || (score[c] == score[a] && stamp[c] < stamp[a]))
+                if (allowed(c)) a = c;  // tested only when c would be the best so far
         }
         if (a == UINT32_MAX) a = rcol[rptr[r]];  // every candidate just left: take one anyway
         add(a);
