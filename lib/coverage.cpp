@@ -2,10 +2,12 @@
 // radius query per ball over a k-d tree of the samples; both directions stored as sorted
 // compressed lists. Never dense.
 #include "coverage.h"
+#include "parallel.h"
 
 #include <nanoflann.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -43,7 +45,7 @@ bool finite3(const Vec3& p) { return std::isfinite(p.x()) && std::isfinite(p.y()
 }  // namespace
 
 Status build_coverage(const std::vector<Vec3>& samples, const std::vector<Vec3>& centers,
-                      const std::vector<double>& dilated_radii, const Monitor& monitor, Coverage& out) {
+                      const std::vector<double>& dilated_radii, const Monitor& monitor, Coverage& out, int threads) {
     if (centers.size() != dilated_radii.size())
         return fail(Code::invalid_argument, "build_coverage: centers and radii differ in size");
     if (samples.size() >= size_t(std::numeric_limits<uint32_t>::max()) ||
@@ -65,28 +67,43 @@ Status build_coverage(const std::vector<Vec3>& samples, const std::vector<Vec3>&
             PointsAdaptor adaptor{samples};
             Tree tree(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(16));
             tree.buildIndex();
-            std::vector<std::pair<size_t, double>> hits;
-            std::vector<uint32_t> ids;
-            const size_t chunk = 4096;
+            // Balls are independent: each thread queries a range of them into its own lists,
+            // which are then appended in ball order (the same arrays for any thread count).
+            std::vector<std::vector<uint32_t>> lists(cov.n_balls);
+            std::atomic<bool> out_of_memory{false};
+            auto query = [&](size_t begin, size_t end) noexcept {
+                try {
+                    std::vector<std::pair<size_t, double>> hits;
+                    for (size_t i = begin; i < end; ++i) {
+                        const double r = dilated_radii[i];
+                        // nanoflann keeps d^2 < r^2 (strict, squared): widen by a relative 1e-12 (and
+                        // one ulp, for r = 0) so a sample exactly at distance r' counts as covered.
+                        double r2 = r * r * (1.0 + 1e-12);
+                        r2 = std::nextafter(r2, std::numeric_limits<double>::infinity());
+                        const double q[3] = {centers[i].x(), centers[i].y(), centers[i].z()};
+                        hits.clear();
+                        tree.radiusSearch(q, r2, hits, nanoflann::SearchParams());
+                        std::vector<uint32_t>& ids = lists[i];
+                        ids.reserve(hits.size());
+                        for (const auto& h : hits) ids.push_back(uint32_t(h.first));
+                        std::sort(ids.begin(), ids.end());
+                    }
+                } catch (...) {  // bad_alloc on a worker thread: reported below
+                    out_of_memory = true;
+                }
+            };
+            if (!parallel_for(cov.n_balls, resolve_threads(threads), 4096, monitor, "coverage", query))
+                return fail(Code::cancelled, "build_coverage: cancelled");
+            if (out_of_memory) return fail(Code::out_of_memory, "build_coverage: out of memory");
+            size_t total = 0;
+            for (const auto& l : lists) total += l.size();
+            if (total >= size_t(std::numeric_limits<uint32_t>::max()))
+                return fail(Code::out_of_memory, "build_coverage: coverage relation exceeds 2^32 entries");
+            cov.ball_samples.reserve(total);
             for (size_t i = 0; i < cov.n_balls; ++i) {
-                if (i % chunk == 0 && i > 0 &&
-                    !monitor.report("coverage", double(i) / double(cov.n_balls)))
-                    return fail(Code::cancelled, "build_coverage: cancelled");
-                const double r = dilated_radii[i];
-                // nanoflann keeps d^2 < r^2 (strict, squared): widen by a relative 1e-12 (and one
-                // ulp, for r = 0) so a sample exactly at distance r' counts as covered.
-                double r2 = r * r * (1.0 + 1e-12);
-                r2 = std::nextafter(r2, std::numeric_limits<double>::infinity());
-                const double q[3] = {centers[i].x(), centers[i].y(), centers[i].z()};
-                hits.clear();
-                tree.radiusSearch(q, r2, hits, nanoflann::SearchParams());
-                ids.clear();
-                for (const auto& h : hits) ids.push_back(uint32_t(h.first));
-                std::sort(ids.begin(), ids.end());
-                cov.ball_samples.insert(cov.ball_samples.end(), ids.begin(), ids.end());
-                if (cov.ball_samples.size() >= size_t(std::numeric_limits<uint32_t>::max()))
-                    return fail(Code::out_of_memory, "build_coverage: coverage relation exceeds 2^32 entries");
+                cov.ball_samples.insert(cov.ball_samples.end(), lists[i].begin(), lists[i].end());
                 cov.ball_ptr[i + 1] = uint32_t(cov.ball_samples.size());
+                std::vector<uint32_t>().swap(lists[i]);
             }
         }
         cov.build_transpose();

@@ -20,7 +20,9 @@ struct Coverage {
 };
 
 // dilated_radii[i] = r'_i (absolute, same units as the points).
+// `threads`: 0 = all cores; the result is the same for any number.
 Status build_coverage(const std::vector<Vec3>& samples, const std::vector<Vec3>& centers,
-                      const std::vector<double>& dilated_radii, const Monitor& monitor, Coverage& out);
+                      const std::vector<double>& dilated_radii, const Monitor& monitor, Coverage& out,
+                      int threads = 0);
 
 }  // namespace ca

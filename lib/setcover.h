@@ -35,6 +35,8 @@ struct CoverOptions {
     double time_limit_s = 60.0;
     Effort effort = Effort::fast;  // see Effort
     int32_t threads = 1;          // CBC threads (1 = serial, deterministic)
+    // Threads for the independent local-search runs (0 = all cores). Results do not depend on it.
+    int32_t search_threads = 0;
     // Exact solver internal switch (tests, benchmarks): before CBC on a whole kernel component,
     // try row generation (exact ILPs on growing row subsets) with part of the budget. Off by
     // default: on the paper kernels it only delayed CBC (it still runs on components too large

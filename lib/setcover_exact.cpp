@@ -128,15 +128,15 @@ Lagrange lagrangian(const Problem& P, std::vector<uint32_t> incumbent, int max_i
             if (std::ceil(L.bound - 1e-6) >= double(L.best.size())) break;
         }
         if ((it & 15) == 15 && Clock::now() > deadline) break;
-        // subgradient g_i = 1 - #selected columns covering i
+        // subgradient g_i = 1 - #selected columns covering i (from the few selected columns)
+        std::fill(g.begin(), g.end(), 1.0);
+        for (uint32_t c = 0; c < P.C; ++c)
+            if (x[c])
+                for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) g[P.crow[k]] -= 1.0;
         double norm = 0;
         for (uint32_t r = 0; r < P.R; ++r) {
-            int cnt = 0;
-            for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q) cnt += x[P.rcol[q]];
-            double gi = 1.0 - cnt;
-            if (gi < 0 && u[r] <= 0) gi = 0;  // projected: u stays at 0
-            g[r] = gi;
-            norm += gi * gi;
+            if (g[r] < 0 && u[r] <= 0) g[r] = 0;  // projected: u stays at 0
+            norm += g[r] * g[r];
         }
         if (norm == 0) break;  // x(u) is a cover with complementary slackness: L(u) is optimal
         const double step = lambda * (double(L.best.size()) - val) / norm;

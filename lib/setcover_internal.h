@@ -120,6 +120,14 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
                                    uint64_t max_steps, uint64_t seed, Clock::time_point deadline,
                                    uint64_t* steps = nullptr);
 
+// Independent runs of local_search from the same start with seeds seed, seed + 1, ...,
+// seed + starts - 1, spread over `threads` threads; returns the smallest cover, ties to the
+// lowest seed. The runs do not stop each other, so the result does not depend on the number of
+// threads or their timing. On the paper kernels the seed alone moves results by 1-2 balls.
+std::vector<uint32_t> local_search_multi(const Problem& P, const std::vector<uint32_t>& start, size_t lower_bound,
+                                         uint64_t max_steps, uint64_t seed, int starts, int threads,
+                                         Clock::time_point deadline);
+
 // ---- setcover.cpp ----
 // Reduction of a compact problem to its kernel (forced columns returned separately).
 Status reduce_problem(const Problem& P, const Monitor& monitor, std::vector<uint32_t>& forced, Problem& kernel);

@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <exception>
+#include <thread>
 
 namespace ca {
 namespace sc {
@@ -192,6 +194,38 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
     }
     remove_redundant(P.cptr, P.crow, P.R, nullptr, nullptr, best);
     return best;
+}
+
+std::vector<uint32_t> local_search_multi(const Problem& P, const std::vector<uint32_t>& start, size_t lower_bound,
+                                         uint64_t max_steps, uint64_t seed, int starts, int threads,
+                                         Clock::time_point deadline) {
+    starts = std::max(1, starts);
+    std::vector<std::vector<uint32_t>> found(static_cast<size_t>(starts));
+    auto run = [&](size_t i) { found[i] = local_search(P, start, lower_bound, max_steps, seed + i, deadline); };
+    const size_t workers = std::min<size_t>(size_t(std::max(1, threads)), size_t(starts));
+    if (workers <= 1) {
+        for (size_t i = 0; i < size_t(starts); ++i) run(i);
+    } else {
+        // worker w takes runs w, w + workers, ...; exceptions (bad_alloc) are passed on
+        std::vector<std::exception_ptr> errors(workers);
+        auto work = [&](size_t w) {
+            try {
+                for (size_t i = w; i < size_t(starts); i += workers) run(i);
+            } catch (...) {
+                errors[w] = std::current_exception();
+            }
+        };
+        std::vector<std::thread> pool;
+        for (size_t w = 1; w < workers; ++w) pool.emplace_back(work, w);
+        work(0);
+        for (auto& t : pool) t.join();
+        for (auto& e : errors)
+            if (e) std::rethrow_exception(e);
+    }
+    size_t best = 0;
+    for (size_t i = 1; i < found.size(); ++i)
+        if (found[i].size() < found[best].size()) best = i;
+    return found[best];
 }
 
 }  // namespace sc
