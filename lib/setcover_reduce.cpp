@@ -1,0 +1,589 @@
+// setcover_reduce.cpp: reduction of a set-cover instance (rows = samples, columns = balls) to its
+// kernel, on the input (with its masks) and on compact problems (see setcover_internal.h).
+//
+// Rules, applied to a fixpoint; none changes the optimum:
+//  - forced ball: a sample covered by one alive ball only forces that ball (it is selected, its
+//    samples are covered);
+//  - dominated ball: ball a is dropped if an alive ball b has samples(a) ⊆ samples(b) (equal
+//    sets: the lower index stays): any cover using a can use b instead;
+//  - dominated sample: sample j is dropped if an alive sample k has balls(k) ⊆ balls(j) (equal
+//    sets: the lower index stays): covering k covers j;
+//  - empty ball: a ball whose samples are all covered or dropped is dropped.
+// Each dominance phase removes exactly the elements dominated at its start (a dominated element
+// always has an undominated dominator, see below), so the kernel does not depend on the order in
+// which a phase visits its elements; the phases run in a fixed sequence (reduce_fixpoint).
+//
+// Cost. The first ball-dominance pass runs on the whole input (~13 000 balls, ~1 500 samples,
+// up to ~800 000 pairs) and removes most balls; the later passes only revisit what changed:
+//  - first ball pass: balls in order of decreasing size (ties: lower index first), each tested
+//    only against the balls kept so far (an element's dominators come before it in that order,
+//    and a dropped dominator has a kept one of its own), taken from the list of kept balls of its
+//    sample with the fewest kept balls; elements are bitsets of their members (24 words for 1500
+//    samples), so a subset test is a few word operations. The balls it keeps are the only ones
+//    that can be alive later: they get slots 0, 1, ..., and every sample a bitset of its kept
+//    balls' slots;
+//  - sample passes: each sample k tested as a dominator against the alive samples in its two
+//    smallest balls (an AND of two bitsets), one word test per candidate;
+//  - later ball passes: a pair can only become a dominance when the dominated ball lost a
+//    sample (a sample pass: the dominating sample lost a ball), so only those are tested,
+//    against the alive balls containing their two rarest samples (an AND of two bitsets);
+//  - bitsets are built once: an alive element of one list is in another's current list iff it
+//    is in its original one, so dead members in a bitset never matter;
+//  - lists are compacted in place after each change, only the ones that lost an element (a
+//    dead ball's samples, a dead sample's balls), keeping their order; when most balls died,
+//    the sample lists are rebuilt from the ball lists instead (cost: what is left).
+#include "setcover_internal.h"
+
+#include <algorithm>
+#include <memory>
+
+namespace ca {
+namespace sc {
+
+namespace {
+
+// Reduction on the original index space. Dead balls / samples keep empty lists.
+class Reducer {
+public:
+    std::vector<uint8_t> s_alive, b_alive;  // sample still to be covered / ball still a candidate
+    std::vector<uint32_t> forced;           // selected by the reduction (forced_in + degree 1)
+
+    // Starts from the given lists (both directions, ascending, consistent) with the alive flags
+    // already set: the lists are used as they are until the first change (no copy) and then
+    // copied, restricted to what is alive, into the reducer's own arrays (same offsets). With
+    // `masked`, some flags are already off: the lists are restricted at once (the given lists
+    // need not outlive init then).
+    void init(size_t n_balls, size_t n_samples, const uint32_t* ball_ptr, const uint32_t* ball_samples,
+              const uint32_t* sample_ptr, const uint32_t* sample_balls, bool masked) {
+        n_ = n_balls;
+        m_ = n_samples;
+        bbeg_.assign(ball_ptr, ball_ptr + n_);
+        bend_.assign(ball_ptr + 1, ball_ptr + n_ + 1);
+        sbeg_.assign(sample_ptr, sample_ptr + m_);
+        send_.assign(sample_ptr + 1, sample_ptr + m_ + 1);
+        bs_ = ball_samples;
+        sb_ = sample_balls;
+        nnz_ = ball_ptr[n_];
+        was_b_.assign(n_, 1);  // the first rebuild empties the lists of whatever is dead already
+        was_s_.assign(m_, 1);
+        mark_b_.assign(n_, 0);
+        mark_s_.assign(m_, 0);
+        dirty_b_.assign(n_, 0);
+        dirty_s_.assign(m_, 0);
+        for (size_t a = 0; a < n_; ++a)
+            if (bend_[a] == bbeg_[a]) b_alive[a] = was_b_[a] = 0;
+        if (masked) rebuild();
+    }
+
+    uint32_t bsize(uint32_t a) const { return bend_[a] - bbeg_[a]; }
+    uint32_t sdeg(uint32_t j) const { return send_[j] - sbeg_[j]; }
+    const uint32_t* balls_of(uint32_t j) const { return sb_ + sbeg_[j]; }   // alive, ascending
+    const uint32_t* samples_of(uint32_t a) const { return bs_ + bbeg_[a]; }  // alive, ascending
+
+    // Bring the lists up to date after balls / samples died: the lists of the balls that lost a
+    // sample and of the samples that lost a ball are compacted in place (all of them the first
+    // time, from the input's arrays into the reducer's own). Records what changed for the
+    // incremental dominance passes: an alive ball that lost a sample is dirty for ball
+    // dominance, an alive sample that lost a ball is dirty for sample dominance (both only once
+    // the first complete pass of that test is done). A ball left without samples dies.
+    void rebuild() {
+        const bool from_input = !own_bs_ && nnz_ > 0;
+        if (from_input) {  // not initialised: only the alive lists are ever read
+            own_bs_.reset(new uint32_t[nnz_]);
+            own_sb_.reset(new uint32_t[nnz_]);
+        }
+        // Newly dead balls / samples: mark the lists they appear in (all of them when many
+        // died: marking is only a filter, compacting an unchanged list changes nothing).
+        size_t dead_b = 0, dead_s = 0, alive_b = 0, alive_s = 0;
+        for (size_t a = 0; a < n_; ++a) {
+            dead_b += was_b_[a] && !b_alive[a];
+            alive_b += b_alive[a];
+        }
+        for (size_t j = 0; j < m_; ++j) {
+            dead_s += was_s_[j] && !s_alive[j];
+            alive_s += s_alive[j];
+        }
+        const bool all_s = from_input || dead_b * 4 > alive_b, all_b = from_input || dead_s * 4 > alive_s;
+        for (uint32_t a = 0; a < n_; ++a) {
+            if (!was_b_[a] || b_alive[a]) continue;
+            was_b_[a] = 0;
+            if (!all_s)
+                for (uint32_t k = bbeg_[a]; k < bend_[a]; ++k) mark_s_[bs_[k]] = 1;
+            bend_[a] = bbeg_[a];
+        }
+        for (uint32_t j = 0; j < m_; ++j) {
+            if (!was_s_[j] || s_alive[j]) continue;
+            was_s_[j] = 0;
+            if (!all_b)
+                for (uint32_t k = sbeg_[j]; k < send_[j]; ++k) mark_b_[sb_[k]] = 1;
+            send_[j] = sbeg_[j];
+        }
+        uint32_t* obs = own_bs_.get();
+        uint32_t* osb = own_sb_.get();
+        for (uint32_t a = 0; a < n_; ++a) {
+            if (!b_alive[a] || !(all_b || mark_b_[a])) continue;
+            mark_b_[a] = 0;
+            uint32_t w = bbeg_[a];
+            for (uint32_t k = bbeg_[a]; k < bend_[a]; ++k) {  // branch-free: most entries may go
+                const uint32_t x = bs_[k];
+                obs[w] = x;
+                w += s_alive[x];
+            }
+            if (w < bend_[a] && balls_full_) dirty_b_[a] = 1;
+            bend_[a] = w;
+            if (w == bbeg_[a]) b_alive[a] = was_b_[a] = 0;  // its samples are all dead: no alive list has it
+        }
+        if (all_s) {
+            // Most balls died: the sample lists are rebuilt from the alive balls' lists (ascending
+            // ball order keeps them ascending), which costs what is left, not what was there.
+            std::vector<uint32_t>& len = scratch_;
+            len.assign(m_, 0);
+            for (uint32_t a = 0; a < n_; ++a)
+                if (b_alive[a])
+                    for (uint32_t k = bbeg_[a]; k < bend_[a]; ++k) {
+                        const uint32_t j = obs[k];
+                        osb[sbeg_[j] + len[j]++] = a;
+                    }
+            for (uint32_t j = 0; j < m_; ++j) {
+                if (!s_alive[j]) continue;
+                const uint32_t w = sbeg_[j] + len[j];
+                if (w < send_[j] && samples_full_) dirty_s_[j] = 1;
+                send_[j] = w;
+            }
+        } else {
+            for (uint32_t j = 0; j < m_; ++j) {
+                if (!s_alive[j] || !mark_s_[j]) continue;
+                mark_s_[j] = 0;
+                uint32_t w = sbeg_[j];
+                for (uint32_t k = sbeg_[j]; k < send_[j]; ++k) {
+                    const uint32_t x = sb_[k];
+                    osb[w] = x;
+                    w += b_alive[x];
+                }
+                if (w < send_[j] && samples_full_) dirty_s_[j] = 1;
+                send_[j] = w;
+            }
+        }
+        bs_ = obs;
+        sb_ = osb;
+    }
+
+    void select(uint32_t b) {
+        forced.push_back(b);
+        b_alive[b] = 0;
+        for (uint32_t k = bbeg_[b]; k < bend_[b]; ++k) s_alive[bs_[k]] = 0;
+    }
+
+    // Samples with exactly one candidate ball force that ball.
+    bool force_degree_one() {
+        bool any = false;
+        for (uint32_t j = 0; j < m_; ++j)
+            if (s_alive[j] && sdeg(j) == 1) {
+                select(sb_[sbeg_[j]]);
+                any = true;
+            }
+        return any;
+    }
+
+    bool ball_dominance() { return balls_full_ ? ball_dominance_dirty() : ball_dominance_full(); }
+    bool sample_dominance() { return samples_full_ ? sample_dominance_dirty() : sample_dominance_full(); }
+
+private:
+    // First ball pass. Balls in order of decreasing size, ties lower index first: every
+    // dominator of a ball comes before it, and a dominator that was itself dropped has a kept
+    // dominator before it (dominance is transitive), so a ball is dominated iff a ball kept
+    // earlier contains it. The kept balls containing sample j are listed in
+    // kept[sbeg_[j] ...] (at most sdeg(j) of them); a ball is tested against the kept balls
+    // of its sample with the fewest, all of its samples at once (bitsets).
+    bool ball_dominance_full() {
+        balls_full_ = true;
+        // counting sort by decreasing size, stable in the index
+        uint32_t max_size = 0;
+        for (uint32_t a = 0; a < n_; ++a)
+            if (b_alive[a]) max_size = std::max(max_size, bsize(a));
+        std::vector<uint32_t> start(size_t(max_size) + 2, 0), order;
+        for (uint32_t a = 0; a < n_; ++a)
+            if (b_alive[a]) start[max_size - bsize(a) + 1]++;
+        for (size_t s = 0; s + 1 < start.size(); ++s) start[s + 1] += start[s];
+        order.resize(start.back());
+        for (uint32_t a = 0; a < n_; ++a)
+            if (b_alive[a]) order[start[max_size - bsize(a)]++] = a;
+
+        ws_ = (m_ + 63) / 64;
+        slot_.assign(n_, UINT32_MAX);
+        bits_b_.clear();
+        bits_b_.reserve(order.size() * ws_);
+        std::unique_ptr<uint32_t[]> kept(new uint32_t[nnz_]);  // kept ball slots per sample
+        std::vector<uint32_t> nkept(m_, 0);
+        WordSet& A = tested_;  // samples of the tested ball
+        A.reset(ws_);
+        uint32_t n_kept = 0;
+        bool any = false;
+        for (uint32_t a : order) {
+            const uint32_t* la = samples_of(a);
+            const uint32_t na = bsize(a);
+            A.load_sorted(la, na);
+            uint32_t key = la[0], rk = nkept[la[0]];
+            for (uint32_t k = 1; k < na; ++k) {
+                const uint32_t r = nkept[la[k]];
+                key = r < rk ? la[k] : key;
+                rk = r < rk ? r : rk;
+            }
+            const uint32_t* cand = &kept[sbeg_[key]];
+            bool dominated = false;
+            for (uint32_t t = 0, nc = nkept[key]; t < nc && !dominated; ++t)
+                dominated = A.in(&bits_b_[size_t(cand[t]) * ws_]);
+            if (dominated) {
+                b_alive[a] = 0;
+                any = true;
+                continue;
+            }
+            slot_[a] = n_kept;
+            bits_b_.insert(bits_b_.end(), A.bits.begin(), A.bits.end());
+            for (uint32_t k = 0; k < na; ++k) kept[sbeg_[la[k]] + nkept[la[k]]++] = n_kept;
+            ++n_kept;
+        }
+        n_slots_ = n_kept;
+        ball_of_slot_.resize(n_kept);
+        for (uint32_t a = 0; a < n_; ++a)
+            if (slot_[a] != UINT32_MAX) ball_of_slot_[slot_[a]] = a;
+        // the samples' bitsets of kept balls (by slot)
+        wb_ = (size_t(n_kept) + 63) / 64;
+        bits_s_.assign(m_ * wb_, 0);
+        for (uint32_t j = 0; j < m_; ++j)
+            for (uint32_t t = 0; t < nkept[j]; ++t) set_bit(&bits_s_[size_t(j) * wb_], kept[sbeg_[j] + t]);
+        acc_.assign(std::max(ws_, wb_), 0);
+        return any;
+    }
+
+    // Sample passes: sample j is dropped if an alive sample k has balls(k) ⊆ balls(j) (equal
+    // sets: keep the lower index). Each sample k is tested as a dominator: the candidates j are
+    // the alive samples in k's two smallest balls (intersection of their sample bitsets), each
+    // checked with a bitset of k's balls against j's. The first pass tests every alive sample.
+    bool sample_dominance_full() {
+        samples_full_ = true;
+        bool any = false;
+        start_sample_pass();
+        for (uint32_t k = 0; k < m_; ++k)
+            if (s_alive[k]) any |= sample_dominates(k);
+        return any;
+    }
+
+    // After a complete pass no alive sample dominates another. A pair (k, j) can only become one
+    // (balls(k) ⊆ balls(j)) when k loses a ball, so the later passes test only the dirty samples
+    // as dominators.
+    bool sample_dominance_dirty() {
+        bool any = false;
+        start_sample_pass();
+        for (uint32_t k = 0; k < m_; ++k) {
+            if (!dirty_s_[k]) continue;
+            dirty_s_[k] = 0;
+            if (s_alive[k]) any |= sample_dominates(k);
+        }
+        return any;
+    }
+
+    // The alive samples at the start of a sample pass, as a bitset. Samples dropped during the
+    // pass stay in it: a dropped sample's dominator dominates what it does, so using it as a
+    // dominator drops nothing more (the kernel is the same as with the alive set of the moment).
+    void start_sample_pass() {
+        tested_.reset(wb_);
+        alive_.assign(ws_, 0);
+        for (uint32_t j = 0; j < m_; ++j)
+            if (s_alive[j]) set_bit(alive_.data(), j);
+    }
+
+    // Drops the samples that alive sample k dominates (or k itself, if an equal sample of lower
+    // index exists); true if any was dropped.
+    bool sample_dominates(uint32_t k) {
+        const uint32_t* lk = balls_of(k);
+        const uint32_t dk = sdeg(k);
+        if (dk == 0) return false;
+        uint32_t r[2];
+        two_rarest(lk, dk, [&](uint32_t b) { return bsize(b); }, r);
+        WordSet& K = tested_;  // k's balls, by slot
+        K.load(lk, dk, [&](uint32_t b) { return slot_[b]; });
+        uint64_t* R = acc_.data();
+        const uint64_t* X = &bits_b_[size_t(slot_[r[0]]) * ws_];
+        const uint64_t* Y = &bits_b_[size_t(slot_[r[1]]) * ws_];
+        for (size_t w = 0; w < ws_; ++w) R[w] = alive_[w] & X[w] & Y[w];
+        bool any = false;
+        for_each_bit(R, ws_, [&](uint32_t j) {
+            if (j == k || !s_alive[j] || sdeg(j) < dk || !K.in(&bits_s_[size_t(j) * wb_])) return false;
+            any = true;
+            if (sdeg(j) > dk || k < j) {
+                s_alive[j] = 0;  // k dominates j
+                return false;
+            }
+            s_alive[k] = 0;  // equal sets: the lower index j stays
+            return true;
+        });
+        return any;
+    }
+
+    // After a complete pass no alive ball dominates another. A pair (a, b) can only become one
+    // (samples(a) ⊆ samples(b)) when a loses a sample, so the later passes test only the dirty
+    // balls a: the candidates b are the alive balls containing a's two rarest samples
+    // (intersection of their ball bitsets), each checked with a bitset of a's samples against
+    // b's. The alive set is taken at the start of the pass (as in start_sample_pass).
+    bool ball_dominance_dirty() {
+        bool any = false;
+        tested_.reset(ws_);
+        alive_.assign(wb_, 0);
+        for (uint32_t a = 0; a < n_; ++a)
+            if (b_alive[a]) set_bit(alive_.data(), slot_[a]);
+        for (uint32_t a = 0; a < n_; ++a) {
+            if (!dirty_b_[a]) continue;
+            dirty_b_[a] = 0;
+            if (!b_alive[a] || bsize(a) == 0) continue;
+            const uint32_t* la = samples_of(a);
+            const uint32_t na = bsize(a);
+            uint32_t r[2];
+            two_rarest(la, na, [&](uint32_t j) { return sdeg(j); }, r);
+            WordSet& A = tested_;  // a's samples
+            A.load_sorted(la, na);
+            uint64_t* R = acc_.data();
+            const uint64_t* X = &bits_s_[size_t(r[0]) * wb_];
+            const uint64_t* Y = &bits_s_[size_t(r[1]) * wb_];
+            for (size_t w = 0; w < wb_; ++w) R[w] = alive_[w] & X[w] & Y[w];
+            const bool dominated = for_each_bit(R, wb_, [&](uint32_t t) {
+                const uint32_t b = ball_of_slot_[t];
+                if (b == a || bsize(b) < na || (bsize(b) == na && b > a)) return false;  // equal sets: lower index stays
+                return A.in(&bits_b_[size_t(t) * ws_]);
+            });
+            if (dominated) {
+                b_alive[a] = 0;
+                any = true;
+            }
+        }
+        return any;
+    }
+
+    // The two rarest members of a list (ties: the first; the same one twice if len == 1).
+    template <class Rarity>
+    static void two_rarest(const uint32_t* list, uint32_t len, Rarity rarity, uint32_t r[2]) {
+        r[0] = r[1] = list[0];
+        uint32_t q0 = rarity(list[0]), q1 = UINT32_MAX;
+        for (uint32_t e = 1; e < len; ++e) {
+            const uint32_t x = list[e], q = rarity(x);
+            if (q < q0) {
+                r[1] = r[0];
+                q1 = q0;
+                r[0] = x;
+                q0 = q;
+            } else if (q < q1) {
+                r[1] = x;
+                q1 = q;
+            }
+        }
+    }
+    // Calls f on the set bits in increasing order until it returns true; true if it did.
+    template <class F>
+    static bool for_each_bit(const uint64_t* bits, size_t words, F f) {
+        for (size_t w = 0; w < words; ++w)
+            for (uint64_t x = bits[w]; x; x &= x - 1)
+                if (f(uint32_t(w * 64 + __builtin_ctzll(x)))) return true;
+        return false;
+    }
+    static void set_bit(uint64_t* bits, uint32_t x) { bits[x >> 6] |= uint64_t(1) << (x & 63); }
+
+    // The tested element as a bitset that knows its non-zero words: subset tests look at those
+    // only and stop at the first word with a member outside the other set.
+    struct WordSet {
+        std::vector<uint64_t> bits;
+        std::vector<uint32_t> nz;  // nz[0 .. n_nz): the words with a member
+        uint32_t n_nz = 0;
+        void reset(size_t words) {
+            bits.assign(words, 0);
+            nz.assign(words + 1, 0);
+            n_nz = 0;
+        }
+        void clear() {
+            for (uint32_t i = 0; i < n_nz; ++i) bits[nz[i]] = 0;
+            n_nz = 0;
+        }
+        // members from an ascending list: one store per word
+        void load_sorted(const uint32_t* list, uint32_t len) {
+            clear();
+            if (len == 0) return;
+            uint64_t* b = bits.data();
+            uint32_t* z = nz.data();
+            uint32_t c = 0, cw = list[0] >> 6;
+            uint64_t acc = 0;
+            for (uint32_t k = 0; k < len; ++k) {
+                const uint32_t w = list[k] >> 6;
+                if (w != cw) {
+                    b[cw] = acc;
+                    z[c++] = cw;
+                    cw = w;
+                    acc = 0;
+                }
+                acc |= uint64_t(1) << (list[k] & 63);
+            }
+            b[cw] = acc;
+            z[c++] = cw;
+            n_nz = c;
+        }
+        // members map(list[k]), in any order
+        template <class Map>
+        void load(const uint32_t* list, uint32_t len, Map map) {
+            clear();
+            uint64_t* b = bits.data();
+            uint32_t* z = nz.data();
+            uint32_t c = 0;
+            for (uint32_t k = 0; k < len; ++k) {
+                const uint32_t x = map(list[k]);
+                const uint64_t w = b[x >> 6];
+                z[c] = x >> 6;  // kept only if the word was empty (branch-free)
+                c += w == 0;
+                b[x >> 6] = w | (uint64_t(1) << (x & 63));
+            }
+            n_nz = c;
+        }
+        bool in(const uint64_t* y) const {
+            for (uint32_t i = 0; i < n_nz; ++i)
+                if (bits[nz[i]] & ~y[nz[i]]) return false;
+            return true;
+        }
+    };
+
+    size_t n_ = 0, m_ = 0, nnz_ = 0;
+    // list of ball a: bs_[bbeg_[a] .. bend_[a]), of sample j: sb_[sbeg_[j] .. send_[j])
+    std::vector<uint32_t> bbeg_, bend_, sbeg_, send_;
+    const uint32_t* bs_ = nullptr;
+    const uint32_t* sb_ = nullptr;
+    std::unique_ptr<uint32_t[]> own_bs_, own_sb_;
+    std::vector<uint8_t> was_b_, was_s_;    // alive at the last rebuild
+    std::vector<uint8_t> mark_b_, mark_s_;  // list to compact at the next rebuild
+    bool balls_full_ = false, samples_full_ = false;
+    std::vector<uint8_t> dirty_b_, dirty_s_;
+    // Bitsets: samples of each ball kept by the first ball pass (by slot, ws_ words each) and
+    // balls (by slot) of each sample (wb_ words each).
+    std::vector<uint32_t> slot_;
+    uint32_t n_slots_ = 0;
+    size_t ws_ = 0, wb_ = 0;
+    std::vector<uint64_t> bits_b_, bits_s_;
+    std::vector<uint32_t> ball_of_slot_;
+    std::vector<uint64_t> alive_, acc_;  // alive set of a pass, candidates
+    WordSet tested_;
+    std::vector<uint32_t> scratch_;
+
+    friend Problem make_kernel(const Reducer& red);
+};
+
+// Reduce to the fixpoint from the reducer's current state.
+Status reduce_fixpoint(Reducer& red, const Monitor& monitor) {
+    // Ball dominance only changes when sample sets change and vice versa: rerun a phase only
+    // when the other one (or forcing) changed something. Ball dominance first: it usually
+    // removes most columns, which makes every later phase cheap.
+    bool need_balls = true, need_samples = true;
+    for (;;) {
+        if (monitor.cancelled()) return fail(Code::cancelled, "set cover: cancelled");
+        if (red.force_degree_one()) {
+            red.rebuild();
+            need_balls = need_samples = true;
+            continue;
+        }
+        if (need_balls) {
+            need_balls = false;
+            if (red.ball_dominance()) {
+                red.rebuild();
+                need_samples = true;
+            }
+            continue;
+        }
+        if (need_samples) {
+            need_samples = false;
+            if (red.sample_dominance()) {
+                red.rebuild();
+                need_balls = true;
+            }
+            continue;
+        }
+        break;
+    }
+    return Status::success();
+}
+
+Problem make_kernel(const Reducer& red) {
+    Problem P;
+    const size_t n = red.n_, m = red.m_;
+    std::vector<uint32_t> row_of(m, UINT32_MAX);
+    for (uint32_t j = 0; j < m; ++j)
+        if (red.s_alive[j]) { row_of[j] = uint32_t(P.row_id.size()); P.row_id.push_back(j); }
+    for (uint32_t a = 0; a < n; ++a)
+        if (red.b_alive[a]) P.col_id.push_back(a);
+    P.R = uint32_t(P.row_id.size());
+    P.C = uint32_t(P.col_id.size());
+    P.cptr.assign(P.C + 1, 0);
+    for (uint32_t c = 0; c < P.C; ++c) P.cptr[c + 1] = P.cptr[c] + red.bsize(P.col_id[c]);
+    P.crow.resize(P.cptr[P.C]);
+    for (uint32_t c = 0; c < P.C; ++c) {
+        const uint32_t* l = red.samples_of(P.col_id[c]);
+        for (uint32_t k = 0, e = red.bsize(P.col_id[c]); k < e; ++k) P.crow[P.cptr[c] + k] = row_of[l[k]];
+    }
+    // the reducer's sample lists are the transpose (alive balls, ascending): renumber them
+    std::vector<uint32_t> col_of(n, UINT32_MAX);
+    for (uint32_t c = 0; c < P.C; ++c) col_of[P.col_id[c]] = c;
+    P.rptr.assign(P.R + 1, 0);
+    for (uint32_t r = 0; r < P.R; ++r) P.rptr[r + 1] = P.rptr[r] + red.sdeg(P.row_id[r]);
+    P.rcol.resize(P.rptr[P.R]);
+    for (uint32_t r = 0; r < P.R; ++r) {
+        const uint32_t* l = red.balls_of(P.row_id[r]);
+        for (uint32_t k = 0, e = red.sdeg(P.row_id[r]); k < e; ++k) P.rcol[P.rptr[r] + k] = col_of[l[k]];
+    }
+    return P;
+}
+
+}  // namespace
+
+Status reduce_coverage(const Coverage& cov, bool transpose_ok, const std::vector<uint8_t>& required,
+                       const std::vector<uint8_t>& allowed, const std::vector<uint8_t>& locked, const Monitor& monitor,
+                       std::vector<uint32_t>& forced, Problem& kernel) {
+    const size_t n = cov.n_balls, m = cov.n_samples;
+    Reducer red;
+    red.s_alive = required;
+    red.b_alive = allowed;
+    bool masked = false;
+    for (size_t j = 0; j < m && !masked; ++j) masked = !required[j];
+    for (size_t a = 0; a < n && !masked; ++a) masked = !allowed[a] || locked[a];
+    // forced_in balls: selected even if they cover nothing required (they were asked for)
+    for (uint32_t a = 0; a < n; ++a)
+        if (locked[a]) {
+            red.forced.push_back(a);
+            red.b_alive[a] = 0;
+            for (uint32_t k = cov.ball_ptr[a]; k < cov.ball_ptr[a + 1]; ++k) red.s_alive[cov.ball_samples[k]] = 0;
+        }
+    if (transpose_ok) {
+        red.init(n, m, cov.ball_ptr.data(), cov.ball_samples.data(), cov.sample_ptr.data(), cov.sample_balls.data(),
+                 masked);
+    } else {
+        Coverage t;
+        t.n_samples = m;
+        t.n_balls = n;
+        t.ball_ptr = cov.ball_ptr;
+        t.ball_samples = cov.ball_samples;
+        t.build_transpose();
+        red.init(n, m, t.ball_ptr.data(), t.ball_samples.data(), t.sample_ptr.data(), t.sample_balls.data(), true);
+    }
+    Status st = reduce_fixpoint(red, monitor);
+    if (!st.ok()) return st;
+    forced = red.forced;
+    kernel = make_kernel(red);
+    return Status::success();
+}
+
+Status reduce_problem(const Problem& P, const Monitor& monitor, std::vector<uint32_t>& forced, Problem& kernel) {
+    Reducer red;
+    red.s_alive.assign(P.R, 1);
+    red.b_alive.assign(P.C, 1);
+    red.init(P.C, P.R, P.cptr.data(), P.crow.data(), P.rptr.data(), P.rcol.data(), false);
+    Status st = reduce_fixpoint(red, monitor);
+    if (!st.ok()) return st;
+    forced = red.forced;
+    kernel = make_kernel(red);
+    return Status::success();
+}
+
+}  // namespace sc
+}  // namespace ca
