@@ -15,23 +15,21 @@
 //
 // Cost. The first ball-dominance pass runs on the whole input (~13 000 balls, ~1 500 samples,
 // up to ~800 000 pairs) and removes most balls; the later passes only revisit what changed:
-//  - first ball pass: balls in order of decreasing size (ties: lower index first), each tested
-//    only against the balls kept so far (an element's dominators come before it in that order,
-//    and a dropped dominator has a kept one of its own), taken from the list of kept balls of its
-//    sample with the fewest kept balls; elements are bitsets of their members (24 words for 1500
-//    samples), so a subset test is a few word operations. The balls it keeps are the only ones
-//    that can be alive later: they get slots 0, 1, ..., and every sample a bitset of its kept
-//    balls' slots;
-//  - sample passes: each sample k tested as a dominator against the alive samples in its two
-//    smallest balls (an AND of two bitsets), one word test per candidate;
+//  - first ball pass (on lists): balls in order of decreasing size (ties: lower index first),
+//    each tested only against the balls kept so far (an element's dominators come before it in
+//    that order, and a dropped dominator has a kept one of its own), taken from the list of
+//    kept balls of its sample with the fewest kept balls; elements are bitsets of their
+//    members (24 words for 1500 samples), so a subset test is a few word operations;
+//  - after it, only the balls it kept can be alive: they get slots 0, 1, ..., and the state
+//    becomes bitwise (samples of each slot, slots of each sample, alive sets, list sizes kept
+//    up to date as elements die), so nothing is ever rebuilt;
+//  - sample passes: each sample k tested as a dominator against the alive samples in three of
+//    its balls (an AND of bitsets), one word test per candidate;
 //  - later ball passes: a pair can only become a dominance when the dominated ball lost a
 //    sample (a sample pass: the dominating sample lost a ball), so only those are tested,
-//    against the alive balls containing their two rarest samples (an AND of two bitsets);
-//  - bitsets are built once: an alive element of one list is in another's current list iff it
-//    is in its original one, so dead members in a bitset never matter;
-//  - lists are compacted in place after each change, only the ones that lost an element (a
-//    dead ball's samples, a dead sample's balls), keeping their order; when most balls died,
-//    the sample lists are rebuilt from the ball lists instead (cost: what is left).
+//    against the alive balls containing three of their samples (an AND of bitsets).
+// Before the first ball pass (forcing on the input), lists are compacted in place, only those
+// that lost an element.
 #include "setcover_internal.h"
 
 #include <algorithm>
@@ -176,6 +174,7 @@ public:
 
     // Samples with exactly one candidate ball force that ball.
     bool force_degree_one() {
+        if (bitwise_) return force_degree_one_bits();
         bool any = false;
         for (uint32_t j = 0; j < m_; ++j)
             if (s_alive[j] && sdeg(j) == 1) {
@@ -187,6 +186,11 @@ public:
 
     bool ball_dominance() { return balls_full_ ? ball_dominance_dirty() : ball_dominance_full(); }
     bool sample_dominance() { return samples_full_ ? sample_dominance_dirty() : sample_dominance_full(); }
+
+    // After the first ball pass the state is kept in bitsets (see below): nothing to rebuild.
+    void update() {
+        if (!bitwise_) rebuild();
+    }
 
 private:
     // First ball pass. Balls in order of decreasing size, ties lower index first: every
@@ -247,34 +251,97 @@ private:
         ball_of_slot_.resize(n_kept);
         for (uint32_t a = 0; a < n_; ++a)
             if (slot_[a] != UINT32_MAX) ball_of_slot_[slot_[a]] = a;
-        // the samples' bitsets of kept balls (by slot)
+        // From here on the state is bitwise: the samples' bitsets of kept balls (by slot), the
+        // alive sets, and the list sizes.
         wb_ = (size_t(n_kept) + 63) / 64;
         bits_s_.assign(m_ * wb_, 0);
         for (uint32_t j = 0; j < m_; ++j)
             for (uint32_t t = 0; t < nkept[j]; ++t) set_bit(&bits_s_[size_t(j) * wb_], kept[sbeg_[j] + t]);
+        alive_b_.assign(wb_, 0);
+        for (uint32_t t = 0; t < n_kept; ++t) set_bit(alive_b_.data(), t);
+        alive_s_.assign(ws_, 0);
+        deg_.assign(m_, 0);
+        for (uint32_t j = 0; j < m_; ++j)
+            if (s_alive[j]) {
+                set_bit(alive_s_.data(), j);
+                deg_[j] = nkept[j];
+            }
+        size_.resize(n_kept);
+        for (uint32_t t = 0; t < n_kept; ++t) size_[t] = bsize(ball_of_slot_[t]);
+        dirty_slot_.assign(n_kept, 0);
         acc_.assign(std::max(ws_, wb_), 0);
+        tested_.reset(std::max(ws_, wb_));
+        bitwise_ = true;
+        return any;
+    }
+
+    // ---- Bitwise state (after the first ball pass) ----
+    // Ball slot t: its samples at the first pass (bits_b_, ws_ words), size_[t] of them alive;
+    // sample j: its kept balls' slots (bits_s_, wb_ words), deg_[j] of them alive; alive_s_ /
+    // alive_b_: the alive sets. A member of a static bitset that died is masked by the alive
+    // set, so (static & alive) is always the current list. Deaths update the sizes and the dirty
+    // flags at once (the lists of the list-based version would change at the next rebuild; no
+    // phase result depends on it: a phase only uses the sizes of the side it does not remove
+    // from, and the other side's sizes only choose which candidates to look at).
+    static constexpr uint32_t kNone = UINT32_MAX;
+
+    void kill_ball(uint32_t t) {
+        clear_bit(alive_b_.data(), t);
+        b_alive[ball_of_slot_[t]] = 0;
+        for_each_common(&bits_b_[size_t(t) * ws_], alive_s_.data(), ws_, [&](uint32_t j) {
+            deg_[j]--;
+            if (samples_full_) dirty_s_[j] = 1;
+            return false;
+        });
+    }
+    void kill_sample(uint32_t j) {
+        clear_bit(alive_s_.data(), j);
+        s_alive[j] = 0;
+        for_each_common(&bits_s_[size_t(j) * wb_], alive_b_.data(), wb_, [&](uint32_t t) {
+            dirty_slot_[t] = 1;
+            if (--size_[t] == 0) kill_ball(t);  // empty ball (it has no alive sample left)
+            return false;
+        });
+    }
+    void select_slot(uint32_t t) {
+        forced.push_back(ball_of_slot_[t]);
+        kill_ball(t);
+        for_each_common(&bits_b_[size_t(t) * ws_], alive_s_.data(), ws_, [&](uint32_t j) {
+            kill_sample(j);
+            return false;
+        });
+    }
+
+    bool force_degree_one_bits() {
+        bool any = false;
+        for (uint32_t j = 0; j < m_; ++j)
+            if (s_alive[j] && deg_[j] == 1) {
+                uint32_t t = kNone;
+                for_each_common(&bits_s_[size_t(j) * wb_], alive_b_.data(), wb_, [&](uint32_t u) {
+                    t = u;
+                    return true;
+                });
+                select_slot(t);
+                any = true;
+            }
         return any;
     }
 
     // Sample passes: sample j is dropped if an alive sample k has balls(k) ⊆ balls(j) (equal
     // sets: keep the lower index). Each sample k is tested as a dominator: the candidates j are
-    // the alive samples in k's two smallest balls (intersection of their sample bitsets), each
-    // checked with a bitset of k's balls against j's. The first pass tests every alive sample.
+    // the alive samples in three of k's balls (the first, a middle and the last slot: an AND of
+    // bitsets), each checked with k's balls against j's, one word operation per word. The first
+    // pass tests every alive sample, the later ones only the samples that lost a ball since: a
+    // pair (k, j) can only become a dominance (balls(k) ⊆ balls(j)) when k loses a ball.
     bool sample_dominance_full() {
         samples_full_ = true;
         bool any = false;
-        start_sample_pass();
         for (uint32_t k = 0; k < m_; ++k)
             if (s_alive[k]) any |= sample_dominates(k);
         return any;
     }
-
-    // After a complete pass no alive sample dominates another. A pair (k, j) can only become one
-    // (balls(k) ⊆ balls(j)) when k loses a ball, so the later passes test only the dirty samples
-    // as dominators.
     bool sample_dominance_dirty() {
         bool any = false;
-        start_sample_pass();
         for (uint32_t k = 0; k < m_; ++k) {
             if (!dirty_s_[k]) continue;
             dirty_s_[k] = 0;
@@ -283,100 +350,68 @@ private:
         return any;
     }
 
-    // The alive samples at the start of a sample pass, as a bitset. Samples dropped during the
-    // pass stay in it: a dropped sample's dominator dominates what it does, so using it as a
-    // dominator drops nothing more (the kernel is the same as with the alive set of the moment).
-    void start_sample_pass() {
-        tested_.reset(wb_);
-        alive_.assign(ws_, 0);
-        for (uint32_t j = 0; j < m_; ++j)
-            if (s_alive[j]) set_bit(alive_.data(), j);
-    }
-
     // Drops the samples that alive sample k dominates (or k itself, if an equal sample of lower
-    // index exists); true if any was dropped.
+    // index exists); true if any was dropped. A dropped sample's dominator dominates what it
+    // does, so the order of the tests does not change the outcome.
     bool sample_dominates(uint32_t k) {
-        const uint32_t* lk = balls_of(k);
-        const uint32_t dk = sdeg(k);
-        if (dk == 0) return false;
-        uint32_t r[2];
-        two_rarest(lk, dk, [&](uint32_t b) { return bsize(b); }, r);
-        WordSet& K = tested_;  // k's balls, by slot
-        K.load(lk, dk, [&](uint32_t b) { return slot_[b]; });
+        const uint32_t dk = deg_[k];
+        WordSet& K = tested_;  // k's alive balls, by slot
+        K.load_and(&bits_s_[size_t(k) * wb_], alive_b_.data(), wb_);
+        uint32_t pick[3];
+        if (!K.spread(pick)) return false;
         uint64_t* R = acc_.data();
-        const uint64_t* X = &bits_b_[size_t(slot_[r[0]]) * ws_];
-        const uint64_t* Y = &bits_b_[size_t(slot_[r[1]]) * ws_];
-        for (size_t w = 0; w < ws_; ++w) R[w] = alive_[w] & X[w] & Y[w];
+        const uint64_t* X = &bits_b_[size_t(pick[0]) * ws_];
+        const uint64_t* Y = &bits_b_[size_t(pick[1]) * ws_];
+        const uint64_t* Z = &bits_b_[size_t(pick[2]) * ws_];
+        for (size_t w = 0; w < ws_; ++w) R[w] = alive_s_[w] & X[w] & Y[w] & Z[w];
+        clear_bit(R, k);
         bool any = false;
         for_each_bit(R, ws_, [&](uint32_t j) {
-            if (j == k || !s_alive[j] || sdeg(j) < dk || !K.in(&bits_s_[size_t(j) * wb_])) return false;
+            if (!s_alive[j] || deg_[j] < dk || !K.in(&bits_s_[size_t(j) * wb_])) return false;
             any = true;
-            if (sdeg(j) > dk || k < j) {
-                s_alive[j] = 0;  // k dominates j
+            if (deg_[j] > dk || k < j) {
+                kill_sample(j);  // k dominates j
                 return false;
             }
-            s_alive[k] = 0;  // equal sets: the lower index j stays
+            kill_sample(k);  // equal sets: the lower index j stays
             return true;
         });
         return any;
     }
 
-    // After a complete pass no alive ball dominates another. A pair (a, b) can only become one
-    // (samples(a) ⊆ samples(b)) when a loses a sample, so the later passes test only the dirty
-    // balls a: the candidates b are the alive balls containing a's two rarest samples
-    // (intersection of their ball bitsets), each checked with a bitset of a's samples against
-    // b's. The alive set is taken at the start of the pass (as in start_sample_pass).
+    // Later ball passes: a pair (a, b) can only become a dominance (samples(a) ⊆ samples(b))
+    // when a loses a sample, so only those balls are tested: the candidates b are the alive
+    // balls containing three of a's samples (the first, a middle and the last: an AND of
+    // bitsets), each checked with a's samples against b's.
     bool ball_dominance_dirty() {
         bool any = false;
-        tested_.reset(ws_);
-        alive_.assign(wb_, 0);
-        for (uint32_t a = 0; a < n_; ++a)
-            if (b_alive[a]) set_bit(alive_.data(), slot_[a]);
-        for (uint32_t a = 0; a < n_; ++a) {
-            if (!dirty_b_[a]) continue;
-            dirty_b_[a] = 0;
-            if (!b_alive[a] || bsize(a) == 0) continue;
-            const uint32_t* la = samples_of(a);
-            const uint32_t na = bsize(a);
-            uint32_t r[2];
-            two_rarest(la, na, [&](uint32_t j) { return sdeg(j); }, r);
-            WordSet& A = tested_;  // a's samples
-            A.load_sorted(la, na);
+        for (uint32_t t = 0; t < n_slots_; ++t) {
+            if (!dirty_slot_[t]) continue;
+            dirty_slot_[t] = 0;
+            if (!bit(alive_b_.data(), t)) continue;
+            const uint32_t a = ball_of_slot_[t], na = size_[t];
+            WordSet& A = tested_;  // a's alive samples
+            A.load_and(&bits_b_[size_t(t) * ws_], alive_s_.data(), ws_);
+            uint32_t pick[3];
+            if (!A.spread(pick)) continue;
             uint64_t* R = acc_.data();
-            const uint64_t* X = &bits_s_[size_t(r[0]) * wb_];
-            const uint64_t* Y = &bits_s_[size_t(r[1]) * wb_];
-            for (size_t w = 0; w < wb_; ++w) R[w] = alive_[w] & X[w] & Y[w];
-            const bool dominated = for_each_bit(R, wb_, [&](uint32_t t) {
-                const uint32_t b = ball_of_slot_[t];
-                if (b == a || bsize(b) < na || (bsize(b) == na && b > a)) return false;  // equal sets: lower index stays
-                return A.in(&bits_b_[size_t(t) * ws_]);
+            const uint64_t* X = &bits_s_[size_t(pick[0]) * wb_];
+            const uint64_t* Y = &bits_s_[size_t(pick[1]) * wb_];
+            const uint64_t* Z = &bits_s_[size_t(pick[2]) * wb_];
+            for (size_t w = 0; w < wb_; ++w) R[w] = alive_b_[w] & X[w] & Y[w] & Z[w];
+            clear_bit(R, t);
+            const bool dominated = for_each_bit(R, wb_, [&](uint32_t u) {
+                if (size_[u] < na || (size_[u] == na && ball_of_slot_[u] > a)) return false;  // equal: lower index stays
+                return A.in(&bits_b_[size_t(u) * ws_]);
             });
             if (dominated) {
-                b_alive[a] = 0;
+                kill_ball(t);
                 any = true;
             }
         }
         return any;
     }
 
-    // The two rarest members of a list (ties: the first; the same one twice if len == 1).
-    template <class Rarity>
-    static void two_rarest(const uint32_t* list, uint32_t len, Rarity rarity, uint32_t r[2]) {
-        r[0] = r[1] = list[0];
-        uint32_t q0 = rarity(list[0]), q1 = UINT32_MAX;
-        for (uint32_t e = 1; e < len; ++e) {
-            const uint32_t x = list[e], q = rarity(x);
-            if (q < q0) {
-                r[1] = r[0];
-                q1 = q0;
-                r[0] = x;
-                q0 = q;
-            } else if (q < q1) {
-                r[1] = x;
-                q1 = q;
-            }
-        }
-    }
     // Calls f on the set bits in increasing order until it returns true; true if it did.
     template <class F>
     static bool for_each_bit(const uint64_t* bits, size_t words, F f) {
@@ -385,7 +420,17 @@ private:
                 if (f(uint32_t(w * 64 + __builtin_ctzll(x)))) return true;
         return false;
     }
+    // Calls f on the members of x & y in increasing order until it returns true.
+    template <class F>
+    static bool for_each_common(const uint64_t* x, const uint64_t* y, size_t words, F f) {
+        for (size_t w = 0; w < words; ++w)
+            for (uint64_t v = x[w] & y[w]; v; v &= v - 1)
+                if (f(uint32_t(w * 64 + __builtin_ctzll(v)))) return true;
+        return false;
+    }
     static void set_bit(uint64_t* bits, uint32_t x) { bits[x >> 6] |= uint64_t(1) << (x & 63); }
+    static void clear_bit(uint64_t* bits, uint32_t x) { bits[x >> 6] &= ~(uint64_t(1) << (x & 63)); }
+    static bool bit(const uint64_t* bits, uint32_t x) { return (bits[x >> 6] >> (x & 63)) & 1; }
 
     // The tested element as a bitset that knows its non-zero words: subset tests look at those
     // only and stop at the first word with a member outside the other set.
@@ -440,6 +485,30 @@ private:
             }
             n_nz = c;
         }
+        // members: x & y (words words)
+        void load_and(const uint64_t* x, const uint64_t* y, size_t words) {
+            clear();
+            uint64_t* b = bits.data();
+            uint32_t* z = nz.data();
+            uint32_t c = 0;
+            for (size_t w = 0; w < words; ++w) {
+                const uint64_t v = x[w] & y[w];
+                b[w] = v;
+                z[c] = uint32_t(w);
+                c += v != 0;
+            }
+            n_nz = c;
+        }
+        // Three members spread over the set (lowest, one of the middle word, highest); false if
+        // the set is empty.
+        bool spread(uint32_t pick[3]) const {
+            if (n_nz == 0) return false;
+            const uint32_t lo = nz[0], mid = nz[n_nz / 2], hi = nz[n_nz - 1];
+            pick[0] = lo * 64 + uint32_t(__builtin_ctzll(bits[lo]));
+            pick[1] = mid * 64 + uint32_t(__builtin_ctzll(bits[mid]));
+            pick[2] = hi * 64 + 63 - uint32_t(__builtin_clzll(bits[hi]));
+            return true;
+        }
         bool in(const uint64_t* y) const {
             for (uint32_t i = 0; i < n_nz; ++i)
                 if (bits[nz[i]] & ~y[nz[i]]) return false;
@@ -464,7 +533,10 @@ private:
     size_t ws_ = 0, wb_ = 0;
     std::vector<uint64_t> bits_b_, bits_s_;
     std::vector<uint32_t> ball_of_slot_;
-    std::vector<uint64_t> alive_, acc_;  // alive set of a pass, candidates
+    bool bitwise_ = false;
+    std::vector<uint64_t> alive_s_, alive_b_, acc_;  // alive sets, candidates
+    std::vector<uint32_t> deg_, size_;               // alive balls of a sample, alive samples of a slot
+    std::vector<uint8_t> dirty_slot_;                // dirty_b_ by slot
     WordSet tested_;
     std::vector<uint32_t> scratch_;
 
@@ -480,14 +552,14 @@ Status reduce_fixpoint(Reducer& red, const Monitor& monitor) {
     for (;;) {
         if (monitor.cancelled()) return fail(Code::cancelled, "set cover: cancelled");
         if (red.force_degree_one()) {
-            red.rebuild();
+            red.update();
             need_balls = need_samples = true;
             continue;
         }
         if (need_balls) {
             need_balls = false;
             if (red.ball_dominance()) {
-                red.rebuild();
+                red.update();
                 need_samples = true;
             }
             continue;
@@ -495,7 +567,7 @@ Status reduce_fixpoint(Reducer& red, const Monitor& monitor) {
         if (need_samples) {
             need_samples = false;
             if (red.sample_dominance()) {
-                red.rebuild();
+                red.update();
                 need_balls = true;
             }
             continue;
@@ -505,6 +577,7 @@ Status reduce_fixpoint(Reducer& red, const Monitor& monitor) {
     return Status::success();
 }
 
+// The kernel as a compact problem (lists ascending in both directions).
 Problem make_kernel(const Reducer& red) {
     Problem P;
     const size_t n = red.n_, m = red.m_;
@@ -516,22 +589,21 @@ Problem make_kernel(const Reducer& red) {
     P.R = uint32_t(P.row_id.size());
     P.C = uint32_t(P.col_id.size());
     P.cptr.assign(P.C + 1, 0);
-    for (uint32_t c = 0; c < P.C; ++c) P.cptr[c + 1] = P.cptr[c] + red.bsize(P.col_id[c]);
-    P.crow.resize(P.cptr[P.C]);
     for (uint32_t c = 0; c < P.C; ++c) {
-        const uint32_t* l = red.samples_of(P.col_id[c]);
-        for (uint32_t k = 0, e = red.bsize(P.col_id[c]); k < e; ++k) P.crow[P.cptr[c] + k] = row_of[l[k]];
+        const uint32_t a = P.col_id[c];
+        if (red.bitwise_) {
+            Reducer::for_each_common(&red.bits_b_[size_t(red.slot_[a]) * red.ws_], red.alive_s_.data(), red.ws_,
+                                     [&](uint32_t j) {
+                                         P.crow.push_back(row_of[j]);
+                                         return false;
+                                     });
+        } else {
+            const uint32_t* l = red.samples_of(a);
+            for (uint32_t k = 0, e = red.bsize(a); k < e; ++k) P.crow.push_back(row_of[l[k]]);
+        }
+        P.cptr[c + 1] = uint32_t(P.crow.size());
     }
-    // the reducer's sample lists are the transpose (alive balls, ascending): renumber them
-    std::vector<uint32_t> col_of(n, UINT32_MAX);
-    for (uint32_t c = 0; c < P.C; ++c) col_of[P.col_id[c]] = c;
-    P.rptr.assign(P.R + 1, 0);
-    for (uint32_t r = 0; r < P.R; ++r) P.rptr[r + 1] = P.rptr[r] + red.sdeg(P.row_id[r]);
-    P.rcol.resize(P.rptr[P.R]);
-    for (uint32_t r = 0; r < P.R; ++r) {
-        const uint32_t* l = red.balls_of(P.row_id[r]);
-        for (uint32_t k = 0, e = red.sdeg(P.row_id[r]); k < e; ++k) P.rcol[P.rptr[r] + k] = col_of[l[k]];
-    }
+    fill_rows(P);
     return P;
 }
 
