@@ -226,13 +226,7 @@ private:
         for (uint32_t a : order) {
             const uint32_t* la = samples_of(a);
             const uint32_t na = bsize(a);
-            A.load_sorted(la, na);
-            uint32_t key = la[0], rk = nkept[la[0]];
-            for (uint32_t k = 1; k < na; ++k) {
-                const uint32_t r = nkept[la[k]];
-                key = r < rk ? la[k] : key;
-                rk = r < rk ? r : rk;
-            }
+            const uint32_t key = A.load_sorted(la, na, nkept.data());
             const uint32_t* cand = &kept[sbeg_[key]];
             bool dominated = false;
             for (uint32_t t = 0, nc = nkept[key]; t < nc && !dominated; ++t)
@@ -447,43 +441,30 @@ private:
             for (uint32_t i = 0; i < n_nz; ++i) bits[nz[i]] = 0;
             n_nz = 0;
         }
-        // members from an ascending list: one store per word
-        void load_sorted(const uint32_t* list, uint32_t len) {
+        // Members from an ascending list (one store per word); returns the member x with the
+        // smallest rarity[x] (ties: the first).
+        uint32_t load_sorted(const uint32_t* list, uint32_t len, const uint32_t* rarity) {
             clear();
-            if (len == 0) return;
             uint64_t* b = bits.data();
             uint32_t* z = nz.data();
-            uint32_t c = 0, cw = list[0] >> 6;
+            uint32_t c = 0, cw = list[0] >> 6, key = list[0], rk = rarity[list[0]];
             uint64_t acc = 0;
             for (uint32_t k = 0; k < len; ++k) {
-                const uint32_t w = list[k] >> 6;
+                const uint32_t x = list[k], w = x >> 6, r = rarity[x];
+                key = r < rk ? x : key;
+                rk = r < rk ? r : rk;
                 if (w != cw) {
                     b[cw] = acc;
                     z[c++] = cw;
                     cw = w;
                     acc = 0;
                 }
-                acc |= uint64_t(1) << (list[k] & 63);
+                acc |= uint64_t(1) << (x & 63);
             }
             b[cw] = acc;
             z[c++] = cw;
             n_nz = c;
-        }
-        // members map(list[k]), in any order
-        template <class Map>
-        void load(const uint32_t* list, uint32_t len, Map map) {
-            clear();
-            uint64_t* b = bits.data();
-            uint32_t* z = nz.data();
-            uint32_t c = 0;
-            for (uint32_t k = 0; k < len; ++k) {
-                const uint32_t x = map(list[k]);
-                const uint64_t w = b[x >> 6];
-                z[c] = x >> 6;  // kept only if the word was empty (branch-free)
-                c += w == 0;
-                b[x >> 6] = w | (uint64_t(1) << (x & 63));
-            }
-            n_nz = c;
+            return key;
         }
         // members: x & y (words words)
         void load_and(const uint64_t* x, const uint64_t* y, size_t words) {
@@ -591,17 +572,22 @@ Problem make_kernel(const Reducer& red) {
     P.cptr.assign(P.C + 1, 0);
     for (uint32_t c = 0; c < P.C; ++c) {
         const uint32_t a = P.col_id[c];
+        P.cptr[c + 1] = P.cptr[c] + (red.bitwise_ ? red.size_[red.slot_[a]] : red.bsize(a));
+    }
+    P.crow.resize(P.cptr[P.C]);
+    for (uint32_t c = 0; c < P.C; ++c) {
+        const uint32_t a = P.col_id[c];
+        uint32_t* out = &P.crow[P.cptr[c]];
         if (red.bitwise_) {
             Reducer::for_each_common(&red.bits_b_[size_t(red.slot_[a]) * red.ws_], red.alive_s_.data(), red.ws_,
                                      [&](uint32_t j) {
-                                         P.crow.push_back(row_of[j]);
+                                         *out++ = row_of[j];
                                          return false;
                                      });
         } else {
             const uint32_t* l = red.samples_of(a);
-            for (uint32_t k = 0, e = red.bsize(a); k < e; ++k) P.crow.push_back(row_of[l[k]]);
+            for (uint32_t k = 0, e = red.bsize(a); k < e; ++k) *out++ = row_of[l[k]];
         }
-        P.cptr[c + 1] = uint32_t(P.crow.size());
     }
     fill_rows(P);
     return P;
