@@ -66,7 +66,6 @@ public:
         was_s_.assign(m_, 1);
         mark_b_.assign(n_, 0);
         mark_s_.assign(m_, 0);
-        dirty_b_.assign(n_, 0);
         dirty_s_.assign(m_, 0);
         for (size_t a = 0; a < n_; ++a)
             if (bend_[a] == bbeg_[a]) b_alive[a] = was_b_[a] = 0;
@@ -78,12 +77,10 @@ public:
     const uint32_t* balls_of(uint32_t j) const { return sb_ + sbeg_[j]; }   // alive, ascending
     const uint32_t* samples_of(uint32_t a) const { return bs_ + bbeg_[a]; }  // alive, ascending
 
-    // Bring the lists up to date after balls / samples died: the lists of the balls that lost a
-    // sample and of the samples that lost a ball are compacted in place (all of them the first
-    // time, from the input's arrays into the reducer's own). Records what changed for the
-    // incremental dominance passes: an alive ball that lost a sample is dirty for ball
-    // dominance, an alive sample that lost a ball is dirty for sample dominance (both only once
-    // the first complete pass of that test is done). A ball left without samples dies.
+    // Bring the lists up to date after balls / samples died (only before the first ball pass,
+    // see update): the lists of the balls that lost a sample and of the samples that lost a ball
+    // are compacted in place (all of them the first time, from the input's arrays into the
+    // reducer's own). A ball left without samples dies.
     void rebuild() {
         const bool from_input = !own_bs_ && nnz_ > 0;
         if (from_input) {  // not initialised: only the alive lists are ever read
@@ -127,7 +124,6 @@ public:
                 obs[w] = x;
                 w += s_alive[x];
             }
-            if (w < bend_[a] && balls_full_) dirty_b_[a] = 1;
             bend_[a] = w;
             if (w == bbeg_[a]) b_alive[a] = was_b_[a] = 0;  // its samples are all dead: no alive list has it
         }
@@ -144,9 +140,7 @@ public:
                     }
             for (uint32_t j = 0; j < m_; ++j) {
                 if (!s_alive[j]) continue;
-                const uint32_t w = sbeg_[j] + len[j];
-                if (w < send_[j] && samples_full_) dirty_s_[j] = 1;
-                send_[j] = w;
+                send_[j] = sbeg_[j] + len[j];
             }
         } else {
             for (uint32_t j = 0; j < m_; ++j) {
@@ -158,7 +152,6 @@ public:
                     osb[w] = x;
                     w += b_alive[x];
                 }
-                if (w < send_[j] && samples_full_) dirty_s_[j] = 1;
                 send_[j] = w;
             }
         }
@@ -506,7 +499,7 @@ private:
     std::vector<uint8_t> was_b_, was_s_;    // alive at the last rebuild
     std::vector<uint8_t> mark_b_, mark_s_;  // list to compact at the next rebuild
     bool balls_full_ = false, samples_full_ = false;
-    std::vector<uint8_t> dirty_b_, dirty_s_;
+    std::vector<uint8_t> dirty_s_;  // sample lost a ball since its last test (after the first sample pass)
     // Bitsets: samples of each ball kept by the first ball pass (by slot, ws_ words each) and
     // balls (by slot) of each sample (wb_ words each).
     std::vector<uint32_t> slot_;
@@ -517,7 +510,7 @@ private:
     bool bitwise_ = false;
     std::vector<uint64_t> alive_s_, alive_b_, acc_;  // alive sets, candidates
     std::vector<uint32_t> deg_, size_;               // alive balls of a sample, alive samples of a slot
-    std::vector<uint8_t> dirty_slot_;                // dirty_b_ by slot
+    std::vector<uint8_t> dirty_slot_;                // ball lost a sample since its last test
     WordSet tested_;
     std::vector<uint32_t> scratch_;
 
