@@ -1,5 +1,5 @@
-// setcover.cpp: minimum set cover of the samples by the candidate balls (see setcover.h): the
-// reduction (on the input and on compact problems) and the solve driver. Building blocks are in
+// setcover.cpp: minimum set cover of the samples by the candidate balls (see setcover.h): input
+// checks and the solve driver. The reduction is in setcover_reduce.cpp, building blocks in
 // setcover_problem.cpp, the exact machinery in setcover_exact.cpp (setcover_internal.h).
 //
 // Pipeline: input checks -> reduction to a fixpoint (forced balls, degree-1 samples, dominated
@@ -38,359 +38,6 @@
 
 namespace ca {
 
-namespace sc {
-
-// ---------------------------------------------------------------------------------------------
-// Reduction on the original index space. Dead balls / samples keep empty lists.
-class Reducer {
-public:
-    Reducer(size_t n_balls, size_t n_samples) : n_(n_balls), m_(n_samples) {}
-
-    std::vector<uint8_t> s_alive, b_alive;  // sample still to be covered / ball still a candidate
-    // Current lists: either views of the coverage itself (first round, when nothing is masked)
-    // or the reducer's own compacted copies. Dead balls have empty lists once compacted.
-    const uint32_t* bptr = nullptr;  // ball -> alive samples
-    const uint32_t* bs = nullptr;
-    const uint32_t* sptr = nullptr;  // sample -> alive balls (ascending)
-    const uint32_t* sb = nullptr;
-    std::vector<uint32_t> forced;    // selected by the reduction (forced_in + degree 1)
-
-    uint32_t bsize(uint32_t a) const { return bptr[a + 1] - bptr[a]; }
-    uint32_t sdeg(uint32_t j) const { return sptr[j + 1] - sptr[j]; }
-
-    // Initial lists. With every sample required, every ball allowed and a consistent transpose
-    // in `cov`, the coverage's own arrays are used as they are (no copy); otherwise the lists
-    // are copied restricted to the alive sets.
-    void init(const Coverage& cov, bool use_view) {
-        if (use_view) {
-            bptr = cov.ball_ptr.data();
-            bs = cov.ball_samples.data();
-            sptr = cov.sample_ptr.data();
-            sb = cov.sample_balls.data();
-            for (size_t a = 0; a < n_; ++a)
-                if (bptr[a + 1] == bptr[a]) b_alive[a] = 0;
-            return;
-        }
-        own_bptr.assign(n_ + 1, 0);
-        own_bs.clear();
-        for (size_t a = 0; a < n_; ++a) {
-            if (b_alive[a])
-                for (uint32_t k = cov.ball_ptr[a]; k < cov.ball_ptr[a + 1]; ++k)
-                    if (s_alive[cov.ball_samples[k]]) own_bs.push_back(cov.ball_samples[k]);
-            own_bptr[a + 1] = uint32_t(own_bs.size());
-        }
-        finish_rebuild();
-    }
-
-    // Drop dead samples/balls from the lists (cost: the current lists, not the original ones).
-    // Records what changed for the incremental dominance passes: an alive ball that lost a
-    // sample is dirty for ball dominance, an alive sample that lost a ball (a ball of its list
-    // died) is dirty for sample dominance.
-    void rebuild() {
-        dirty_b_.resize(n_, 0);
-        dirty_s_.resize(m_, 0);
-        std::vector<uint32_t> nptr(n_ + 1, 0), ns;
-        ns.reserve(bptr[n_]);
-        for (size_t a = 0; a < n_; ++a) {
-            if (b_alive[a]) {
-                for (uint32_t k = bptr[a]; k < bptr[a + 1]; ++k)
-                    if (s_alive[bs[k]]) ns.push_back(bs[k]);
-                if (balls_full_ && ns.size() - nptr[a] < bsize(uint32_t(a))) dirty_b_[a] = 1;
-            } else if (samples_full_) {  // before the first complete pass nothing is tracked
-                for (uint32_t k = bptr[a]; k < bptr[a + 1]; ++k) dirty_s_[bs[k]] = 1;
-            }
-            nptr[a + 1] = uint32_t(ns.size());
-        }
-        own_bptr.swap(nptr);
-        own_bs.swap(ns);
-        finish_rebuild();
-    }
-
-    void select(uint32_t b) {
-        forced.push_back(b);
-        b_alive[b] = 0;
-        for (uint32_t k = bptr[b]; k < bptr[b + 1]; ++k) s_alive[bs[k]] = 0;
-    }
-
-    // Samples with exactly one candidate ball force that ball.
-    bool force_degree_one() {
-        bool any = false;
-        for (uint32_t j = 0; j < m_; ++j)
-            if (s_alive[j] && sdeg(j) == 1) {
-                select(sb[sptr[j]]);
-                any = true;
-            }
-        return any;
-    }
-
-    // Sample j is dropped if an alive sample k has balls(k) ⊆ balls(j) (equal sets: keep the
-    // lower index): covering k covers j. Candidates k are grouped by their rarest ball, which
-    // must be one of j's balls; the subset test uses a stamp of j's balls, first on a few
-    // inline probes (k's next rarest balls, cache-friendly), then on k's whole list.
-    bool sample_dominance() {
-        if (samples_full_) return sample_dominance_dirty();
-        samples_full_ = true;
-        dirty_s_.assign(m_, 0);
-        std::vector<uint32_t> gptr(n_ + 1, 0);
-        std::vector<Probe> pr(m_);
-        for (uint32_t j = 0; j < m_; ++j) {
-            if (!s_alive[j] || sdeg(j) == 0) continue;
-            make_probe(&sb[sptr[j]], sdeg(j), [&](uint32_t b) { return bsize(b); }, pr[j]);
-            gptr[pr[j].key + 1]++;
-        }
-        for (size_t b = 0; b < n_; ++b) gptr[b + 1] += gptr[b];
-        std::vector<uint32_t> g(gptr[n_]), fill(gptr.begin(), gptr.end() - 1);
-        for (uint32_t j = 0; j < m_; ++j)
-            if (s_alive[j] && sdeg(j) > 0) g[fill[pr[j].key]++] = j;
-        stamp_b_.assign(n_, 0);
-        uint32_t stamp = 0;
-        bool any = false;
-        for (uint32_t j = 0; j < m_; ++j) {
-            if (!s_alive[j]) continue;
-            ++stamp;
-            for (uint32_t k = sptr[j]; k < sptr[j + 1]; ++k) stamp_b_[sb[k]] = stamp;
-            const uint32_t dj = sdeg(j);
-            bool dominated = false;
-            for (uint32_t q = sptr[j]; q < sptr[j + 1] && !dominated; ++q) {
-                const uint32_t b = sb[q];
-                for (uint32_t t = gptr[b]; t < gptr[b + 1]; ++t) {
-                    const uint32_t k = g[t];
-                    const Probe& P = pr[k];
-                    if (k == j || P.size > dj || (P.size == dj && k > j) || !s_alive[k]) continue;
-                    if (!probe_ok(P, stamp_b_, stamp)) continue;
-                    bool subset = true;
-                    for (uint32_t e = sptr[k]; e < sptr[k + 1]; ++e)
-                        if (stamp_b_[sb[e]] != stamp) { subset = false; break; }
-                    if (subset) { dominated = true; break; }
-                }
-            }
-            if (dominated) {
-                s_alive[j] = 0;
-                any = true;
-            }
-        }
-        return any;
-    }
-
-    // Ball a is dropped if an alive ball b has samples(a) ⊆ samples(b) (equal sets: keep the
-    // lower index). Supersets b are visited largest first with their samples stamped; the
-    // candidates a are grouped by their rarest sample (which b must contain); dead candidates
-    // are removed from the groups as they are met. Same probe filter as above.
-    bool ball_dominance() {
-        if (balls_full_) return ball_dominance_dirty();
-        balls_full_ = true;
-        dirty_b_.assign(n_, 0);
-        std::vector<uint32_t> gptr(m_ + 1, 0), order;
-        std::vector<Probe> pr(n_);
-        order.reserve(n_);
-        for (uint32_t a = 0; a < n_; ++a) {
-            if (!b_alive[a]) continue;
-            make_probe(&bs[bptr[a]], bsize(a), [&](uint32_t j) { return sdeg(j); }, pr[a]);
-            gptr[pr[a].key + 1]++;
-            order.push_back(a);
-        }
-        for (size_t j = 0; j < m_; ++j) gptr[j + 1] += gptr[j];
-        std::vector<uint32_t> g(gptr[m_]), gend(gptr.begin(), gptr.end() - 1);
-        for (uint32_t a : order) g[gend[pr[a].key]++] = a;
-        std::sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) {
-            const uint32_t sx = bsize(x), sy = bsize(y);
-            return sx != sy ? sx > sy : x < y;
-        });
-        stamp_s_.assign(m_, 0);
-        uint32_t stamp = 0;
-        bool any = false;
-        for (uint32_t b : order) {
-            if (!b_alive[b]) continue;  // whatever dominates b also dominates b's subsets
-            ++stamp;
-            for (uint32_t k = bptr[b]; k < bptr[b + 1]; ++k) stamp_s_[bs[k]] = stamp;
-            const uint32_t nb = bsize(b);
-            for (uint32_t q = bptr[b]; q < bptr[b + 1]; ++q) {
-                const uint32_t j = bs[q];
-                uint32_t t = gptr[j];
-                while (t < gend[j]) {
-                    const uint32_t a = g[t];
-                    if (!b_alive[a]) { g[t] = g[--gend[j]]; continue; }
-                    const Probe& P = pr[a];
-                    if (a == b || P.size > nb || (P.size == nb && a < b) || !probe_ok(P, stamp_s_, stamp)) {
-                        ++t;
-                        continue;
-                    }
-                    bool subset = true;
-                    for (uint32_t e = bptr[a]; e < bptr[a + 1]; ++e)
-                        if (stamp_s_[bs[e]] != stamp) { subset = false; break; }
-                    if (subset) {
-                        b_alive[a] = 0;
-                        any = true;
-                        g[t] = g[--gend[j]];
-                    } else {
-                        ++t;
-                    }
-                }
-            }
-        }
-        return any;
-    }
-
-    // After a complete pass no alive sample dominates another. A pair (k, j) can only become
-    // one (balls(k) ⊆ balls(j)) when k loses a ball, so the later passes test only the dirty
-    // samples k as dominators, against the samples j of k's rarest ball (j must contain it).
-    bool sample_dominance_dirty() {
-        bool any = false;
-        for (uint32_t k = 0; k < m_; ++k) {
-            if (!dirty_s_[k]) continue;
-            dirty_s_[k] = 0;
-            if (!s_alive[k] || sdeg(k) == 0) continue;
-            const uint32_t* lk = &sb[sptr[k]];
-            const uint32_t dk = sdeg(k);
-            uint32_t rare = lk[0];
-            for (uint32_t e = 1; e < dk; ++e)
-                if (bsize(lk[e]) < bsize(rare)) rare = lk[e];
-            for (uint32_t q = bptr[rare]; q < bptr[rare + 1]; ++q) {
-                const uint32_t j = bs[q];
-                if (j == k || !s_alive[j] || sdeg(j) < dk) continue;
-                if (!sorted_subset(lk, dk, &sb[sptr[j]], sdeg(j))) continue;
-                any = true;
-                if (sdeg(j) > dk || k < j) {
-                    s_alive[j] = 0;  // k dominates j
-                } else {
-                    s_alive[k] = 0;  // equal sets: the lower index j stays
-                    break;
-                }
-            }
-        }
-        return any;
-    }
-
-    // Same for balls: a pair (a, b) can only become one (samples(a) ⊆ samples(b)) when a loses
-    // a sample, so the later passes test only the dirty balls a, against the balls b of a's
-    // rarest sample.
-    bool ball_dominance_dirty() {
-        bool any = false;
-        for (uint32_t a = 0; a < n_; ++a) {
-            if (!dirty_b_[a]) continue;
-            dirty_b_[a] = 0;
-            if (!b_alive[a] || bsize(a) == 0) continue;
-            const uint32_t* la = &bs[bptr[a]];
-            const uint32_t na = bsize(a);
-            uint32_t rare = la[0];
-            for (uint32_t e = 1; e < na; ++e)
-                if (sdeg(la[e]) < sdeg(rare)) rare = la[e];
-            for (uint32_t q = sptr[rare]; q < sptr[rare + 1]; ++q) {
-                const uint32_t b = sb[q];
-                if (b == a || !b_alive[b] || bsize(b) < na) continue;
-                if (bsize(b) == na && b > a) continue;  // equal sets: the lower index stays
-                if (!sorted_subset(la, na, &bs[bptr[b]], bsize(b))) continue;
-                b_alive[a] = 0;
-                any = true;
-                break;
-            }
-        }
-        return any;
-    }
-
-private:
-    // x[0..nx) ⊆ y[0..ny), both ascending: galloping merge.
-    static bool sorted_subset(const uint32_t* x, uint32_t nx, const uint32_t* y, uint32_t ny) {
-        if (nx > ny) return false;
-        const uint32_t* yi = y;
-        const uint32_t* ye = y + ny;
-        for (uint32_t i = 0; i < nx; ++i) {
-            yi = std::lower_bound(yi, ye, x[i]);
-            if (yi == ye || *yi != x[i]) return false;
-            ++yi;
-            if (uint32_t(ye - yi) < nx - i - 1) return false;
-        }
-        return true;
-    }
-
-    bool balls_full_ = false, samples_full_ = false;
-    std::vector<uint8_t> dirty_b_, dirty_s_;
-
-    // Per element: list size, its rarest member (`key`, the group it is filed under) and the
-    // next rarest members (`p`, padded with key), kept inline so most failing subset tests
-    // never touch the element's list.
-    static constexpr int kProbes = 3;
-    struct Probe {
-        uint32_t size = 0, key = 0;
-        uint32_t p[kProbes] = {};
-    };
-    template <class Rarity>
-    static void make_probe(const uint32_t* list, uint32_t len, Rarity rarity, Probe& out) {
-        out.size = len;
-        // the kProbes + 1 rarest members, ties to the lower index (lists are ascending)
-        uint32_t best[kProbes + 1] = {}, rb[kProbes + 1] = {};
-        int cnt = 0;
-        for (uint32_t k = 0; k < len; ++k) {
-            const uint32_t x = list[k], r = rarity(x);
-            if (cnt == kProbes + 1 && r >= rb[kProbes]) continue;
-            int pos = cnt < kProbes + 1 ? cnt++ : kProbes;
-            while (pos > 0 && rb[pos - 1] > r) {
-                best[pos] = best[pos - 1];
-                rb[pos] = rb[pos - 1];
-                --pos;
-            }
-            best[pos] = x;
-            rb[pos] = r;
-        }
-        out.key = best[0];
-        for (int i = 0; i < kProbes; ++i) out.p[i] = i + 1 < cnt ? best[i + 1] : best[0];
-    }
-    static bool probe_ok(const Probe& P, const std::vector<uint32_t>& stamp_arr, uint32_t stamp) {
-        for (int i = 0; i < kProbes; ++i)
-            if (stamp_arr[P.p[i]] != stamp) return false;
-        return true;
-    }
-
-    // Transpose own_bs into own_sptr/own_sb and point the views at the own lists; a ball left
-    // without samples dies.
-    void finish_rebuild() {
-        for (size_t a = 0; a < n_; ++a)
-            if (b_alive[a] && own_bptr[a + 1] == own_bptr[a]) b_alive[a] = 0;
-        own_sptr.assign(m_ + 1, 0);
-        for (uint32_t j : own_bs) own_sptr[j + 1]++;
-        for (size_t j = 0; j < m_; ++j) own_sptr[j + 1] += own_sptr[j];
-        own_sb.resize(own_bs.size());
-        std::vector<uint32_t> next(own_sptr.begin(), own_sptr.end() - 1);
-        for (uint32_t a = 0; a < n_; ++a)
-            for (uint32_t k = own_bptr[a]; k < own_bptr[a + 1]; ++k) own_sb[next[own_bs[k]]++] = a;
-        bptr = own_bptr.data();
-        bs = own_bs.data();
-        sptr = own_sptr.data();
-        sb = own_sb.data();
-    }
-
-    std::vector<uint32_t> own_bptr, own_bs, own_sptr, own_sb;
-    size_t n_, m_;
-    std::vector<uint32_t> stamp_b_, stamp_s_;
-};
-
-Problem make_kernel(const Reducer& red, size_t n, size_t m) {
-    Problem P;
-    std::vector<uint32_t> row_of(m, UINT32_MAX);
-    for (uint32_t j = 0; j < m; ++j)
-        if (red.s_alive[j]) { row_of[j] = uint32_t(P.row_id.size()); P.row_id.push_back(j); }
-    for (uint32_t a = 0; a < n; ++a)
-        if (red.b_alive[a]) P.col_id.push_back(a);
-    P.R = uint32_t(P.row_id.size());
-    P.C = uint32_t(P.col_id.size());
-    P.cptr.assign(P.C + 1, 0);
-    for (uint32_t c = 0; c < P.C; ++c) {
-        const uint32_t a = P.col_id[c];
-        for (uint32_t k = red.bptr[a]; k < red.bptr[a + 1]; ++k) P.crow.push_back(row_of[red.bs[k]]);
-        P.cptr[c + 1] = uint32_t(P.crow.size());
-    }
-    P.rptr.assign(P.R + 1, 0);
-    for (uint32_t r : P.crow) P.rptr[r + 1]++;
-    for (uint32_t r = 0; r < P.R; ++r) P.rptr[r + 1] += P.rptr[r];
-    P.rcol.resize(P.crow.size());
-    std::vector<uint32_t> next(P.rptr.begin(), P.rptr.end() - 1);
-    for (uint32_t c = 0; c < P.C; ++c)
-        for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) P.rcol[next[P.crow[k]]++] = c;
-    return P;
-}
-
-}  // namespace sc
-
 namespace {
 
 using namespace sc;
@@ -407,51 +54,60 @@ std::string uncoverable_message(const std::vector<uint32_t>& unc, size_t m) {
     return msg;
 }
 
-Status check_coverage(const Coverage& cov) {
+// Ascending (strictly) list check, branch-free over the list.
+bool strictly_ascending(const uint32_t* l, uint32_t len) {
+    uint32_t bad = 0;
+    for (uint32_t k = 1; k < len; ++k) bad |= uint32_t(l[k] <= l[k - 1]);
+    return bad == 0;
+}
+
+// Checks the ball -> sample lists; `count[j]` gets the number of balls covering sample j.
+Status check_coverage(const Coverage& cov, std::vector<uint32_t>& count) {
     const size_t n = cov.n_balls, m = cov.n_samples;
     if (m >= UINT32_MAX || n >= UINT32_MAX) return fail(Code::invalid_input, "set cover: too many samples or balls");
     if (cov.ball_ptr.size() != n + 1 || cov.ball_ptr[0] != 0 || cov.ball_ptr[n] != cov.ball_samples.size())
         return fail(Code::invalid_input, "set cover: malformed coverage (ball_ptr)");
     for (size_t a = 0; a < n; ++a) {
-        if (cov.ball_ptr[a + 1] < cov.ball_ptr[a]) return fail(Code::invalid_input, "set cover: malformed coverage (ball_ptr)");
-        for (uint32_t k = cov.ball_ptr[a]; k < cov.ball_ptr[a + 1]; ++k) {
-            if (cov.ball_samples[k] >= m) return fail(Code::invalid_input, "set cover: sample index out of range");
-            if (k > cov.ball_ptr[a] && cov.ball_samples[k] <= cov.ball_samples[k - 1])
-                return fail(Code::invalid_input, "set cover: ball sample list not strictly ascending");
-        }
+        const uint32_t b = cov.ball_ptr[a], e = cov.ball_ptr[a + 1];
+        if (e < b) return fail(Code::invalid_input, "set cover: malformed coverage (ball_ptr)");
+        if (!strictly_ascending(&cov.ball_samples[b], e - b))
+            return fail(Code::invalid_input, "set cover: ball sample list not strictly ascending");
+        if (e > b && cov.ball_samples[e - 1] >= m) return fail(Code::invalid_input, "set cover: sample index out of range");
     }
+    count.assign(m, 0);
+    for (uint32_t j : cov.ball_samples) count[j]++;
     return Status::success();
 }
 
 // Cheap check that cov's sample -> ball direction can be trusted: right sizes, per-sample
-// counts match the ball -> sample direction, lists ascending and in range.
-bool transpose_consistent(const Coverage& cov) {
+// counts match the ball -> sample direction (`count`), lists ascending and in range.
+bool transpose_consistent(const Coverage& cov, const std::vector<uint32_t>& count) {
     const size_t n = cov.n_balls, m = cov.n_samples;
     if (cov.sample_ptr.size() != m + 1 || cov.sample_ptr[0] != 0 || cov.sample_ptr[m] != cov.ball_samples.size() ||
         cov.sample_balls.size() != cov.ball_samples.size())
         return false;
-    std::vector<uint32_t> cnt(m, 0);
-    for (uint32_t j : cov.ball_samples) cnt[j]++;
     for (size_t j = 0; j < m; ++j) {
-        if (cov.sample_ptr[j + 1] < cov.sample_ptr[j] || cov.sample_ptr[j + 1] - cov.sample_ptr[j] != cnt[j]) return false;
-        for (uint32_t k = cov.sample_ptr[j]; k < cov.sample_ptr[j + 1]; ++k)
-            if (cov.sample_balls[k] >= n || (k > cov.sample_ptr[j] && cov.sample_balls[k] <= cov.sample_balls[k - 1]))
-                return false;
+        const uint32_t b = cov.sample_ptr[j], e = cov.sample_ptr[j + 1];
+        if (e < b || e - b != count[j] || !strictly_ascending(&cov.sample_balls[b], e - b)) return false;
+        if (e > b && cov.sample_balls[e - 1] >= n) return false;
     }
     return true;
 }
 
-// Shared front part: checks, masks, uncoverable samples, reduction.
+// Shared front part: checks, masks, uncoverable samples.
 struct Prepared {
     std::vector<uint8_t> required, allowed, locked;
+    bool transpose_ok = false;  // cov's sample -> ball lists can be used as they are
     std::vector<uint32_t> uncovered;
     size_t rows_before = 0, cols_before = 0;
 };
 
 Status prepare(const Coverage& cov, const CoverOptions& opt, bool skip_uncoverable, Prepared& pr) {
     const size_t n = cov.n_balls, m = cov.n_samples;
-    Status st = check_coverage(cov);
+    std::vector<uint32_t> count;
+    Status st = check_coverage(cov, count);
     if (!st.ok()) return st;
+    pr.transpose_ok = transpose_consistent(cov, count);
     if (!opt.ignorable_samples.empty() && opt.ignorable_samples.size() != m)
         return fail(Code::invalid_argument, "set cover: ignorable_samples must have 0 or n_samples entries");
     if (!opt.forced_in.empty() && opt.forced_in.size() != n)
@@ -470,12 +126,12 @@ Status prepare(const Coverage& cov, const CoverOptions& opt, bool skip_uncoverab
             if (!pr.allowed[a]) return fail(Code::invalid_argument, "set cover: a ball is both forced in and forced out");
             pr.locked[a] = 1;
         }
-    std::vector<uint8_t> reachable(m, 0);
+    // count[j] becomes the number of allowed balls covering j
     for (size_t a = 0; a < n; ++a)
-        if (pr.allowed[a])
-            for (uint32_t k = cov.ball_ptr[a]; k < cov.ball_ptr[a + 1]; ++k) reachable[cov.ball_samples[k]] = 1;
+        if (!pr.allowed[a])
+            for (uint32_t k = cov.ball_ptr[a]; k < cov.ball_ptr[a + 1]; ++k) count[cov.ball_samples[k]]--;
     for (uint32_t j = 0; j < m; ++j)
-        if (pr.required[j] && !reachable[j]) pr.uncovered.push_back(j);
+        if (pr.required[j] && count[j] == 0) pr.uncovered.push_back(j);
     if (!pr.uncovered.empty()) {
         if (!skip_uncoverable) return fail(Code::uncoverable, uncoverable_message(pr.uncovered, m));
         for (uint32_t j : pr.uncovered) pr.required[j] = 0;
@@ -484,93 +140,6 @@ Status prepare(const Coverage& cov, const CoverOptions& opt, bool skip_uncoverab
     for (uint8_t v : pr.allowed) pr.cols_before += v;
     return Status::success();
 }
-
-// Reduce to the fixpoint from the reducer's current state.
-Status reduce_fixpoint(Reducer& red, const Monitor& monitor) {
-    // Ball dominance only changes when sample sets change and vice versa: rerun a phase only
-    // when the other one (or forcing) changed something. Ball dominance first: it usually
-    // removes most columns, which makes every later phase cheap.
-    bool need_balls = true, need_samples = true;
-    for (;;) {
-        if (monitor.cancelled()) return fail(Code::cancelled, "set cover: cancelled");
-        if (red.force_degree_one()) {
-            red.rebuild();
-            need_balls = need_samples = true;
-            continue;
-        }
-        if (need_balls) {
-            need_balls = false;
-            if (red.ball_dominance()) {
-                red.rebuild();
-                need_samples = true;
-            }
-            continue;
-        }
-        if (need_samples) {
-            need_samples = false;
-            if (red.sample_dominance()) {
-                red.rebuild();
-                need_balls = true;
-            }
-            continue;
-        }
-        break;
-    }
-    return Status::success();
-}
-
-// Reduce to the fixpoint. On success `red` holds the forced balls and the kernel.
-Status reduce(const Coverage& cov, const Prepared& pr, const Monitor& monitor, Reducer& red) {
-    const size_t n = cov.n_balls;
-    red.s_alive = pr.required;
-    red.b_alive = pr.allowed;
-    bool plain = cov.sample_ptr.size() == cov.n_samples + 1 && transpose_consistent(cov);
-    for (size_t j = 0; j < cov.n_samples && plain; ++j) plain = pr.required[j] != 0;
-    for (size_t a = 0; a < n && plain; ++a) plain = pr.allowed[a] && !pr.locked[a];
-    red.init(cov, plain);
-    bool any_forced_in = false;
-    for (uint32_t a = 0; a < n; ++a)
-        if (pr.locked[a]) {
-            // select even if it covers nothing required (it was asked for)
-            red.forced.push_back(a);
-            red.b_alive[a] = 0;
-            for (uint32_t k = red.bptr[a]; k < red.bptr[a + 1]; ++k) red.s_alive[red.bs[k]] = 0;
-            any_forced_in = true;
-        }
-    if (any_forced_in) red.rebuild();
-    return reduce_fixpoint(red, monitor);
-}
-
-// The reduction on a compact problem (every row required, every column allowed). `forced` gets
-// P-local columns; the kernel's col_id / row_id are P-local too.
-}  // namespace
-
-namespace sc {
-
-Status reduce_problem(const Problem& P, const Monitor& monitor, std::vector<uint32_t>& forced, Problem& kernel) {
-    Coverage cov;
-    cov.n_samples = P.R;
-    cov.n_balls = P.C;
-    cov.ball_ptr = P.cptr;
-    cov.ball_samples = P.crow;
-    cov.sample_ptr = P.rptr;
-    cov.sample_balls = P.rcol;
-    Reducer red(P.C, P.R);
-    red.s_alive.assign(P.R, 1);
-    red.b_alive.assign(P.C, 1);
-    red.init(cov, true);
-    Status st = reduce_fixpoint(red, monitor);
-    if (!st.ok()) return st;
-    forced = red.forced;
-    kernel = make_kernel(red, P.C, P.R);
-    return Status::success();
-}
-
-}  // namespace sc
-
-namespace {
-
-using namespace sc;
 
 // Exact solve of one connected component: greedy -> Lagrangian bound and heuristic ->
 // reduced-cost fixing (drop every column that no cover smaller than the incumbent can use) ->
@@ -770,13 +339,13 @@ Status solve_impl(const Coverage& cov, const CoverOptions& opt, bool skip_uncove
     result.cols_before = pr.cols_before;
     if (monitor.cancelled()) return fail(Code::cancelled, "set cover: cancelled");
 
-    Reducer red(n, m);
-    st = reduce(cov, pr, monitor, red);
+    std::vector<uint32_t> forced;
+    Problem P;
+    st = reduce_coverage(cov, pr.transpose_ok, pr.required, pr.allowed, pr.locked, monitor, forced, P);
     if (!st.ok()) return st;
-    const Problem P = make_kernel(red, n, m);
     result.rows_after = P.R;
     result.cols_after = P.C;
-    result.forced = red.forced.size();
+    result.forced = forced.size();
     result.time_reduce_s = seconds_since(t0);
     if (monitor.cancelled()) return fail(Code::cancelled, "set cover: cancelled");
 
@@ -786,7 +355,7 @@ Status solve_impl(const Coverage& cov, const CoverOptions& opt, bool skip_uncove
     double klb = P.R > 0 ? double(disjoint_bound(P)) : 0.0;
     bool proven = false;
     if (opt.solver == Solver::capp) {
-        ksel = capp_cover(P, *opt.centers, *opt.radii, red.forced);
+        ksel = capp_cover(P, *opt.centers, *opt.radii, forced);
         remove_redundant(P.cptr, P.crow, P.R, nullptr, nullptr, ksel);
     } else {
         if (opt.solver == Solver::exact) {
@@ -817,7 +386,7 @@ Status solve_impl(const Coverage& cov, const CoverOptions& opt, bool skip_uncove
     if (!covers_problem(P, ksel)) return fail(Code::internal, "set cover: kernel selection does not cover the kernel");
 
     // Combine, drop redundant balls on the full problem (never forced-in ones), verify.
-    std::vector<uint32_t> sel = red.forced;
+    std::vector<uint32_t> sel = forced;
     for (uint32_t c : ksel) sel.push_back(P.col_id[c]);
     std::sort(sel.begin(), sel.end());
     remove_redundant(cov.ball_ptr, cov.ball_samples, m, &pr.required, &pr.locked, sel);
@@ -836,7 +405,7 @@ Status solve_impl(const Coverage& cov, const CoverOptions& opt, bool skip_uncove
     }
     result.selected = sel;
     result.objective = double(sel.size());
-    result.lower_bound = std::min(result.objective, double(red.forced.size()) + klb);
+    result.lower_bound = std::min(result.objective, double(forced.size()) + klb);
     result.proven_optimal = (opt.solver == Solver::exact && proven) ? 1 : 0;
     if (result.proven_optimal) result.lower_bound = result.objective;
     result.gap = result.objective > 0 ? (result.objective - result.lower_bound) / result.objective : 0.0;
@@ -862,11 +431,9 @@ Status reduce_set_cover(const Coverage& cov, const CoverOptions& opt, bool skip_
         Prepared pr;
         Status st = prepare(cov, opt, skip_uncoverable, pr);
         if (!st.ok()) return st;
-        Reducer red(cov.n_balls, cov.n_samples);
-        st = reduce(cov, pr, monitor, red);
+        Problem P;
+        st = reduce_coverage(cov, pr.transpose_ok, pr.required, pr.allowed, pr.locked, monitor, forced, P);
         if (!st.ok()) return st;
-        const Problem P = make_kernel(red, cov.n_balls, cov.n_samples);
-        forced = red.forced;
         std::sort(forced.begin(), forced.end());
         kernel = Coverage{};
         kernel.n_samples = P.R;

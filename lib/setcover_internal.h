@@ -2,8 +2,8 @@
 // The compact problem (rows = samples x columns = balls, stored both ways) with its heuristics
 // and bounds (setcover_problem.cpp), the exact machinery (setcover_exact.cpp: Lagrangian bound,
 // CBC behind the process-wide mutex, row generation), the local search (setcover_local.cpp),
-// and the reduction of a compact problem
-// (setcover.cpp, which also holds the reduction of the input and the solve driver).
+// and the reduction of the input and of compact problems (setcover_reduce.cpp; the solve driver
+// is setcover.cpp).
 #pragma once
 #include "setcover.h"
 
@@ -128,8 +128,18 @@ std::vector<uint32_t> local_search_multi(const Problem& P, const std::vector<uin
                                          uint64_t max_steps, uint64_t seed, int starts, int threads,
                                          Clock::time_point deadline);
 
-// ---- setcover.cpp ----
-// Reduction of a compact problem to its kernel (forced columns returned separately).
+// ---- setcover_reduce.cpp ----
+// Reduction of the input to its kernel: rows = the `required` samples, columns = the `allowed`
+// balls, the `locked` ones (forced in) selected first; `transpose_ok`: cov's sample -> ball
+// lists are consistent with its ball -> sample lists (otherwise they are rebuilt). `forced` gets the balls the reduction
+// selects (locked ones first, ascending, then the forced ones in the order found); the
+// kernel's col_id / row_id are original indices. The optimum of the input is forced.size() +
+// the kernel's.
+Status reduce_coverage(const Coverage& cov, bool transpose_ok, const std::vector<uint8_t>& required,
+                       const std::vector<uint8_t>& allowed, const std::vector<uint8_t>& locked, const Monitor& monitor,
+                       std::vector<uint32_t>& forced, Problem& kernel);
+// Reduction of a compact problem to its kernel (every row required, every column allowed):
+// `forced` and the kernel's col_id / row_id are P-local.
 Status reduce_problem(const Problem& P, const Monitor& monitor, std::vector<uint32_t>& forced, Problem& kernel);
 
 }  // namespace sc

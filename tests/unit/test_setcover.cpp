@@ -823,3 +823,197 @@ TEST_CASE("set cover: the reduction reaches its fixpoint (incremental dominance 
     }
     CHECK(multi_round >= 10);
 }
+
+namespace {
+
+// Reference reduction, written for clarity (dense sets, quadratic tests), with the rules and
+// phase sequence of the library's reducer: forced_in balls first; then to a fixpoint: samples
+// with one alive ball force it; ball dominance (a dropped if some other alive b has
+// samples(a) ⊆ samples(b), strictly or with b < a), rerun only after forcing or a sample
+// change; sample dominance (j dropped if some other alive k has balls(k) ⊆ balls(j), strictly
+// or with k < j), rerun only after forcing or a ball change; balls left without samples drop.
+// Each dominance phase drops what is dominated at its start.
+struct RefReduction {
+    std::vector<uint32_t> forced, balls, samples;  // forced (ascending), kernel balls / samples
+};
+
+RefReduction ref_reduce(const Coverage& c, const std::vector<uint8_t>& ign, const std::vector<uint8_t>& fin,
+                        const std::vector<uint8_t>& fout) {
+    const size_t n = c.n_balls, m = c.n_samples;
+    std::vector<std::vector<uint8_t>> in(n, std::vector<uint8_t>(m, 0));
+    for (size_t a = 0; a < n; ++a)
+        for (uint32_t k = c.ball_ptr[a]; k < c.ball_ptr[a + 1]; ++k) in[a][c.ball_samples[k]] = 1;
+    std::vector<uint8_t> s_alive(m, 1), b_alive(n, 1);
+    for (size_t j = 0; j < m; ++j) {
+        bool reach = false;
+        for (size_t a = 0; a < n; ++a) reach = reach || (in[a][j] && !(fout.size() && fout[a]));
+        if ((ign.size() && ign[j]) || !reach) s_alive[j] = 0;
+    }
+    RefReduction r;
+    auto select = [&](size_t a) {
+        r.forced.push_back(uint32_t(a));
+        b_alive[a] = 0;
+        for (size_t j = 0; j < m; ++j)
+            if (in[a][j]) s_alive[j] = 0;
+    };
+    for (size_t a = 0; a < n; ++a) {
+        if (fout.size() && fout[a]) b_alive[a] = 0;
+        if (fin.size() && fin[a]) select(a);
+    }
+    auto drop_empty = [&]() {
+        for (size_t a = 0; a < n; ++a) {
+            bool any = false;
+            for (size_t j = 0; j < m; ++j) any = any || (in[a][j] && s_alive[j]);
+            if (!any) b_alive[a] = 0;
+        }
+    };
+    auto ball_subset = [&](size_t a, size_t b, int& size_a, int& size_b) {  // samples(a) ⊆ samples(b)
+        size_a = size_b = 0;
+        bool sub = true;
+        for (size_t j = 0; j < m; ++j) {
+            if (!s_alive[j]) continue;
+            size_a += in[a][j];
+            size_b += in[b][j];
+            if (in[a][j] && !in[b][j]) sub = false;
+        }
+        return sub;
+    };
+    auto sample_subset = [&](size_t k, size_t j, int& deg_k, int& deg_j) {  // balls(k) ⊆ balls(j)
+        deg_k = deg_j = 0;
+        bool sub = true;
+        for (size_t a = 0; a < n; ++a) {
+            if (!b_alive[a]) continue;
+            deg_k += in[a][k];
+            deg_j += in[a][j];
+            if (in[a][k] && !in[a][j]) sub = false;
+        }
+        return sub;
+    };
+    drop_empty();
+    bool need_balls = true, need_samples = true;
+    for (;;) {
+        bool forced_any = false;
+        for (size_t j = 0; j < m; ++j) {
+            if (!s_alive[j]) continue;
+            int deg = 0;
+            size_t last = 0;
+            for (size_t a = 0; a < n; ++a)
+                if (b_alive[a] && in[a][j]) { ++deg; last = a; }
+            if (deg == 1) { select(last); forced_any = true; }
+        }
+        if (forced_any) {
+            drop_empty();
+            need_balls = need_samples = true;
+            continue;
+        }
+        if (need_balls) {
+            need_balls = false;
+            std::vector<uint8_t> drop(n, 0);
+            for (size_t a = 0; a < n; ++a)
+                for (size_t b = 0; b < n && b_alive[a] && !drop[a]; ++b) {
+                    int sa, sb;
+                    if (b != a && b_alive[b] && ball_subset(a, b, sa, sb) && (sb > sa || b < a)) drop[a] = 1;
+                }
+            bool any = false;
+            for (size_t a = 0; a < n; ++a)
+                if (drop[a]) { b_alive[a] = 0; any = true; }
+            if (any) { drop_empty(); need_samples = true; }
+            continue;
+        }
+        if (need_samples) {
+            need_samples = false;
+            std::vector<uint8_t> drop(m, 0);
+            for (size_t j = 0; j < m; ++j)
+                for (size_t k = 0; k < m && s_alive[j] && !drop[j]; ++k) {
+                    int dk, dj;
+                    if (k != j && s_alive[k] && sample_subset(k, j, dk, dj) && (dj > dk || k < j)) drop[j] = 1;
+                }
+            bool any = false;
+            for (size_t j = 0; j < m; ++j)
+                if (drop[j]) { s_alive[j] = 0; any = true; }
+            if (any) { drop_empty(); need_balls = true; }
+            continue;
+        }
+        break;
+    }
+    std::sort(r.forced.begin(), r.forced.end());
+    for (size_t a = 0; a < n; ++a)
+        if (b_alive[a]) r.balls.push_back(uint32_t(a));
+    for (size_t j = 0; j < m; ++j)
+        if (s_alive[j]) r.samples.push_back(uint32_t(j));
+    return r;
+}
+
+}  // namespace
+
+TEST_CASE("set cover: the reduction gives the reference kernel (rules, ties, masks, several rounds)") {
+    // Random instances with repeated balls and samples (ties between equal sets), with and
+    // without masks and a consistent transpose: the kernel (balls, samples, their lists) and the
+    // forced balls must be those of the reference reduction above.
+    Rng rng(2024);
+    int with_kernel = 0, multi_round = 0;
+    for (int t = 0; t < 300; ++t) {
+        const size_t m = 8 + rng.below(50), n = 6 + rng.below(90);
+        Coverage c = random_cover(rng, m, n, 0.05 + 0.25 * rng.uniform());
+        if (t % 2 == 0) {
+            // copy some balls over others (equal sets) and some samples onto others (equal sets)
+            std::vector<std::vector<uint32_t>> lists(n);
+            for (size_t a = 0; a < n; ++a) lists[a].assign(&c.ball_samples[c.ball_ptr[a]], &c.ball_samples[c.ball_ptr[a + 1]]);
+            for (int q = 0; q < int(n / 5); ++q) lists[rng.below(n)] = lists[rng.below(n)];
+            for (int q = 0; q < int(m / 6); ++q) {
+                const uint32_t from = uint32_t(rng.below(m)), to = uint32_t(rng.below(m));
+                for (auto& l : lists) {
+                    l.erase(std::remove(l.begin(), l.end(), to), l.end());
+                    if (std::binary_search(l.begin(), l.end(), from)) l.insert(std::upper_bound(l.begin(), l.end(), to), to);
+                }
+            }
+            c.ball_samples.clear();
+            c.ball_ptr.assign(1, 0);
+            for (auto& l : lists) {
+                c.ball_samples.insert(c.ball_samples.end(), l.begin(), l.end());
+                c.ball_ptr.push_back(uint32_t(c.ball_samples.size()));
+            }
+            c.build_transpose();
+        }
+        if (t % 5 == 4) c.sample_ptr.clear();  // no transpose: the reducer builds its own
+        CoverOptions opt;
+        if (t % 3 == 1) {
+            opt.ignorable_samples.assign(m, 0);
+            opt.forced_in.assign(n, 0);
+            opt.forced_out.assign(n, 0);
+            for (size_t j = 0; j < m; ++j) opt.ignorable_samples[j] = rng.uniform() < 0.1;
+            for (size_t a = 0; a < n; ++a) {
+                const double u = rng.uniform();
+                opt.forced_in[a] = u < 0.03;
+                opt.forced_out[a] = u > 0.9;
+            }
+        }
+        std::vector<uint32_t> forced, kb, ks;
+        Coverage ker;
+        INFO("instance " << t);
+        REQUIRE(detail::reduce_set_cover(c, opt, true, Monitor{}, forced, ker, kb, ks).ok());
+        const RefReduction ref = ref_reduce(c, opt.ignorable_samples, opt.forced_in, opt.forced_out);
+        CHECK(forced == ref.forced);
+        CHECK(kb == ref.balls);
+        CHECK(ks == ref.samples);
+        // kernel lists: the original lists restricted to the kernel, both directions
+        REQUIRE(ker.n_balls == kb.size());
+        REQUIRE(ker.n_samples == ks.size());
+        for (size_t a = 0; a < ker.n_balls; ++a) {
+            std::vector<uint32_t> expect;
+            for (uint32_t k = c.ball_ptr[kb[a]]; k < c.ball_ptr[kb[a] + 1]; ++k) {
+                const auto it = std::lower_bound(ks.begin(), ks.end(), c.ball_samples[k]);
+                if (it != ks.end() && *it == c.ball_samples[k]) expect.push_back(uint32_t(it - ks.begin()));
+            }
+            CHECK(std::vector<uint32_t>(&ker.ball_samples[ker.ball_ptr[a]], &ker.ball_samples[ker.ball_ptr[a + 1]]) == expect);
+        }
+        Coverage tr = ker;
+        tr.build_transpose();
+        CHECK(tr.sample_ptr == ker.sample_ptr);
+        CHECK(tr.sample_balls == ker.sample_balls);
+        with_kernel += ker.n_balls > 0;
+        multi_round += ker.n_balls > 0 && forced.size() > (opt.forced_in.empty() ? 0u : 1u);
+    }
+    CHECK(with_kernel >= 100);
+    CHECK(multi_round >= 20);
+}
