@@ -163,7 +163,7 @@ constexpr int kLocalSearchStarts = 4;
 // Largest component CBC solves as a whole (its root LP cannot be interrupted).
 constexpr uint32_t kWholeCbcMaxRows = 4000;
 // Subgradient steps before the LP on components up to kWholeCbcMaxRows rows.
-constexpr int kSubgradientWarmup = 50;
+constexpr int kSubgradientWarmup = 150;
 
 ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bool has_deadline, int threads,
                                 bool row_gen, Effort effort, int search_threads, const Monitor& monitor) {
@@ -181,10 +181,11 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
     // costs for fixing when the subgradient bound did not close the gap.
     Clock::time_point lag_deadline = deadline;
     if (has_deadline) lag_deadline = Clock::now() + (deadline - Clock::now()) / 4;
-    // Before the LP only a short warm-up (its covers and reduced costs seed the core LP and the
-    // local search: 1000 steps instead cost 0.1-0.3 s and changed no result on the paper models
-    // once the local search runs from several seeds); components too large for a sure LP get
-    // the long ascent, whose bound may have to stand alone.
+    // Before the LP only a warm-up (its covers and reduced costs seed the core LP and the local
+    // search: 1000 steps cost 0.1-0.3 s more and changed no result on the paper models once the
+    // local search runs from several seeds; 50 steps gave a poorer core, a slower LP and cup one
+    // ball more); components too large for a sure LP get the long ascent, whose bound may have
+    // to stand alone.
     const int subgradient_steps = P.R <= kWholeCbcMaxRows ? kSubgradientWarmup : 1000;
     Lagrange L = lagrangian(P, out.sel, subgradient_steps, lag_deadline);
     bool lp_ok = P.R <= kWholeCbcMaxRows;  // the LP is not needed when the subgradient closes the gap
