@@ -18,22 +18,37 @@
 namespace ca {
 
 Mesh hole_caps(const Mesh& mesh) {
-    // weld vertices with identical coordinates (split seams are not holes)
-    std::map<std::array<double, 3>, uint32_t> id_of;
-    std::vector<uint32_t> weld(mesh.vertices.size());
-    for (size_t i = 0; i < mesh.vertices.size(); ++i) {
+    // weld vertices with identical coordinates (split seams are not holes): each takes the
+    // smallest index with its coordinates (sorted arrays: std::map cost 20-40 ms at 30k triangles)
+    const size_t nv = mesh.vertices.size();
+    std::vector<uint32_t> order(nv), weld(nv);
+    for (size_t i = 0; i < nv; ++i) order[i] = uint32_t(i);
+    auto key = [&](uint32_t i) {
         const Vec3& v = mesh.vertices[i];
-        weld[i] = id_of.emplace(std::array<double, 3>{v.x(), v.y(), v.z()}, uint32_t(i)).first->second;
-    }
-    std::map<std::array<uint32_t, 2>, int> uses;
+        return std::array<double, 3>{v.x(), v.y(), v.z()};
+    };
+    std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+        const auto ka = key(a), kb = key(b);
+        return ka != kb ? ka < kb : a < b;
+    });
+    for (size_t k = 0; k < nv; ++k)
+        weld[order[k]] = (k > 0 && key(order[k]) == key(order[k - 1])) ? weld[order[k - 1]] : order[k];
+    // edges used by one triangle only, ascending
+    std::vector<std::array<uint32_t, 2>> edges;
+    edges.reserve(3 * mesh.triangles.size());
     for (const Tri& t : mesh.triangles)
         for (int a = 0; a < 3; ++a) {
             const uint32_t u = weld[t[size_t(a)]], w = weld[t[size_t((a + 1) % 3)]];
-            if (u != w) ++uses[{std::min(u, w), std::max(u, w)}];
+            if (u != w) edges.push_back({std::min(u, w), std::max(u, w)});
         }
+    std::sort(edges.begin(), edges.end());
     std::vector<std::array<uint32_t, 2>> boundary;
-    for (const auto& [e, n] : uses)
-        if (n == 1) boundary.push_back(e);
+    for (size_t k = 0; k < edges.size();) {
+        size_t e = k;
+        while (e < edges.size() && edges[e] == edges[k]) ++e;
+        if (e - k == 1) boundary.push_back(edges[k]);
+        k = e;
+    }
     Mesh caps;
     if (boundary.empty()) return caps;
     UnionFind uf(mesh.vertices.size());
