@@ -35,6 +35,8 @@
 #include <new>
 #include <queue>
 #include <string>
+#include <exception>
+#include <thread>
 
 namespace ca {
 
@@ -188,32 +190,69 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
     // to stand alone.
     const int subgradient_steps = P.R <= kWholeCbcMaxRows ? kSubgradientWarmup : 1000;
     Lagrange L = lagrangian(P, out.sel, subgradient_steps, lag_deadline);
-    bool lp_ok = P.R <= kWholeCbcMaxRows;  // the LP is not needed when the subgradient closes the gap
-    if (std::ceil(L.bound - 1e-6) < double(L.best.size()) && !monitor.cancelled()) {
-        double lp_limit = 0;
-        if (has_deadline) lp_limit = std::max(1e-3, std::chrono::duration<double>(deadline - Clock::now()).count() / 4);
-        const std::vector<double> duals = lp_duals_core(P, L.cost, lp_limit);
-        lp_ok = !duals.empty();
-        if (!duals.empty()) {
-            // bound and costs at the duals, then small steps around them for the reduced-cost greedy
-            Lagrange D = lagrangian(P, L.best, 200, deadline, &duals, 0.05);
-            std::vector<uint32_t> best = D.best.size() < L.best.size() ? D.best : L.best;
-            if (D.bound > L.bound) L = std::move(D);
-            L.best = std::move(best);
-        }
-    }
     if (L.best.size() < out.sel.size()) out.sel = L.best;
     out.lb = std::max(out.lb, std::ceil(L.bound - 1e-6));
+    bool lp_ok = P.R <= kWholeCbcMaxRows;  // the LP is not needed when the subgradient closes the gap
     if (done() || monitor.cancelled()) return out;
-    // Row-weighting local search from the best cover, with at most a quarter of what is left:
-    // usually reaches the optimum, so that CBC only has to prove it.
-    {
-        Clock::time_point ls_deadline = deadline;
-        if (has_deadline) ls_deadline = Clock::now() + (deadline - Clock::now()) / 4;
-        out.sel = local_search_multi(P, out.sel, size_t(out.lb), kLocalSearchSteps, kLocalSearchSeed, kLocalSearchStarts,
-                                     resolve_threads(search_threads), ls_deadline);
-        if (done() || monitor.cancelled()) return out;
+    // The LP relaxation (its duals: the best bound and reduced costs for fixing, and a
+    // reduced-cost greedy around them) and the local search from the warm-up's cover (at most a
+    // quarter of what is left: it usually reaches the optimum, so that CBC only has to prove it)
+    // run side by side. Neither depends on the other's result, so the outcome is the same on one
+    // thread or several; the LP's bound, once known, only lets the search stop earlier.
+    double lp_limit = 0;
+    if (has_deadline) lp_limit = std::max(1e-3, std::chrono::duration<double>(deadline - Clock::now()).count() / 4);
+    Clock::time_point ls_deadline = deadline;
+    if (has_deadline) ls_deadline = Clock::now() + (deadline - Clock::now()) / 4;
+    std::atomic<size_t> known_bound{size_t(out.lb)};
+    Lagrange D;
+    bool have_duals = false;
+    auto lp_phase = [&]() {
+        const std::vector<double> duals = lp_duals_core(P, L.cost, lp_limit);
+        if (duals.empty()) return;
+        // bound and costs at the duals, then small steps around them for the reduced-cost greedy
+        D = lagrangian(P, L.best, 200, deadline, &duals, 0.05);
+        have_duals = true;
+        known_bound.store(std::max(known_bound.load(), size_t(std::max(0.0, std::ceil(D.bound - 1e-6)))));
+    };
+    const std::vector<uint32_t> start = out.sel;
+    std::vector<uint32_t> searched;
+    auto search = [&]() {
+        searched = local_search_multi(P, start, size_t(out.lb), kLocalSearchSteps, kLocalSearchSeed, kLocalSearchStarts,
+                                      resolve_threads(search_threads), ls_deadline, &known_bound);
+    };
+    if (resolve_threads(search_threads) > 1) {
+        std::exception_ptr lp_error;
+        std::thread lp_thread([&]() {
+            try {
+                lp_phase();
+            } catch (...) {
+                lp_error = std::current_exception();
+            }
+        });
+        try {
+            search();
+        } catch (...) {
+            lp_thread.join();
+            throw;
+        }
+        lp_thread.join();
+        if (lp_error) std::rethrow_exception(lp_error);
+    } else {
+        lp_phase();
+        search();
     }
+    lp_ok = have_duals;
+    if (have_duals) {
+        if (D.best.size() < L.best.size()) L.best = D.best;
+        if (D.bound > L.bound) {
+            L.bound = D.bound;
+            L.u = std::move(D.u);
+            L.cost = std::move(D.cost);
+        }
+    }
+    out.sel = searched.size() <= L.best.size() ? searched : L.best;
+    out.lb = std::max(out.lb, std::ceil(L.bound - 1e-6));
+    if (done() || monitor.cancelled()) return out;
 
     // Covers smaller than the incumbent have value <= target; a column j with
     // L(u) + c_j(u) > target is in none of them.

@@ -7,6 +7,7 @@
 #pragma once
 #include "setcover.h"
 
+#include <atomic>
 #include <chrono>
 
 namespace ca {
@@ -112,13 +113,16 @@ RowGenOutcome row_generation(const Problem& K, size_t target, Clock::time_point 
 // ---- setcover_local.cpp ----
 // Row-weighting local search (RWLS) from the cover `start` of P: returns the smallest cover
 // found (ascending, redundancy-free, never larger than `start`). Stops after `max_steps` swaps,
-// when it stalls (no improvement for max(2000, 20 (R + C)) swaps + as many as the last
+// when it stalls (no improvement for max(2000, 10 (R + C)) swaps + as many as the last
 // improvement took), at `deadline`, or when a cover of `lower_bound` columns is found.
 // Deterministic for a seed unless the deadline cuts it short. `steps` (optional) receives the
 // number of swaps made.
+// `known_bound` (optional): a lower bound that another thread may raise during the search (the
+// LP's); the search stops once its best cover reaches it. That only saves time: below a bound
+// the best cover cannot change, so the result is the same whenever the bound arrives.
 std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start, size_t lower_bound,
                                    uint64_t max_steps, uint64_t seed, Clock::time_point deadline,
-                                   uint64_t* steps = nullptr);
+                                   uint64_t* steps = nullptr, const std::atomic<size_t>* known_bound = nullptr);
 
 // Independent runs of local_search from the same start with seeds seed, seed + 1, ...,
 // seed + starts - 1, spread over `threads` threads; returns the smallest cover, ties to the
@@ -126,7 +130,7 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
 // threads or their timing. On the paper kernels the seed alone moves results by 1-2 balls.
 std::vector<uint32_t> local_search_multi(const Problem& P, const std::vector<uint32_t>& start, size_t lower_bound,
                                          uint64_t max_steps, uint64_t seed, int starts, int threads,
-                                         Clock::time_point deadline);
+                                         Clock::time_point deadline, const std::atomic<size_t>* known_bound = nullptr);
 
 // ---- setcover_reduce.cpp ----
 // Reduction of the input to its kernel: rows = the `required` samples, columns = the `allowed`

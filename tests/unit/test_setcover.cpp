@@ -745,7 +745,7 @@ TEST_CASE("set cover: the local search with no steps or an expired deadline keep
 
 TEST_CASE("set cover: the local search's patience is proportional to the problem") {
     // 50 disjoint groups of 3 rows, two identical columns per group: the start (one column per
-    // group) is optimal, so the search never improves and must stop after max(2000, 20 (R + C))
+    // group) is optimal, so the search never improves and must stop after max(2000, 10 (R + C))
     // swaps past its start, not after a fixed large count.
     Coverage c;
     c.n_samples = 150;
@@ -764,7 +764,7 @@ TEST_CASE("set cover: the local search's patience is proportional to the problem
     const std::vector<uint32_t> s = sc::local_search(P, start, 0, 1000000, 3, far, &steps);
     CHECK(s.size() == 50);
     CHECK(valid_cover(c, s));
-    CHECK(steps == 20 * (150 + 100) + 1);
+    CHECK(steps == 10 * (150 + 100) + 1);
     // a small problem gets the minimum patience
     Rng rng(11);
     const Coverage small = random_cover(rng, 20, 15, 0.25);
