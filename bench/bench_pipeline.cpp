@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
     ca_connect_options_init(&power);
     power.method = CA_CONNECT_POWER;
 
-    std::printf("\n## Pipeline at the defaults (|S| 1500, Voronoi candidates of 4000 samples, delta 0.02, exact cover within 60 s, connection auto = medial route)\n\n");
+    std::printf("\n## Pipeline at the defaults (|S| 1500, Voronoi candidates of 4000 samples, delta 0.02, exact cover with the fast effort (the default), connection auto = medial route)\n\n");
     std::printf("| model | tris | |S| | |P| | |V| | optimal | gap %% | candidates s | select s | connect s | total s | S->E %% | E->S %% | HD %% | power: HD %% | connect s |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     double sum = 0, worst = 0, hd_sum = 0, hd_power_sum = 0;
