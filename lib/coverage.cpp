@@ -12,6 +12,7 @@
 #include <limits>
 #include <memory>
 #include <new>
+#include <thread>
 
 namespace ca {
 
@@ -67,43 +68,62 @@ Status build_coverage(const std::vector<Vec3>& samples, const std::vector<Vec3>&
             PointsAdaptor adaptor{samples};
             Tree tree(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(16));
             tree.buildIndex();
-            // Balls are independent: each thread queries a range of them into its own lists,
-            // which are then appended in ball order (the same arrays for any thread count).
-            std::vector<std::vector<uint32_t>> lists(cov.n_balls);
+            // Balls are independent: in batches of kBatch balls, each thread queries a contiguous
+            // range into its own list, and the lists are appended in ball order after the batch
+            // (the same arrays for any thread count; at most one batch held twice in memory).
+            constexpr size_t kBatch = 4096;
+            const int threads_used = resolve_threads(threads);
             std::atomic<bool> out_of_memory{false};
-            auto query = [&](size_t begin, size_t end) noexcept {
-                try {
-                    std::vector<std::pair<size_t, double>> hits;
-                    for (size_t i = begin; i < end; ++i) {
-                        const double r = dilated_radii[i];
-                        // nanoflann keeps d^2 < r^2 (strict, squared): widen by a relative 1e-12 (and
-                        // one ulp, for r = 0) so a sample exactly at distance r' counts as covered.
-                        double r2 = r * r * (1.0 + 1e-12);
-                        r2 = std::nextafter(r2, std::numeric_limits<double>::infinity());
-                        const double q[3] = {centers[i].x(), centers[i].y(), centers[i].z()};
-                        hits.clear();
-                        tree.radiusSearch(q, r2, hits, nanoflann::SearchParams());
-                        std::vector<uint32_t>& ids = lists[i];
-                        ids.reserve(hits.size());
-                        for (const auto& h : hits) ids.push_back(uint32_t(h.first));
-                        std::sort(ids.begin(), ids.end());
+            struct Range { size_t begin = 0, end = 0; std::vector<uint32_t> samples; std::vector<uint32_t> sizes; };
+            for (size_t start = 0; start < cov.n_balls; start += kBatch) {
+                const size_t stop = std::min(cov.n_balls, start + kBatch);
+                const size_t workers = std::min<size_t>(size_t(std::max(1, threads_used)), stop - start);
+                const size_t chunk = (stop - start + workers - 1) / workers;
+                std::vector<Range> ranges(workers);
+                auto query = [&](size_t w) noexcept {
+                    try {
+                        Range& rg = ranges[w];
+                        rg.begin = std::min(stop, start + w * chunk);
+                        rg.end = std::min(stop, rg.begin + chunk);
+                        std::vector<std::pair<size_t, double>> hits;
+                        for (size_t i = rg.begin; i < rg.end; ++i) {
+                            const double r = dilated_radii[i];
+                            // nanoflann keeps d^2 < r^2 (strict, squared): widen by a relative
+                            // 1e-12 (and one ulp, for r = 0) so a sample exactly at distance r'
+                            // counts as covered.
+                            double r2 = r * r * (1.0 + 1e-12);
+                            r2 = std::nextafter(r2, std::numeric_limits<double>::infinity());
+                            const double q[3] = {centers[i].x(), centers[i].y(), centers[i].z()};
+                            hits.clear();
+                            tree.radiusSearch(q, r2, hits, nanoflann::SearchParams());
+                            const size_t first = rg.samples.size();
+                            for (const auto& h : hits) rg.samples.push_back(uint32_t(h.first));
+                            std::sort(rg.samples.begin() + std::ptrdiff_t(first), rg.samples.end());
+                            rg.sizes.push_back(uint32_t(hits.size()));
+                        }
+                    } catch (...) {  // bad_alloc on a worker thread: reported below
+                        out_of_memory = true;
                     }
-                } catch (...) {  // bad_alloc on a worker thread: reported below
-                    out_of_memory = true;
+                };
+                std::vector<std::thread> pool;
+                try {
+                    for (size_t w = 1; w < workers; ++w) pool.emplace_back(query, w);
+                } catch (...) {
+                    for (auto& t : pool) t.join();
+                    throw;
                 }
-            };
-            if (!parallel_for(cov.n_balls, resolve_threads(threads), 4096, monitor, "coverage", query))
-                return fail(Code::cancelled, "build_coverage: cancelled");
-            if (out_of_memory) return fail(Code::out_of_memory, "build_coverage: out of memory");
-            size_t total = 0;
-            for (const auto& l : lists) total += l.size();
-            if (total >= size_t(std::numeric_limits<uint32_t>::max()))
-                return fail(Code::out_of_memory, "build_coverage: coverage relation exceeds 2^32 entries");
-            cov.ball_samples.reserve(total);
-            for (size_t i = 0; i < cov.n_balls; ++i) {
-                cov.ball_samples.insert(cov.ball_samples.end(), lists[i].begin(), lists[i].end());
-                cov.ball_ptr[i + 1] = uint32_t(cov.ball_samples.size());
-                std::vector<uint32_t>().swap(lists[i]);
+                query(0);
+                for (auto& t : pool) t.join();
+                if (out_of_memory) return fail(Code::out_of_memory, "build_coverage: out of memory");
+                for (const Range& rg : ranges) {
+                    if (cov.ball_samples.size() + rg.samples.size() >= size_t(std::numeric_limits<uint32_t>::max()))
+                        return fail(Code::out_of_memory, "build_coverage: coverage relation exceeds 2^32 entries");
+                    cov.ball_samples.insert(cov.ball_samples.end(), rg.samples.begin(), rg.samples.end());
+                    uint32_t at = cov.ball_ptr[rg.begin];
+                    for (size_t i = rg.begin; i < rg.end; ++i) cov.ball_ptr[i + 1] = (at += rg.sizes[i - rg.begin]);
+                }
+                if (!monitor.report("coverage", double(stop) / double(cov.n_balls)))
+                    return fail(Code::cancelled, "build_coverage: cancelled");
             }
         }
         cov.build_transpose();
