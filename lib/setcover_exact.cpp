@@ -156,20 +156,37 @@ std::mutex& coin_mutex() {
 }
 }  // namespace
 
+namespace {
+struct ClpDeleter {
+    void operator()(Clp_Simplex* m) const { Clp_deleteModel(m); }
+};
+using ClpModel = std::unique_ptr<Clp_Simplex, ClpDeleter>;
+
+// A silenced Clp model of min 1'x, A x >= 1 (no row upper bounds), 0 <= x <= 1, for the columns
+// given column-major (colstart / rowidx); null if Clp could not allocate. The caller holds the
+// coin mutex.
+ClpModel load_cover_lp(uint32_t rows, const std::vector<CoinBigIndex>& colstart, const std::vector<int>& rowidx,
+                       double time_limit_s) {
+    const size_t cols = colstart.size() - 1;
+    std::vector<double> val(rowidx.size(), 1.0), lb(cols, 0.0), ub(cols, 1.0), obj(cols, 1.0), rlb(rows, 1.0);
+    ClpModel model(Clp_newModel());
+    if (!model) return model;
+    Clp_setLogLevel(model.get(), 0);
+    Clp_loadProblem(model.get(), int(cols), int(rows), colstart.data(), rowidx.data(), val.data(), lb.data(),
+                    ub.data(), obj.data(), rlb.data(), nullptr);
+    if (time_limit_s > 0 && std::isfinite(time_limit_s)) Clp_setMaximumSeconds(model.get(), time_limit_s);
+    return model;
+}
+}  // namespace
+
 std::vector<double> lp_duals(const Problem& P, double time_limit_s) {
     std::vector<CoinBigIndex> colstart(P.C + 1);
     std::vector<int> rowidx(P.crow.begin(), P.crow.end());
     for (uint32_t c = 0; c <= P.C; ++c) colstart[c] = CoinBigIndex(P.cptr[c]);
-    std::vector<double> val(P.crow.size(), 1.0), lb(P.C, 0.0), ub(P.C, 1.0), obj(P.C, 1.0), rlb(P.R, 1.0);
     std::lock_guard<std::mutex> lock(coin_mutex());
-    struct Deleter { void operator()(Clp_Simplex* m) const { Clp_deleteModel(m); } };
-    std::unique_ptr<Clp_Simplex, Deleter> model(Clp_newModel());
+    const ClpModel model = load_cover_lp(P.R, colstart, rowidx, time_limit_s);
     if (!model) return {};
     Clp_Simplex* m = model.get();
-    Clp_setLogLevel(m, 0);
-    Clp_loadProblem(m, int(P.C), int(P.R), colstart.data(), rowidx.data(), val.data(), lb.data(), ub.data(),
-                    obj.data(), rlb.data(), nullptr);  // no row upper bounds
-    if (time_limit_s > 0 && std::isfinite(time_limit_s)) Clp_setMaximumSeconds(m, time_limit_s);
     Clp_dual(m, 0);
     if (Clp_status(m) != 0) return {};  // not optimal (time limit, numerical trouble)
     const double* y = Clp_getRowPrice(m);
@@ -203,17 +220,12 @@ std::vector<double> lp_duals_core(const Problem& P, const std::vector<double>& c
     };
     for (uint32_t c = 0; c < P.C; ++c)
         if (in_core[c]) add_column(c);
-    std::vector<double> val(P.crow.size(), 1.0), lb(P.C, 0.0), ub(P.C, 1.0), obj(P.C, 1.0), rlb(P.R, 1.0);
+    std::vector<double> val(P.crow.size(), 1.0), lb(P.C, 0.0), ub(P.C, 1.0), obj(P.C, 1.0);  // for added columns
 
     std::lock_guard<std::mutex> lock(coin_mutex());
-    struct Deleter { void operator()(Clp_Simplex* m) const { Clp_deleteModel(m); } };
-    std::unique_ptr<Clp_Simplex, Deleter> model(Clp_newModel());
+    const ClpModel model = load_cover_lp(P.R, colstart, rowidx, time_limit_s);
     if (!model) return {};
     Clp_Simplex* m = model.get();
-    Clp_setLogLevel(m, 0);
-    Clp_loadProblem(m, int(colstart.size() - 1), int(P.R), colstart.data(), rowidx.data(), val.data(), lb.data(),
-                    ub.data(), obj.data(), rlb.data(), nullptr);
-    if (time_limit_s > 0 && std::isfinite(time_limit_s)) Clp_setMaximumSeconds(m, time_limit_s);
     Clp_dual(m, 0);
     std::vector<double> u(P.R);
     // Every round adds at least one column, so at most P.C rounds; in practice 2-5.
