@@ -20,6 +20,7 @@ STATUS_NAMES = {
     12: "CA_ERROR_INTERNAL", 13: "CA_ERROR_NO_CANDIDATES",
 }
 SOLVERS = {"exact": 0, "greedy": 1, "capp": 2}
+EFFORTS = {"fast": 0, "prove": 1}
 CONNECT = {"power": 0, "medial": 1, "auto": 2}
 GENERATORS = {"voronoi": 0, "random": 1}
 
@@ -178,7 +179,8 @@ class Skeleton:
 
 def skeletonize(vertices, triangles=None, normals=None, delta=0.02, scale=None, cover_samples=1500,
                 voronoi_samples=4000, generator="voronoi", random_candidates=10000, solver="exact",
-                time_limit_s=60.0, skip_uncoverable=False, seed=1, target_count=0, connect="auto"):
+                time_limit_s=60.0, skip_uncoverable=False, seed=1, target_count=0, connect="auto",
+                effort="fast"):
     """Runs candidates -> selection -> connection. Raises CoverageAxisError on bad input."""
     view, keep = _surface(vertices, triangles, normals)
     co = _CandidateOptions()
@@ -193,6 +195,7 @@ def skeletonize(vertices, triangles=None, normals=None, delta=0.02, scale=None, 
         so.delta = delta
     so.solver, so.time_limit_s, so.skip_uncoverable = SOLVERS[solver], time_limit_s, int(skip_uncoverable)
     so.target_count = target_count
+    so.effort = EFFORTS[effort]
     cop = _ConnectOptions()
     _lib.ca_connect_options_init(ctypes.byref(cop))
     cop.method = CONNECT[connect]

@@ -37,6 +37,15 @@ class BindingTest(unittest.TestCase):
             sk = ca.skeletonize(BOX_V, BOX_F, cover_samples=400, voronoi_samples=800, connect=route)
             self.assertEqual(sk.stats["components"], 1)
 
+    def test_effort_levels_agree_when_proven(self):
+        fast = ca.skeletonize(BOX_V, BOX_F, cover_samples=400, voronoi_samples=800, effort="fast")
+        prove = ca.skeletonize(BOX_V, BOX_F, cover_samples=400, voronoi_samples=800, effort="prove")
+        self.assertTrue(prove.stats["proven_optimal"])
+        self.assertGreaterEqual(len(fast.radii), len(prove.radii))
+        self.assertLessEqual(fast.stats["lower_bound"], prove.stats["objective"])
+        if fast.stats["proven_optimal"]:
+            self.assertEqual(len(fast.radii), len(prove.radii))
+
     def test_results_in_caller_units(self):
         a = ca.skeletonize(BOX_V, BOX_F, cover_samples=400, voronoi_samples=800)
         big = [(1000 * x, 1000 * y, 1000 * z) for x, y, z in BOX_V]
