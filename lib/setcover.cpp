@@ -178,9 +178,7 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
         return out.proven;
     };
     if (done()) return out;
-    // The subgradient phase gets at most a quarter of what is left of the budget, then the LP
-    // relaxation's duals (the best Lagrangian multipliers) tighten the bound and the reduced
-    // costs for fixing when the subgradient bound did not close the gap.
+    // The subgradient phase gets at most a quarter of what is left of the budget.
     Clock::time_point lag_deadline = deadline;
     if (has_deadline) lag_deadline = Clock::now() + (deadline - Clock::now()) / 4;
     // Before the LP only a warm-up (its covers and reduced costs seed the core LP and the local
@@ -192,7 +190,6 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
     Lagrange L = lagrangian(P, out.sel, subgradient_steps, lag_deadline);
     if (L.best.size() < out.sel.size()) out.sel = L.best;
     out.lb = std::max(out.lb, std::ceil(L.bound - 1e-6));
-    bool lp_ok = P.R <= kWholeCbcMaxRows;  // the LP is not needed when the subgradient closes the gap
     if (done() || monitor.cancelled()) return out;
     // The LP relaxation (its duals: the best bound and reduced costs for fixing, and a
     // reduced-cost greedy around them) and the local search from the warm-up's cover (at most a
@@ -241,7 +238,7 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
         lp_phase();
         search();
     }
-    lp_ok = have_duals;
+    const bool lp_ok = have_duals;  // else CBC does not get the whole component (its root LP)
     if (have_duals) {
         if (D.best.size() < L.best.size()) L.best = D.best;
         if (D.bound > L.bound) {
