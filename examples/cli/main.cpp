@@ -373,8 +373,11 @@ int main(int argc, char** argv) {
                         ss.delta_absolute / ca_candidate_set_reference_length(owned.set), a.target_count ? ", found by the target size" : "");
         else
             std::printf("dilation    r * %.4g%s\n", ss.scale_used, a.target_count ? ", found by the target size" : "");
-        std::printf("selection   %zu balls, %s (lower bound %.0f, gap %.2f %%), solver %s\n", nv,
-                    ss.proven_optimal ? "proven optimal" : "not proven optimal", ss.lower_bound, 100 * ss.gap, a.solver.c_str());
+        std::printf("selection   %zu balls, %s (lower bound %.0f, gap %.2f %%), solver %s%s%s\n", nv,
+                    ss.proven_optimal ? "proven optimal" : "not proven optimal", ss.lower_bound, 100 * ss.gap, a.solver.c_str(),
+                    a.solver == "exact" ? ", effort " : "", a.solver == "exact" ? a.effort.c_str() : "");
+        if (a.solver == "exact" && a.effort == "fast" && !ss.proven_optimal)
+            std::printf("            (--effort prove runs CBC until the cover is proven optimal)\n");
         std::printf("            reduced %llu x %llu -> %llu x %llu (%llu forced)\n", (unsigned long long)ss.rows_before,
                     (unsigned long long)ss.cols_before, (unsigned long long)ss.rows_after, (unsigned long long)ss.cols_after,
                     (unsigned long long)ss.forced);
