@@ -49,6 +49,10 @@ check "scaled model: radius scales ($r_small -> $r_big)" awk -v a="$r_small" -v 
 # 4. options
 "$tool" "$data/fox.obj" -o "$tmp/g.ma" --solver greedy --json > "$tmp/g.json"
 check "greedy solver runs" test $? -eq 0
+"$tool" "$data/fox.obj" -o "$tmp/p.ma" --effort prove --json > "$tmp/p.json"
+check "prove effort runs and proves the fox's cover" grep -q '"optimal":true.*"effort":"prove"' "$tmp/p.json"
+"$tool" "$data/fox.obj" -o "$tmp/fd.ma" --json > "$tmp/fd.json"
+check "the default effort is fast" grep -q '"effort":"fast"' "$tmp/fd.json"
 check "greedy uses at least as many balls as the optimum" test "$(json_field selected "$tmp/g.json")" -ge "$selected"
 "$tool" "$data/fox.obj" -o "$tmp/r.ma" --candidates random:3000 --skip-uncoverable --export-candidates "$tmp/cand.obj" --export-samples "$tmp/s.obj" --quiet
 check "random candidates run" test $? -eq 0
@@ -136,6 +140,7 @@ expect_fail 3 "no vertices" "$tmp/empty.obj"
 expect_fail 2 "unknown option" "$data/fox.obj" --frobnicate 1
 expect_fail 2 "delta" "$data/fox.obj" --delta -1
 expect_fail 2 "solver" "$data/fox.obj" --solver magic
+expect_fail 2 "effort" "$data/fox.obj" --effort harder
 expect_fail 2 "divide" "$data/fox.obj" --divide -1
 
 # 7. every bundled model, poor ones included: a skeleton (exit 0) or a clean failure (exit 1),
