@@ -239,11 +239,21 @@ private:
         for (uint32_t a = 0; a < n_; ++a)
             if (slot_[a] != UINT32_MAX) ball_of_slot_[slot_[a]] = a;
         // From here on the state is bitwise: the samples' bitsets of kept balls (by slot), the
-        // alive sets, and the list sizes.
+        // alive sets, and the list sizes. The lists are not read any more: they (and `kept`) are
+        // freed before the samples' bitsets are made, which bounds the peak memory (30 000
+        // samples: each of kept, bits_b_ and bits_s_ is 20-30 MB). The kept balls of sample j
+        // (kept[sbeg_[j] ...]) are the slots whose bitset has j: bits_s_ is bits_b_ transposed.
+        kept.reset();
+        size_.resize(n_kept);
+        for (uint32_t t = 0; t < n_kept; ++t) size_[t] = bsize(ball_of_slot_[t]);
+        release_lists();
         wb_ = (size_t(n_kept) + 63) / 64;
         bits_s_.assign(m_ * wb_, 0);
-        for (uint32_t j = 0; j < m_; ++j)
-            for (uint32_t t = 0; t < nkept[j]; ++t) set_bit(&bits_s_[size_t(j) * wb_], kept[sbeg_[j] + t]);
+        for (uint32_t t = 0; t < n_kept; ++t)
+            for_each_bit(&bits_b_[size_t(t) * ws_], ws_, [&](uint32_t j) {
+                set_bit(&bits_s_[size_t(j) * wb_], t);
+                return false;
+            });
         alive_b_.assign(wb_, 0);
         for (uint32_t t = 0; t < n_kept; ++t) set_bit(alive_b_.data(), t);
         alive_s_.assign(ws_, 0);
@@ -253,13 +263,29 @@ private:
                 set_bit(alive_s_.data(), j);
                 deg_[j] = nkept[j];
             }
-        size_.resize(n_kept);
-        for (uint32_t t = 0; t < n_kept; ++t) size_[t] = bsize(ball_of_slot_[t]);
         dirty_slot_.assign(n_kept, 0);
         acc_.assign(std::max(ws_, wb_), 0);
         tested_.reset(std::max(ws_, wb_));
         bitwise_ = true;
         return any;
+    }
+
+    // The lists (and what maintains them) once the state is bitwise: only the bitsets are read.
+    template <class T>
+    static void release(std::vector<T>& v) { std::vector<T>().swap(v); }
+    void release_lists() {
+        own_bs_.reset();
+        own_sb_.reset();
+        bs_ = sb_ = nullptr;
+        release(bbeg_);
+        release(bend_);
+        release(sbeg_);
+        release(send_);
+        release(was_b_);
+        release(was_s_);
+        release(mark_b_);
+        release(mark_s_);
+        release(scratch_);
     }
 
     // ---- Bitwise state (after the first ball pass) ----
