@@ -12,6 +12,7 @@
 #include <limits>
 #include <memory>
 #include <new>
+#include <system_error>
 #include <thread>
 
 namespace ca {
@@ -105,13 +106,14 @@ Status build_coverage(const std::vector<Vec3>& samples, const std::vector<Vec3>&
                         out_of_memory = true;
                     }
                 };
+                // a worker thread that cannot be started does its range here: the same arrays
                 std::vector<std::thread> pool;
+                size_t started = 1;
                 try {
-                    for (size_t w = 1; w < workers; ++w) pool.emplace_back(query, w);
-                } catch (...) {
-                    for (auto& t : pool) t.join();
-                    throw;
+                    for (; started < workers; ++started) pool.emplace_back(query, started);
+                } catch (const std::system_error&) {
                 }
+                for (size_t w = started; w < workers; ++w) query(w);
                 query(0);
                 for (auto& t : pool) t.join();
                 if (out_of_memory) return fail(Code::out_of_memory, "build_coverage: out of memory");

@@ -36,6 +36,7 @@
 #include <queue>
 #include <string>
 #include <exception>
+#include <system_error>
 #include <thread>
 
 namespace ca {
@@ -158,8 +159,8 @@ struct ComponentResult {
 // its seed.
 constexpr uint64_t kLocalSearchSteps = 1000000;
 constexpr uint64_t kLocalSearchSeed = 3;
-// Independent local-search runs (seeds kLocalSearchSeed, +1, ...): on the paper kernels the
-// best of 4 is 1-2 balls smaller than one run on cup, desk_table and bird_penguin.
+// Independent local-search runs (seeds kLocalSearchSeed, +1, ...): single runs with seeds 1-11
+// differed by 1-2 balls on cup, desk_table and bird_penguin.
 constexpr int kLocalSearchStarts = 4;
 
 // Largest component CBC solves as a whole (its root LP cannot be interrupted).
@@ -217,15 +218,21 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
         searched = local_search_multi(P, start, size_t(out.lb), kLocalSearchSteps, kLocalSearchSeed, kLocalSearchStarts,
                                       resolve_threads(search_threads), ls_deadline, &known_bound);
     };
+    std::exception_ptr lp_error;
+    std::thread lp_thread;
     if (resolve_threads(search_threads) > 1) {
-        std::exception_ptr lp_error;
-        std::thread lp_thread([&]() {
-            try {
-                lp_phase();
-            } catch (...) {
-                lp_error = std::current_exception();
-            }
-        });
+        try {
+            lp_thread = std::thread([&]() {
+                try {
+                    lp_phase();
+                } catch (...) {
+                    lp_error = std::current_exception();
+                }
+            });
+        } catch (const std::system_error&) {  // no thread: both phases here, same result
+        }
+    }
+    if (lp_thread.joinable()) {
         try {
             search();
         } catch (...) {
