@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 
 namespace ca {
 
@@ -37,7 +38,7 @@ Status cancelled() { return fail(Code::cancelled, "cancelled"); }
 // `accept(unique, raw, raw_tets, keep)` sees the candidate centres (raw, one per tetrahedron
 // in raw_tets) and fills keep[k] for raw[unique[k]]. The tetrahedra are left in `tets`.
 template <class Accept>
-Status voronoi_vertices(const std::vector<Vec3>& pts, const Monitor& monitor, Accept&& accept,
+Status voronoi_vertices(const std::vector<Vec3>& pts, int threads, const Monitor& monitor, Accept&& accept,
                         std::vector<Ball>& balls, std::vector<Tet>& tets) {
     if (!monitor.report("delaunay", 0)) return cancelled();
     Status st = delaunay_tetrahedra(pts, tets);
@@ -60,11 +61,15 @@ Status voronoi_vertices(const std::vector<Vec3>& pts, const Monitor& monitor, Ac
     // tetrahedra (joggled or co-spherical samples) can give circumradii larger than that, i.e.
     // balls that stick out of the shape; clamp them.
     PointTree sample_tree(pts);
-    for (Ball& b : raw) {
-        size_t idx;
-        double d2;
-        if (sample_tree.nearest(b.center, 1, &idx, &d2) == 1) b.radius = std::min(b.radius, std::sqrt(d2));
-    }
+    if (!parallel_for(raw.size(), threads, 8192, monitor, "delaunay", [&](size_t begin, size_t end) {
+            for (size_t i = begin; i < end; ++i) {
+                size_t idx;
+                double d2;
+                if (sample_tree.nearest(raw[i].center, 1, &idx, &d2) == 1)
+                    raw[i].radius = std::min(raw[i].radius, std::sqrt(d2));
+            }
+        }))
+        return cancelled();
     std::vector<Vec3> centers(raw.size());
     for (size_t i = 0; i < raw.size(); ++i) centers[i] = raw[i].center;
     // cospherical sample sets give the same Voronoi vertex several times
@@ -98,7 +103,7 @@ std::vector<Ball> cluster_filter(const std::vector<Ball>& balls) {
     return out;
 }
 
-Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monitor, CandidateSet& out) {
+Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monitor, int threads, CandidateSet& out) {
     const std::vector<Vec3>& pts = out.surface.mesh.vertices;
     const std::vector<Vec3>& nrm = out.surface.normals;
     for (uint32_t i : random_subset(pts.size(), opt.cover_samples, stream_seed(opt.seed, 1)))
@@ -109,7 +114,7 @@ Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monito
     out.dense_samples = upts;
     std::vector<Ball> balls;
     std::vector<Tet> tets_unused;
-    Status st = voronoi_vertices(upts, monitor,
+    Status st = voronoi_vertices(upts, threads, monitor,
         [&](const std::vector<uint32_t>& ids, const std::vector<Ball>& raw, const std::vector<Tet>& tets,
             std::vector<uint8_t>& keep) {
             for (size_t k = 0; k < ids.size(); ++k) {
@@ -125,8 +130,16 @@ Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monito
     return Status::success();
 }
 
-Status mesh_voronoi_candidates(const CandidateOptions& opt, const Monitor& monitor, const WindingNumber& winding,
-                               int threads, CandidateSet& out) {
+// The surface structures (winding numbers, distances, hole caps) are built beside the sampling
+// and the Delaunay step; `structures.wait()` gives them.
+struct SurfaceStructures {
+    std::shared_ptr<const WindingNumber> winding;
+    std::shared_ptr<const MeshDistance> distance;
+    std::unique_ptr<const MeshDistance> cap_distance;   // null when the mesh has no holes
+};
+
+Status mesh_voronoi_candidates(const CandidateOptions& opt, const Monitor& monitor, Beside& structures,
+                               const SurfaceStructures& built, int threads, CandidateSet& out) {
     std::vector<Vec3> samples = sample_surface(out.surface.mesh, opt.voronoi_samples, stream_seed(opt.seed, 2));
     std::vector<Vec3> unique;
     for (uint32_t i : remove_near_duplicates(samples, kDuplicateTolerance)) unique.push_back(samples[i]);
@@ -136,10 +149,12 @@ Status mesh_voronoi_candidates(const CandidateOptions& opt, const Monitor& monit
     // exactly the flags they had.
     std::vector<uint8_t> raw_inner;
     std::vector<Tet> raw_tets_kept;
-    Status st = voronoi_vertices(unique, monitor,
+    Status st = voronoi_vertices(unique, threads, monitor,
         [&](const std::vector<uint32_t>& ids, const std::vector<Ball>& raw, const std::vector<Tet>& raw_tets,
             std::vector<uint8_t>& keep) {
             raw_inner.assign(raw.size(), 0);
+            structures.wait();
+            const WindingNumber& winding = *built.winding;
             const bool done = parallel_for(raw.size(), threads, 8192, monitor, "inside", [&](size_t b, size_t e) {
                 for (size_t k = b; k < e; ++k) raw_inner[k] = winding.inside(raw[k].center);
             });
@@ -159,9 +174,11 @@ Status mesh_voronoi_candidates(const CandidateOptions& opt, const Monitor& monit
     return Status::success();
 }
 
-Status mesh_random_candidates(const CandidateOptions& opt, const Monitor& monitor, const WindingNumber& winding,
-                              int threads, CandidateSet& out) {
+Status mesh_random_candidates(const CandidateOptions& opt, const Monitor& monitor, Beside& structures,
+                              const SurfaceStructures& built, int threads, CandidateSet& out) {
     const Mesh& mesh = out.surface.mesh;
+    structures.wait();
+    const WindingNumber& winding = *built.winding;
     auto [lo, hi] = bounding_box(mesh.vertices);
     const Vec3 extent = hi - lo;
     Rng rng(stream_seed(opt.seed, 3));
@@ -182,7 +199,7 @@ Status mesh_random_candidates(const CandidateOptions& opt, const Monitor& monito
         for (size_t i = 0; i < batch && inner.size() < want; ++i)
             if (in[i]) inner.push_back(pts[i]);
     }
-    MeshDistance distance(mesh);
+    const MeshDistance& distance = *built.distance;
     out.balls.resize(inner.size());
     if (!parallel_for(inner.size(), threads, 4096, monitor, "candidates", [&](size_t b, size_t e) {
             for (size_t i = b; i < e; ++i) out.balls[i] = {inner[i], distance.distance(inner[i])};
@@ -214,23 +231,30 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
     Status st;
     if (out.surface.point_cloud) {
         out.time_sampling_s = seconds_since(t0);
-        st = point_cloud_candidates(opt, monitor, out);
+        st = point_cloud_candidates(opt, monitor, threads, out);
     } else {
-        out.cover_samples = sample_surface(out.surface.mesh, opt.cover_samples, stream_seed(opt.seed, 1));
+        // The surface structures are built on a second thread while this one samples and runs
+        // the Delaunay step (the same structures either way); they only read the mesh.
+        SurfaceStructures built;
+        const Mesh& mesh = out.surface.mesh;
+        Beside structures([&built, &mesh] {
+            built.winding = std::make_shared<const WindingNumber>(mesh);
+            built.distance = std::make_shared<const MeshDistance>(mesh);
+            // open meshes: no ball reaches out through a hole (candidates_holes.cpp)
+            const Mesh caps = hole_caps(mesh);
+            if (!caps.triangles.empty()) built.cap_distance = std::make_unique<const MeshDistance>(caps);
+        });
+        out.cover_samples = sample_surface(mesh, opt.cover_samples, stream_seed(opt.seed, 1));
         out.time_sampling_s = seconds_since(t0);
-        auto winding = std::make_shared<const WindingNumber>(out.surface.mesh);
-        st = opt.generator == Generator::voronoi ? mesh_voronoi_candidates(opt, monitor, *winding, threads, out)
-                                                 : mesh_random_candidates(opt, monitor, *winding, threads, out);
-        // open meshes: no ball reaches out through a hole (candidates_holes.cpp)
-        const Mesh caps = hole_caps(out.surface.mesh);
-        std::unique_ptr<const MeshDistance> cap_distance;
-        if (!caps.triangles.empty()) cap_distance = std::make_unique<const MeshDistance>(caps);
+        st = opt.generator == Generator::voronoi ? mesh_voronoi_candidates(opt, monitor, structures, built, threads, out)
+                                                 : mesh_random_candidates(opt, monitor, structures, built, threads, out);
+        structures.wait();
+        const MeshDistance* cap_distance = built.cap_distance.get();
         if (st.ok() && cap_distance && !clamp_to_hole_caps(out, *cap_distance, threads, monitor)) st = cancelled();
         if (st.ok()) {
-            auto distance = std::make_shared<const MeshDistance>(out.surface.mesh);
-            out.fallback_balls = add_fallback_balls(out, *winding, *distance, cap_distance.get());
-            out.winding = std::move(winding);
-            out.distance = std::move(distance);
+            out.fallback_balls = add_fallback_balls(out, *built.winding, *built.distance, cap_distance);
+            out.winding = std::move(built.winding);
+            out.distance = std::move(built.distance);
         }
         if (st.ok() && opt.connect_samples > 0)
             out.connect_samples = sample_surface(out.surface.mesh, opt.connect_samples, stream_seed(opt.seed, 4));

@@ -1,10 +1,15 @@
-// parallel.h: a minimal fork-join loop over index ranges with std::thread. Work is cut into
-// batches; between batches the calling thread reports progress (callbacks never run on worker
-// threads) and stops early when the monitor says so.
+// parallel.h: a minimal fork-join loop over index ranges with std::thread, and one task run
+// beside the caller. Work is cut into batches; between batches the calling thread reports
+// progress (callbacks never run on worker threads) and stops early when the monitor says so.
+// A thread that cannot be started (std::system_error) leaves its work to the calling thread:
+// the results are the same either way.
 #pragma once
 #include "common.h"
 
 #include <algorithm>
+#include <exception>
+#include <functional>
+#include <system_error>
 #include <thread>
 
 namespace ca {
@@ -32,7 +37,12 @@ bool parallel_for(size_t n, int threads, size_t batch, const Monitor& monitor, c
             const size_t chunk = (len + workers - 1) / workers;
             for (size_t w = 1; w < workers; ++w) {
                 const size_t b = start + w * chunk, e = std::min(stop, b + chunk);
-                if (b < e) pool.emplace_back([&body, b, e] { body(b, e); });
+                if (b >= e) continue;
+                try {
+                    pool.emplace_back([&body, b, e] { body(b, e); });
+                } catch (const std::system_error&) {
+                    body(b, e);
+                }
             }
             body(start, std::min(stop, start + chunk));
             for (auto& t : pool) t.join();
@@ -41,5 +51,43 @@ bool parallel_for(size_t n, int threads, size_t batch, const Monitor& monitor, c
     }
     return true;
 }
+
+// Runs a task on another thread while the caller goes on; wait() joins it and passes on its
+// exception. The task must not call the monitor. Without a thread it runs in the constructor.
+class Beside {
+public:
+    explicit Beside(std::function<void()> task) : task_(std::move(task)) {
+        try {
+            thread_ = std::thread([this] { run(); });
+        } catch (const std::system_error&) {
+            run();
+        }
+    }
+    Beside(const Beside&) = delete;
+    Beside& operator=(const Beside&) = delete;
+    ~Beside() {
+        if (thread_.joinable()) thread_.join();
+    }
+    void wait() {
+        if (thread_.joinable()) thread_.join();
+        if (error_) {
+            std::exception_ptr e = error_;
+            error_ = nullptr;
+            std::rethrow_exception(e);
+        }
+    }
+
+private:
+    void run() {
+        try {
+            task_();
+        } catch (...) {
+            error_ = std::current_exception();
+        }
+    }
+    std::function<void()> task_;
+    std::exception_ptr error_;
+    std::thread thread_;
+};
 
 }  // namespace ca
