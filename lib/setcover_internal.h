@@ -113,21 +113,33 @@ RowGenOutcome row_generation(const Problem& K, size_t target, Clock::time_point 
 // ---- setcover_local.cpp ----
 // Row-weighting local search (RWLS) from the cover `start` of P: returns the smallest cover
 // found (ascending, redundancy-free, never larger than `start`). Stops after `max_steps` swaps,
-// when it stalls (no improvement for max(2000, 10 (R + C)) swaps + as many as the last
+// when it stalls (no improvement for max(2000, 5 (R + C)) swaps + as many as the last
 // improvement took), at `deadline`, or when a cover of `lower_bound` columns is found.
 // Deterministic for a seed unless the deadline cuts it short. `steps` (optional) receives the
 // number of swaps made.
 // `known_bound` (optional): a lower bound that another thread may raise during the search (the
 // LP's); the search stops once its best cover reaches it. That only saves time: below a bound
 // the best cover cannot change, so the result is the same whenever the bound arrives.
+// `race` (optional, shared by runs side by side): when a run's best cover is known to be
+// optimal (it reaches lower_bound or known_bound), the swap at which it was found is published
+// in race->optimal_step (the smallest such swap); a run that has not found an optimal cover
+// by then stops, since it can only end with a larger cover or a later one.
+// `found_step` (optional) receives the swap at which the returned cover was first reached
+// (0 for the start).
+struct SearchRace {
+    std::atomic<uint64_t> optimal_step{UINT64_MAX};
+};
 std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start, size_t lower_bound,
                                    uint64_t max_steps, uint64_t seed, Clock::time_point deadline,
-                                   uint64_t* steps = nullptr, const std::atomic<size_t>* known_bound = nullptr);
+                                   uint64_t* steps = nullptr, const std::atomic<size_t>* known_bound = nullptr,
+                                   SearchRace* race = nullptr, uint64_t* found_step = nullptr);
 
 // Independent runs of local_search from the same start with seeds seed, seed + 1, ...,
-// seed + starts - 1, spread over `threads` threads; returns the smallest cover, ties to the
-// lowest seed. The runs do not stop each other, so the result does not depend on the number of
-// threads or their timing. On the paper kernels the seed alone moves results by 1-2 balls.
+// seed + starts - 1, side by side on their own threads (one after the other when `threads` is
+// 1); returns the smallest cover, ties to the one found at the earliest swap, then to the
+// lowest seed. A run stops early only when it can no longer be the one returned (see
+// SearchRace), so the result does not depend on the number of threads or their timing. On the
+// paper kernels the seed alone moves results by 1-2 balls.
 std::vector<uint32_t> local_search_multi(const Problem& P, const std::vector<uint32_t>& start, size_t lower_bound,
                                          uint64_t max_steps, uint64_t seed, int starts, int threads,
                                          Clock::time_point deadline, const std::atomic<size_t>* known_bound = nullptr);

@@ -30,20 +30,33 @@ struct SplitMix {
 // Stall rule: stop once the steps since the last improvement exceed as many steps as the last
 // improvement needed plus a patience proportional to the problem, kStallPerElement swaps per
 // row and column but at least kStallMin (on the paper models' kernels the latest improvement
-// came ~10 (R + C) swaps past twice the step of the previous one, most come much sooner; the old
-// fixed 100000 swaps cost 0.3-0.5 s on small kernels that cannot improve). 10 instead of 20 since
-// four seeded runs share the work: the same covers on the ten hardest paper kernels, and less
-// time on most of them (noisy timing runs).
-constexpr uint64_t kStallPerElement = 10;
+// came ~10 (R + C) swaps past twice the step of the previous one in a single run, most come much sooner; the old
+// fixed 100000 swaps cost 0.3-0.5 s on small kernels that cannot improve). 5 instead of 20
+// since four seeded runs share the work: 20, 10 and 5 gave the same covers on the 24 paper
+// models at the defaults (1591 balls in all) and in bench_select's rows (paper models with
+// Voronoi and with 10 000 random candidates); 3 and 2 lost a ball on bear and desk_table.
+constexpr uint64_t kStallPerElement = 5;
 constexpr uint64_t kStallMin = 2000;
 }  // namespace
 
 std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start, size_t lower_bound,
                                    uint64_t max_steps, uint64_t seed, Clock::time_point deadline,
-                                   uint64_t* steps, const std::atomic<size_t>* known_bound) {
+                                   uint64_t* steps, const std::atomic<size_t>* known_bound, SearchRace* race,
+                                   uint64_t* found_step) {
     if (steps) *steps = 0;
+    if (found_step) *found_step = 0;
     std::sort(start.begin(), start.end());
-    if (P.R == 0 || start.size() <= lower_bound || !covers_problem(P, start)) return start;
+    // an optimal cover found at swap `at`: tell the other runs
+    auto publish = [&](uint64_t at) {
+        if (!race) return;
+        uint64_t cur = race->optimal_step.load();
+        while (at < cur && !race->optimal_step.compare_exchange_weak(cur, at)) {
+        }
+    };
+    if (P.R == 0 || start.size() <= lower_bound || !covers_problem(P, start)) {
+        if (P.R == 0 || start.size() <= lower_bound) publish(0);
+        return start;
+    }
     const uint32_t R = P.R, C = P.C;
     // raw pointers: the byte stores into `in` may alias anything, and would otherwise make the
     // compiler reload the vectors' data pointers in every inner loop
@@ -152,22 +165,30 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
     std::vector<uint32_t> best = start;
     uint32_t last_added = UINT32_MAX;
     uint64_t last_improved = 0;
+    auto finish = [&](uint64_t at) {  // best is optimal, found at swap `at`
+        publish(at);
+        if (found_step) *found_step = at;
+        return best;
+    };
     const uint64_t patience = std::max<uint64_t>(kStallMin, kStallPerElement * (uint64_t(R) + C));
+    uint64_t step_now = 0;
     for (uint64_t step = 1; step <= max_steps; ++step) {
+        step_now = step;
         if (steps) *steps = step;
         while (uncovered.empty()) {
             if (sel.size() < best.size()) {
                 best = sel;
                 last_improved = step;
                 std::sort(best.begin(), best.end());
-                if (best.size() <= lower_bound) return best;
+                if (best.size() <= lower_bound) return finish(step);
             }
             const uint32_t c = pick_drop(UINT32_MAX);
             remove(c);
             stamp[c] = step;
         }
         if ((step & 255) == 0) {
-            if (known_bound && best.size() <= known_bound->load(std::memory_order_relaxed)) return best;
+            if (known_bound && best.size() <= known_bound->load(std::memory_order_relaxed)) return finish(last_improved);
+            if (race && step > race->optimal_step.load(std::memory_order_relaxed)) break;  // cannot win
             if (Clock::now() > deadline) break;
         }
         if (step > 2 * last_improved + patience) break;  // no progress for a long while
@@ -196,9 +217,11 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
     }
     if (uncovered.empty() && sel.size() < best.size()) {
         best = sel;
+        last_improved = step_now;
         std::sort(best.begin(), best.end());
     }
     remove_redundant(P.cptr, P.crow, P.R, nullptr, nullptr, best);
+    if (found_step) *found_step = last_improved;
     return best;
 }
 
@@ -207,10 +230,14 @@ std::vector<uint32_t> local_search_multi(const Problem& P, const std::vector<uin
                                          Clock::time_point deadline, const std::atomic<size_t>* known_bound) {
     starts = std::max(1, starts);
     std::vector<std::vector<uint32_t>> found(static_cast<size_t>(starts));
+    std::vector<uint64_t> found_at(found.size(), 0);
+    SearchRace race;
     auto run = [&](size_t i) {
-        found[i] = local_search(P, start, lower_bound, max_steps, seed + i, deadline, nullptr, known_bound);
+        found[i] = local_search(P, start, lower_bound, max_steps, seed + i, deadline, nullptr, known_bound, &race,
+                                &found_at[i]);
     };
-    const size_t workers = std::min<size_t>(size_t(std::max(1, threads)), size_t(starts));
+    // side by side: one thread per run (they only stop each other when one is sure to win)
+    const size_t workers = threads > 1 ? size_t(starts) : 1;
     if (workers <= 1) {
         for (size_t i = 0; i < size_t(starts); ++i) run(i);
     } else {
@@ -238,7 +265,9 @@ std::vector<uint32_t> local_search_multi(const Problem& P, const std::vector<uin
     }
     size_t best = 0;
     for (size_t i = 1; i < found.size(); ++i)
-        if (found[i].size() < found[best].size()) best = i;
+        if (found[i].size() < found[best].size() ||
+            (found[i].size() == found[best].size() && found_at[i] < found_at[best]))
+            best = i;
     return found[best];
 }
 

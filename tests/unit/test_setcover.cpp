@@ -702,9 +702,31 @@ TEST_CASE("set cover: the local search returns valid covers, never worse than it
     CHECK(improved >= 5);  // the greedy start is not already optimal everywhere
 }
 
+// The run local_search_multi must return: the smallest of the single runs, ties to the earliest
+// swap at which it was found, then to the lowest seed.
+std::vector<uint32_t> best_single_run(const sc::Problem& P, const std::vector<uint32_t>& g, size_t lower_bound,
+                                      uint64_t steps, uint64_t seed, int starts, std::set<size_t>* sizes = nullptr,
+                                      std::set<uint64_t>* found_steps = nullptr) {
+    const auto far = sc::Clock::now() + std::chrono::hours(1);
+    std::vector<uint32_t> expect;
+    uint64_t expect_at = 0;
+    for (int k = 0; k < starts; ++k) {
+        uint64_t at = 0;
+        const std::vector<uint32_t> one =
+            sc::local_search(P, g, lower_bound, steps, seed + uint64_t(k), far, nullptr, nullptr, nullptr, &at);
+        if (sizes) sizes->insert(one.size());
+        if (found_steps) found_steps->insert(at);
+        if (k == 0 || one.size() < expect.size() || (one.size() == expect.size() && at < expect_at)) {
+            expect = one;
+            expect_at = at;
+        }
+    }
+    return expect;
+}
+
 TEST_CASE("set cover: independent local-search runs give the best run, whatever the thread count") {
     // Larger random instances and short runs (where seeds differ): the multi-start result is the smallest of the
-    // single runs (ties to the lowest seed) for 1, 2 and 3 threads.
+    // single runs (ties to the earliest found, then the lowest seed) for 1, 2 and 3 threads.
     const auto far = sc::Clock::now() + std::chrono::hours(1);
     Rng rng(31337);
     int differ = 0;
@@ -713,13 +735,8 @@ TEST_CASE("set cover: independent local-search runs give the best run, whatever 
         const sc::Problem P = to_problem(c);
         std::vector<uint32_t> g = sc::greedy_cover(P);
         sc::remove_redundant(P.cptr, P.crow, P.R, nullptr, nullptr, g);
-        std::vector<uint32_t> expect;
         std::set<size_t> sizes;
-        for (uint64_t k = 0; k < 4; ++k) {
-            const std::vector<uint32_t> one = sc::local_search(P, g, 0, 300, 40 + k, far);
-            sizes.insert(one.size());
-            if (k == 0 || one.size() < expect.size()) expect = one;
-        }
+        const std::vector<uint32_t> expect = best_single_run(P, g, 0, 300, 40, 4, &sizes);
         if (sizes.size() > 1) ++differ;
         for (int threads : {1, 2, 3}) {
             INFO("instance " << t << " threads " << threads);
@@ -727,6 +744,31 @@ TEST_CASE("set cover: independent local-search runs give the best run, whatever 
         }
     }
     CHECK(differ > 0);  // the seeds matter on some of these
+}
+
+TEST_CASE("set cover: runs that stop each other at a known bound still give the best single run") {
+    // With a lower bound the runs can reach, the first to reach it makes the others stop (SearchRace); the result
+    // is still the single runs' best by (size, swap found, seed), for 1, 2 and 3 threads and repeated runs.
+    const auto far = sc::Clock::now() + std::chrono::hours(1);
+    Rng rng(4242);
+    int raced = 0;
+    for (int t = 0; t < 10; ++t) {
+        const Coverage c = random_cover(rng, 300, 200, 0.02);
+        const sc::Problem P = to_problem(c);
+        std::vector<uint32_t> g = sc::greedy_cover(P);
+        sc::remove_redundant(P.cptr, P.crow, P.R, nullptr, nullptr, g);
+        // the bound: the best size long runs reach
+        const size_t bound = best_single_run(P, g, 0, 20000, 7, 4).size();
+        if (bound >= g.size()) continue;
+        std::set<uint64_t> found_steps;
+        const std::vector<uint32_t> expect = best_single_run(P, g, bound, 20000, 40, 4, nullptr, &found_steps);
+        raced += expect.size() == bound && found_steps.size() > 1;
+        for (int threads : {1, 2, 3, 3}) {
+            INFO("instance " << t << " threads " << threads);
+            CHECK(sc::local_search_multi(P, g, bound, 20000, 40, 4, threads, far) == expect);
+        }
+    }
+    CHECK(raced >= 3);  // runs that reach the bound at different swaps
 }
 
 TEST_CASE("set cover: the local search with no steps or an expired deadline keeps its start") {
@@ -744,27 +786,27 @@ TEST_CASE("set cover: the local search with no steps or an expired deadline keep
 }
 
 TEST_CASE("set cover: the local search's patience is proportional to the problem") {
-    // 50 disjoint groups of 3 rows, two identical columns per group: the start (one column per
-    // group) is optimal, so the search never improves and must stop after max(2000, 10 (R + C))
+    // 200 disjoint groups of 3 rows, two identical columns per group: the start (one column per
+    // group) is optimal, so the search never improves and must stop after max(2000, 5 (R + C))
     // swaps past its start, not after a fixed large count.
     Coverage c;
-    c.n_samples = 150;
-    c.n_balls = 100;
+    c.n_samples = 600;
+    c.n_balls = 400;
     c.ball_ptr = {0};
-    for (uint32_t b = 0; b < 100; ++b) {
+    for (uint32_t b = 0; b < 400; ++b) {
         for (uint32_t k = 0; k < 3; ++k) c.ball_samples.push_back(3 * (b / 2) + k);
         c.ball_ptr.push_back(uint32_t(c.ball_samples.size()));
     }
     c.build_transpose();
     const sc::Problem P = to_problem(c);
     std::vector<uint32_t> start;
-    for (uint32_t g = 0; g < 50; ++g) start.push_back(2 * g);
+    for (uint32_t g = 0; g < 200; ++g) start.push_back(2 * g);
     const auto far = sc::Clock::now() + std::chrono::hours(1);
     uint64_t steps = 0;
     const std::vector<uint32_t> s = sc::local_search(P, start, 0, 1000000, 3, far, &steps);
-    CHECK(s.size() == 50);
+    CHECK(s.size() == 200);
     CHECK(valid_cover(c, s));
-    CHECK(steps == 10 * (150 + 100) + 1);
+    CHECK(steps == 5 * (600 + 400) + 1);
     // a small problem gets the minimum patience
     Rng rng(11);
     const Coverage small = random_cover(rng, 20, 15, 0.25);
