@@ -106,9 +106,10 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
             const uint32_t r = crow[k];
             if (cnt[r] == 0) {
                 recover(r);
-                for (uint32_t q = rptr[r]; q < rptr[r + 1]; ++q)
-                    if (rcol[q] != c) score[rcol[q]] -= w[r];
-                sc -= w[r];
+                // c's own score is set below, so it may take the update too (no branch)
+                const int64_t wr = w[r];
+                for (uint32_t q = rptr[r], qe = rptr[r + 1]; q < qe; ++q) score[rcol[q]] -= wr;
+                sc -= wr;
             } else if (cnt[r] == 1) {
                 score[owner(r)] += w[r];
             }
@@ -137,9 +138,9 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
             row_change[r] = op;
             if (cnt[r] == 0) {
                 uncover(r);
-                for (uint32_t q = rptr[r]; q < rptr[r + 1]; ++q)
-                    if (rcol[q] != c) score[rcol[q]] += w[r];
-                sc += w[r];
+                const int64_t wr = w[r];
+                for (uint32_t q = rptr[r], qe = rptr[r + 1]; q < qe; ++q) score[rcol[q]] += wr;
+                sc += wr;
             } else if (cnt[r] == 1) {
                 score[owner(r)] -= w[r];
             }
