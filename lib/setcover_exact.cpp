@@ -13,7 +13,7 @@
 #include <mutex>
 
 #include <coin/Cbc_C_Interface.h>
-#include <coin/Clp_C_Interface.h>
+#include <coin/ClpSimplex.hpp>
 
 namespace ca {
 namespace sc {
@@ -157,24 +157,21 @@ std::mutex& coin_mutex() {
 }  // namespace
 
 namespace {
-struct ClpDeleter {
-    void operator()(Clp_Simplex* m) const { Clp_deleteModel(m); }
-};
-using ClpModel = std::unique_ptr<Clp_Simplex, ClpDeleter>;
+using ClpModel = std::unique_ptr<ClpSimplex>;
 
 // A silenced Clp model of min 1'x, A x >= 1 (no row upper bounds), 0 <= x <= 1, for the columns
-// given column-major (colstart / rowidx); null if Clp could not allocate. The caller holds the
-// coin mutex.
+// given column-major (colstart / rowidx). The caller holds the coin mutex. The time limit is
+// wall-clock time: Clp's plain limit counts the CPU time of the whole process, which the local
+// search's threads beside the LP use up two to four times faster than the clock.
 ClpModel load_cover_lp(uint32_t rows, const std::vector<CoinBigIndex>& colstart, const std::vector<int>& rowidx,
                        double time_limit_s) {
     const size_t cols = colstart.size() - 1;
     std::vector<double> val(rowidx.size(), 1.0), lb(cols, 0.0), ub(cols, 1.0), obj(cols, 1.0), rlb(rows, 1.0);
-    ClpModel model(Clp_newModel());
-    if (!model) return model;
-    Clp_setLogLevel(model.get(), 0);
-    Clp_loadProblem(model.get(), int(cols), int(rows), colstart.data(), rowidx.data(), val.data(), lb.data(),
-                    ub.data(), obj.data(), rlb.data(), nullptr);
-    if (time_limit_s > 0 && std::isfinite(time_limit_s)) Clp_setMaximumSeconds(model.get(), time_limit_s);
+    ClpModel model = std::make_unique<ClpSimplex>();
+    model->setLogLevel(0);
+    model->loadProblem(int(cols), int(rows), colstart.data(), rowidx.data(), val.data(), lb.data(), ub.data(),
+                       obj.data(), rlb.data(), nullptr);
+    if (time_limit_s > 0 && std::isfinite(time_limit_s)) model->setMaximumWallSeconds(time_limit_s);
     return model;
 }
 }  // namespace
@@ -185,11 +182,10 @@ std::vector<double> lp_duals(const Problem& P, double time_limit_s) {
     for (uint32_t c = 0; c <= P.C; ++c) colstart[c] = CoinBigIndex(P.cptr[c]);
     std::lock_guard<std::mutex> lock(coin_mutex());
     const ClpModel model = load_cover_lp(P.R, colstart, rowidx, time_limit_s);
-    if (!model) return {};
-    Clp_Simplex* m = model.get();
-    Clp_dual(m, 0);
-    if (Clp_status(m) != 0) return {};  // not optimal (time limit, numerical trouble)
-    const double* y = Clp_getRowPrice(m);
+    ClpSimplex* m = model.get();
+    m->dual(0);
+    if (m->status() != 0) return {};  // not optimal (time limit, numerical trouble)
+    const double* y = m->getRowPrice();
     if (!y) return {};
     std::vector<double> u(P.R);
     for (uint32_t r = 0; r < P.R; ++r) u[r] = std::isfinite(y[r]) ? std::max(0.0, y[r]) : 0.0;
@@ -224,17 +220,16 @@ std::vector<double> lp_duals_core(const Problem& P, const std::vector<double>& c
 
     std::lock_guard<std::mutex> lock(coin_mutex());
     const ClpModel model = load_cover_lp(P.R, colstart, rowidx, time_limit_s);
-    if (!model) return {};
-    Clp_Simplex* m = model.get();
+    ClpSimplex* m = model.get();
     // Primal simplex from the slack basis: on the |S| 30 000 kernels (7 800 rows) the dual
     // simplex had not finished its first solve after 10 s where the primal took 2.7 s; on the
     // 1500-sample kernels the primal was as fast or slightly faster.
-    Clp_primal(m, 0);
+    m->primal(0);
     std::vector<double> u(P.R);
     // Every round adds at least one column, so at most P.C rounds; in practice 2-5.
     for (;;) {
-        if (Clp_status(m) != 0) return {};  // infeasible core (cannot be: every row has a column), time, numerics
-        const double* y = Clp_getRowPrice(m);
+        if (m->status() != 0) return {};  // infeasible core (cannot be: every row has a column), time, numerics
+        const double* y = m->getRowPrice();
         if (!y) return {};
         for (uint32_t r = 0; r < P.R; ++r) u[r] = std::isfinite(y[r]) ? std::max(0.0, y[r]) : 0.0;
         colstart.assign(1, 0);
@@ -250,8 +245,8 @@ std::vector<double> lp_duals_core(const Problem& P, const std::vector<double>& c
         }
         const int added = int(colstart.size()) - 1;
         if (added == 0) return u;
-        Clp_addColumns(m, added, lb.data(), ub.data(), obj.data(), colstart.data(), rowidx.data(), val.data());
-        Clp_primal(m, 0);  // the basis stays primal feasible: continue from it
+        m->addColumns(added, lb.data(), ub.data(), obj.data(), colstart.data(), rowidx.data(), val.data());
+        m->primal(0);  // the basis stays primal feasible: continue from it
     }
 }
 
