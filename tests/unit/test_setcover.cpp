@@ -702,6 +702,13 @@ TEST_CASE("set cover: the local search returns valid covers, never worse than it
     CHECK(improved >= 5);  // the greedy start is not already optimal everywhere
 }
 
+// The greedy cover without redundant columns: the local search's start.
+std::vector<uint32_t> greedy_start(const sc::Problem& P) {
+    std::vector<uint32_t> g = sc::greedy_cover(P);
+    sc::remove_redundant(P.cptr, P.crow, P.R, nullptr, nullptr, g);
+    return g;
+}
+
 // The run local_search_multi must return: the smallest of the single runs, ties to the earliest
 // swap at which it was found, then to the lowest seed.
 std::vector<uint32_t> best_single_run(const sc::Problem& P, const std::vector<uint32_t>& g, size_t lower_bound,
@@ -731,10 +738,8 @@ TEST_CASE("set cover: independent local-search runs give the best run, whatever 
     Rng rng(31337);
     int differ = 0;
     for (int t = 0; t < 12; ++t) {
-        const Coverage c = random_cover(rng, 300, 200, 0.02);
-        const sc::Problem P = to_problem(c);
-        std::vector<uint32_t> g = sc::greedy_cover(P);
-        sc::remove_redundant(P.cptr, P.crow, P.R, nullptr, nullptr, g);
+        const sc::Problem P = to_problem(random_cover(rng, 300, 200, 0.02));
+        const std::vector<uint32_t> g = greedy_start(P);
         std::set<size_t> sizes;
         const std::vector<uint32_t> expect = best_single_run(P, g, 0, 300, 40, 4, &sizes);
         if (sizes.size() > 1) ++differ;
@@ -753,10 +758,8 @@ TEST_CASE("set cover: runs that stop each other at a known bound still give the 
     Rng rng(4242);
     int raced = 0;
     for (int t = 0; t < 10; ++t) {
-        const Coverage c = random_cover(rng, 300, 200, 0.02);
-        const sc::Problem P = to_problem(c);
-        std::vector<uint32_t> g = sc::greedy_cover(P);
-        sc::remove_redundant(P.cptr, P.crow, P.R, nullptr, nullptr, g);
+        const sc::Problem P = to_problem(random_cover(rng, 300, 200, 0.02));
+        const std::vector<uint32_t> g = greedy_start(P);
         // the bound: the best size long runs reach
         const size_t bound = best_single_run(P, g, 0, 20000, 7, 4).size();
         if (bound >= g.size()) continue;
