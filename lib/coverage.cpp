@@ -12,8 +12,6 @@
 #include <limits>
 #include <memory>
 #include <new>
-#include <system_error>
-#include <thread>
 
 namespace ca {
 
@@ -107,15 +105,7 @@ Status build_coverage(const std::vector<Vec3>& samples, const std::vector<Vec3>&
                     }
                 };
                 // a worker thread that cannot be started does its range here: the same arrays
-                std::vector<std::thread> pool;
-                size_t started = 1;
-                try {
-                    for (; started < workers; ++started) pool.emplace_back(query, started);
-                } catch (const std::system_error&) {
-                }
-                for (size_t w = started; w < workers; ++w) query(w);
-                query(0);
-                for (auto& t : pool) t.join();
+                run_workers(workers, query);
                 if (out_of_memory) return fail(Code::out_of_memory, "build_coverage: out of memory");
                 for (const Range& rg : ranges) {
                     if (cov.ball_samples.size() + rg.samples.size() >= size_t(std::numeric_limits<uint32_t>::max()))

@@ -11,6 +11,7 @@
 #include <functional>
 #include <system_error>
 #include <thread>
+#include <vector>
 
 namespace ca {
 
@@ -18,6 +19,33 @@ inline int resolve_threads(int32_t requested) {
     if (requested > 0) return requested;
     const unsigned hw = std::thread::hardware_concurrency();
     return hw ? int(hw) : 1;
+}
+
+// Calls work(w) for every w in [0, workers): w >= 1 on threads of their own, w = 0 on the
+// calling thread, then joins them. An exception thrown by a call is passed on (the one of the
+// lowest w) after all calls have ended. A thread that cannot be started leaves its w to the
+// calling thread.
+template <class Work>
+void run_workers(size_t workers, Work&& work) {
+    std::vector<std::exception_ptr> errors(workers);
+    auto guarded = [&](size_t w) {
+        try {
+            work(w);
+        } catch (...) {
+            errors[w] = std::current_exception();
+        }
+    };
+    std::vector<std::thread> pool;
+    size_t started = 1;
+    try {
+        for (; started < workers; ++started) pool.emplace_back(guarded, started);
+    } catch (const std::system_error&) {
+    }
+    for (size_t w = started; w < workers; ++w) guarded(w);
+    if (workers > 0) guarded(0);
+    for (auto& t : pool) t.join();
+    for (auto& e : errors)
+        if (e) std::rethrow_exception(e);
 }
 
 // Calls body(begin, end) over [0, n) in batches of `batch` items split across `threads`.
@@ -33,19 +61,11 @@ bool parallel_for(size_t n, int threads, size_t batch, const Monitor& monitor, c
         if (workers <= 1) {
             body(start, stop);
         } else {
-            std::vector<std::thread> pool;
             const size_t chunk = (len + workers - 1) / workers;
-            for (size_t w = 1; w < workers; ++w) {
+            run_workers(workers, [&](size_t w) {
                 const size_t b = start + w * chunk, e = std::min(stop, b + chunk);
-                if (b >= e) continue;
-                try {
-                    pool.emplace_back([&body, b, e] { body(b, e); });
-                } catch (const std::system_error&) {
-                    body(b, e);
-                }
-            }
-            body(start, std::min(stop, start + chunk));
-            for (auto& t : pool) t.join();
+                if (b < e) body(b, e);
+            });
         }
         if (!monitor.report(stage, double(stop) / double(n))) return false;
     }

@@ -35,9 +35,6 @@
 #include <new>
 #include <queue>
 #include <string>
-#include <exception>
-#include <system_error>
-#include <thread>
 
 namespace ca {
 
@@ -218,29 +215,10 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
         searched = local_search_multi(P, start, size_t(out.lb), kLocalSearchSteps, kLocalSearchSeed, kLocalSearchStarts,
                                       resolve_threads(search_threads), ls_deadline, &known_bound);
     };
-    std::exception_ptr lp_error;
-    std::thread lp_thread;
     if (resolve_threads(search_threads) > 1) {
-        try {
-            lp_thread = std::thread([&]() {
-                try {
-                    lp_phase();
-                } catch (...) {
-                    lp_error = std::current_exception();
-                }
-            });
-        } catch (const std::system_error&) {  // no thread: both phases here, same result
-        }
-    }
-    if (lp_thread.joinable()) {
-        try {
-            search();
-        } catch (...) {
-            lp_thread.join();
-            throw;
-        }
-        lp_thread.join();
-        if (lp_error) std::rethrow_exception(lp_error);
+        Beside lp(lp_phase);  // without a thread it runs here first: the same result
+        search();
+        lp.wait();
     } else {
         lp_phase();
         search();

@@ -6,12 +6,10 @@
 // limit, at the lower bound, or when it stalls. Deterministic for a seed (own RNG arithmetic;
 // the deadline is only a safety stop).
 #include "setcover_internal.h"
+#include "parallel.h"
 
 #include <algorithm>
 #include <cstdint>
-#include <exception>
-#include <system_error>
-#include <thread>
 
 namespace ca {
 namespace sc {
@@ -237,33 +235,13 @@ std::vector<uint32_t> local_search_multi(const Problem& P, const std::vector<uin
         found[i] = local_search(P, start, lower_bound, max_steps, seed + i, deadline, nullptr, known_bound, &race,
                                 &found_at[i]);
     };
-    // side by side: one thread per run (they only stop each other when one is sure to win)
+    // side by side: one thread per run (they only stop each other when one is sure to win); with
+    // one thread, the runs one after the other. Worker w takes runs w, w + workers, ...;
+    // exceptions (bad_alloc) are passed on.
     const size_t workers = threads > 1 ? size_t(starts) : 1;
-    if (workers <= 1) {
-        for (size_t i = 0; i < size_t(starts); ++i) run(i);
-    } else {
-        // worker w takes runs w, w + workers, ...; exceptions (bad_alloc) are passed on
-        std::vector<std::exception_ptr> errors(workers);
-        auto work = [&](size_t w) {
-            try {
-                for (size_t i = w; i < size_t(starts); i += workers) run(i);
-            } catch (...) {
-                errors[w] = std::current_exception();
-            }
-        };
-        // a worker thread that cannot be started does its share here: the same runs either way
-        std::vector<std::thread> pool;
-        size_t started = 1;
-        try {
-            for (; started < workers; ++started) pool.emplace_back(work, started);
-        } catch (const std::system_error&) {
-        }
-        for (size_t w = started; w < workers; ++w) work(w);
-        work(0);
-        for (auto& t : pool) t.join();
-        for (auto& e : errors)
-            if (e) std::rethrow_exception(e);
-    }
+    run_workers(workers, [&](size_t w) {
+        for (size_t i = w; i < size_t(starts); i += workers) run(i);
+    });
     size_t best = 0;
     for (size_t i = 1; i < found.size(); ++i)
         if (found[i].size() < found[best].size() ||
