@@ -25,7 +25,7 @@ TEST_CASE("parallel: run_workers calls every worker once and passes on a worker'
     CHECK(done.load() == 3);
 }
 
-TEST_CASE("parallel: parallel_for covers [0, n) once and passes on an exception from a worker range") {
+TEST_CASE("parallel: parallel_for covers every index once and passes on an exception from a worker range") {
     const size_t n = 10000;
     std::vector<int> hit(n, 0);
     CHECK(ca::parallel_for(n, 3, 1024, ca::Monitor{}, "test", [&](size_t b, size_t e) {
@@ -40,7 +40,7 @@ TEST_CASE("parallel: parallel_for covers [0, n) once and passes on an exception 
                     std::runtime_error);
 }
 
-TEST_CASE("parallel: Beside runs its task and hands over its exception at wait()") {
+TEST_CASE("parallel: Beside runs its task and hands over its exception at wait") {
     int value = 0;
     {
         ca::Beside task([&] { value = 42; });
