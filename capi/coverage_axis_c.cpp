@@ -486,6 +486,7 @@ ca_status ca_select(ca_context* ctx, const ca_candidate_set* set, const ca_selec
         so.target_count = o.target_count;
         so.target_tolerance = o.target_tolerance;
         so.dc_threshold = o.divide_threshold;
+        so.threads = ctx->desc.threads;
         const size_t ns = set->core.cover_samples.size(), nb = set->core.balls.size();
         if (o.ignorable_samples) so.cover.ignorable_samples.assign(o.ignorable_samples, o.ignorable_samples + ns);
         if (o.forced_in) so.cover.forced_in.assign(o.forced_in, o.forced_in + nb);
@@ -726,6 +727,7 @@ ca_status ca_evaluate(ca_context* ctx, const ca_surface_view* surface, const ca_
         eo.surface_samples = o.surface_samples;
         eo.envelope_samples = o.envelope_samples;
         eo.seed = o.seed;
+        eo.threads = ctx->desc.threads;
         const auto t0 = std::chrono::steady_clock::now();
         ca::EvaluateResult er;
         st = ca::evaluate(surf.mesh, sk, eo, ctx->monitor(), er);

@@ -237,13 +237,15 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
         // the Delaunay step (the same structures either way); they only read the mesh.
         SurfaceStructures built;
         const Mesh& mesh = out.surface.mesh;
-        Beside structures([&built, &mesh] {
-            built.winding = std::make_shared<const WindingNumber>(mesh);
-            built.distance = std::make_shared<const MeshDistance>(mesh);
-            // open meshes: no ball reaches out through a hole (candidates_holes.cpp)
-            const Mesh caps = hole_caps(mesh);
-            if (!caps.triangles.empty()) built.cap_distance = std::make_unique<const MeshDistance>(caps);
-        });
+        Beside structures(
+            [&built, &mesh] {
+                built.winding = std::make_shared<const WindingNumber>(mesh);
+                built.distance = std::make_shared<const MeshDistance>(mesh);
+                // open meshes: no ball reaches out through a hole (candidates_holes.cpp)
+                const Mesh caps = hole_caps(mesh);
+                if (!caps.triangles.empty()) built.cap_distance = std::make_unique<const MeshDistance>(caps);
+            },
+            threads > 1);
         out.cover_samples = sample_surface(mesh, opt.cover_samples, stream_seed(opt.seed, 1));
         out.time_sampling_s = seconds_since(t0);
         st = opt.generator == Generator::voronoi ? mesh_voronoi_candidates(opt, monitor, structures, built, threads, out)
@@ -252,7 +254,7 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
         const MeshDistance* cap_distance = built.cap_distance.get();
         if (st.ok() && cap_distance && !clamp_to_hole_caps(out, *cap_distance, threads, monitor)) st = cancelled();
         if (st.ok()) {
-            out.fallback_balls = add_fallback_balls(out, *built.winding, *built.distance, cap_distance);
+            out.fallback_balls = add_fallback_balls(out, *built.winding, *built.distance, cap_distance, threads);
             out.winding = std::move(built.winding);
             out.distance = std::move(built.distance);
         }

@@ -19,7 +19,7 @@
 namespace ca {
 
 size_t add_fallback_balls(CandidateSet& set, const WindingNumber& winding, const MeshDistance& distance,
-                          const MeshDistance* caps) {
+                          const MeshDistance* caps, int threads) {
     // radius at c: distance to the surface, and to the hole caps of an open mesh (a ball under a
     // hole must not grow out through it)
     auto radius_at = [&](const Vec3& c) {
@@ -35,7 +35,7 @@ size_t add_fallback_balls(CandidateSet& set, const WindingNumber& winding, const
         reach[i] = set.balls[i].radius + kFallbackReach;
     }
     Coverage cov;
-    if (!build_coverage(set.cover_samples, centers, reach, Monitor{}, cov).ok()) return 0;
+    if (!build_coverage(set.cover_samples, centers, reach, Monitor{}, cov, threads).ok()) return 0;
     if (cov.sample_ptr.size() != set.cover_samples.size() + 1) cov.build_transpose();
     size_t added = 0;
     for (size_t j = 0; j < set.cover_samples.size(); ++j) {

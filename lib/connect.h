@@ -99,7 +99,7 @@ private:
 
 namespace detail {
 // The medial-axis route's raw edges and faces (connect_medial.cpp); `out.balls` is already set.
-Status connect_medial(const CandidateSet& set, const Selection& sel, const Monitor& monitor, Skeleton& out);
+Status connect_medial(const CandidateSet& set, const Selection& sel, int threads, const Monitor& monitor, Skeleton& out);
 }  // namespace detail
 
 }  // namespace ca

@@ -34,7 +34,7 @@ struct MedialMesh {
 
 // Tetrahedra and inner flags of the Voronoi samples: the candidate set's own, or computed here
 // (random generator) from its Voronoi samples.
-Status voronoi_diagram(const CandidateSet& set, const Monitor& monitor, std::vector<Vec3>& pts,
+Status voronoi_diagram(const CandidateSet& set, int threads, const Monitor& monitor, std::vector<Vec3>& pts,
                        std::vector<Tet>& tets, std::vector<uint8_t>& inner) {
     if (!set.voronoi_tets.empty() && set.voronoi_inner.size() == set.voronoi_tets.size()) {
         pts = set.dense_samples;
@@ -51,7 +51,7 @@ Status voronoi_diagram(const CandidateSet& set, const Monitor& monitor, std::vec
         set.winding ? nullptr : std::make_shared<const WindingNumber>(set.surface.mesh);
     const WindingNumber& winding = set.winding ? *set.winding : *own;
     inner.assign(tets.size(), 0);
-    const bool done = parallel_for(tets.size(), resolve_threads(0), 8192, monitor, "connect", [&](size_t b, size_t e) {
+    const bool done = parallel_for(tets.size(), resolve_threads(threads), 8192, monitor, "connect", [&](size_t b, size_t e) {
         for (size_t t = b; t < e; ++t) {
             Vec3 c;
             const Tet& q = tets[t];
@@ -169,14 +169,14 @@ MedialMesh build_medial_mesh(const std::vector<Vec3>& pts, const std::vector<Tet
 
 namespace detail {
 
-Status connect_medial(const CandidateSet& set, const Selection& sel, const Monitor& monitor, Skeleton& out) {
+Status connect_medial(const CandidateSet& set, const Selection& sel, int threads, const Monitor& monitor, Skeleton& out) {
     const size_t k = sel.indices.size();
     if (k < 2) return Status::success();
     if (!monitor.report("connect", 0)) return cancelled();
     std::vector<Vec3> pts;
     std::vector<Tet> tets;
     std::vector<uint8_t> inner;
-    Status st = voronoi_diagram(set, monitor, pts, tets, inner);
+    Status st = voronoi_diagram(set, threads, monitor, pts, tets, inner);
     if (!st.ok()) return st;
     const MedialMesh m = build_medial_mesh(pts, tets, inner);
     if (m.vertices.empty()) return fail(Code::geometry_failure, "the inner Voronoi diagram has no vertex");

@@ -290,7 +290,7 @@ Status connect_balls(const CandidateSet& set, const Selection& sel, const Connec
     Status st;
     switch (opt.method) {
         case ConnectMethod::power: st = connect_power(set, sel, monitor, out); break;
-        case ConnectMethod::medial: st = detail::connect_medial(set, sel, monitor, out); break;
+        case ConnectMethod::medial: st = detail::connect_medial(set, sel, opt.threads, monitor, out); break;
         default: return fail(Code::invalid_argument, "unknown connection method");
     }
     if (!st.ok()) return st;

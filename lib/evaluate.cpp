@@ -92,7 +92,7 @@ namespace {
 // ---------------------------------------------------------------------------------------------
 
 template <class Fn>
-bool parallel_for(size_t n, const Monitor& monitor, double f0, double f1, Fn&& fn,
+bool parallel_for(size_t n, int32_t threads, const Monitor& monitor, double f0, double f1, Fn&& fn,
                   bool& failed) {
     const size_t chunk = 512;
     const size_t nchunks = (n + chunk - 1) / chunk;
@@ -117,12 +117,12 @@ bool parallel_for(size_t n, const Monitor& monitor, double f0, double f1, Fn&& f
         }
     };
     unsigned hw = std::thread::hardware_concurrency();
-    size_t nthreads = std::min<size_t>(hw == 0 ? 1 : hw, 8);
+    size_t nthreads = threads > 0 ? size_t(threads) : std::min<size_t>(hw == 0 ? 1 : hw, 8);
     nthreads = std::min(nthreads, std::max<size_t>(nchunks, 1));
-    std::vector<std::thread> threads;
+    std::vector<std::thread> pool;
     for (size_t t = 1; t < nthreads; ++t) {
         try {
-            threads.emplace_back(worker);
+            pool.emplace_back(worker);
         } catch (...) {
             break;   // fewer threads: still correct
         }
@@ -138,7 +138,7 @@ bool parallel_for(size_t n, const Monitor& monitor, double f0, double f1, Fn&& f
             stop = true;
         }
     }
-    for (auto& t : threads) t.join();
+    for (auto& t : pool) t.join();
     if (error) failed = true;
     if (monitor.cancelled()) cancelled = true;
     return !cancelled && !error;
@@ -600,7 +600,7 @@ Status evaluate_impl(const Mesh& surface, const Skeleton& skeleton_in, const Eva
             generated += cand.size();
             std::vector<char> keep(cand.size(), 0);
             const double f0 = 0.3 * round / 8.0, f1 = 0.3 * (round + 1) / 8.0;
-            if (!parallel_for(cand.size(), monitor, f0, f1,
+            if (!parallel_for(cand.size(), opt.threads, monitor, f0, f1,
                               [&](size_t i) { keep[i] = env.F(cand[i], -tol) > -tol; }, failed))
                 return cancelled_or_failed();
             for (size_t i = 0; i < cand.size(); ++i)
@@ -662,7 +662,7 @@ Status evaluate_impl(const Mesh& surface, const Skeleton& skeleton_in, const Eva
                 return env.F(x, -tol) > -tol ? d : kInf;
             });
         };
-        if (!parallel_for(samples.size(), monitor, 0.3, 0.5,
+        if (!parallel_for(samples.size(), opt.threads, monitor, 0.3, 0.5,
                           [&](size_t i) {
                               const double f = env.F(samples[i]);
                               // on or outside E (up to rounding): F is the exact distance
@@ -676,12 +676,12 @@ Status evaluate_impl(const Mesh& surface, const Skeleton& skeleton_in, const Eva
     std::vector<double> d_es(boundary.size());
     if (!surface.triangles.empty()) {
         const MeshDistance md(surface);
-        if (!parallel_for(boundary.size(), monitor, 0.5, 1.0,
+        if (!parallel_for(boundary.size(), opt.threads, monitor, 0.5, 1.0,
                           [&](size_t i) { d_es[i] = md.distance(boundary[i]); }, failed))
             return cancelled_or_failed();
     } else {
         const NearestPoint nearest_input(V);
-        if (!parallel_for(boundary.size(), monitor, 0.5, 1.0,
+        if (!parallel_for(boundary.size(), opt.threads, monitor, 0.5, 1.0,
                           [&](size_t i) { d_es[i] = nearest_input.distance(boundary[i]); }, failed))
             return cancelled_or_failed();
     }

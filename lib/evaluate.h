@@ -19,6 +19,7 @@ struct EvaluateOptions {
     uint32_t surface_samples = 30000;    // plus the input vertices
     uint32_t envelope_samples = 100000;  // at least; boundary samples of E
     uint64_t seed = 1;
+    int32_t threads = 0;                 // worker threads (0 = all cores, at most 8; 1 = serial)
 };
 
 struct EvaluateResult {

@@ -73,10 +73,15 @@ bool parallel_for(size_t n, int threads, size_t batch, const Monitor& monitor, c
 }
 
 // Runs a task on another thread while the caller goes on; wait() joins it and passes on its
-// exception. The task must not call the monitor. Without a thread it runs in the constructor.
+// exception. The task must not call the monitor. Without a thread (`on_thread` false, or none
+// can be started) it runs in the constructor.
 class Beside {
 public:
-    explicit Beside(std::function<void()> task) : task_(std::move(task)) {
+    explicit Beside(std::function<void()> task, bool on_thread = true) : task_(std::move(task)) {
+        if (!on_thread) {
+            run();
+            return;
+        }
         try {
             thread_ = std::thread([this] { run(); });
         } catch (const std::system_error&) {

@@ -222,6 +222,7 @@ Status select_balls(const CandidateSet& set, const SelectOptions& opt, const Mon
             radii[i] = set.balls[i].radius;
         }
         CoverOptions cover = opt.cover;
+        if (cover.search_threads == 0) cover.search_threads = opt.threads;
         cover.centers = &centers;
         cover.radii = &radii;
         const Dilation dil = opt.dilation;
@@ -242,7 +243,7 @@ Status select_balls(const CandidateSet& set, const SelectOptions& opt, const Mon
             const double value = dil == Dilation::offset ? opt.delta : opt.scale;
             make_radii(value);
             Coverage cov;
-            Status st = build_coverage(set.cover_samples, centers, dilated, monitor, cov);
+            Status st = build_coverage(set.cover_samples, centers, dilated, monitor, cov, opt.threads);
             if (!st.ok()) return st;
             out.time_coverage_s = seconds_since(t0);
             if (monitor.cancelled()) return fail(Code::cancelled, "cancelled");
@@ -273,7 +274,7 @@ Status select_balls(const CandidateSet& set, const SelectOptions& opt, const Mon
             const auto tc = Clock::now();
             Coverage cov;
             if (rebuild) {
-                Status st = build_coverage(set.cover_samples, centers, dilated, monitor, big);
+                Status st = build_coverage(set.cover_samples, centers, dilated, monitor, big, opt.threads);
                 if (!st.ok()) return st;
             } else {
                 cov = shrink_coverage(big, set.cover_samples, centers, dilated);

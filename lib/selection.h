@@ -16,6 +16,9 @@ struct SelectOptions {
     double delta = 0.02;     // internal units = fraction of the longest bbox side
     double scale = 1.5;
     bool skip_uncoverable = false;
+    // Worker threads of the coverage queries and the local search (0 = all cores, 1 = serial);
+    // the result is the same for any number. CoverOptions::search_threads, when set, wins.
+    int32_t threads = 0;
     CoverOptions cover;      // solver, time limit (per solve: per probe / per part), masks
 
     // Target size (0 = off): return a selection of at most target_count balls with the smallest
