@@ -28,11 +28,13 @@ struct SplitMix {
 // Stall rule: stop once the steps since the last improvement exceed as many steps as the last
 // improvement needed plus a patience proportional to the problem, kStallPerElement swaps per
 // row and column but at least kStallMin (on the paper models' kernels the latest improvement
-// came ~10 (R + C) swaps past twice the step of the previous one in a single run, most come much sooner; the old
-// fixed 100000 swaps cost 0.3-0.5 s on small kernels that cannot improve). 5 instead of 20
-// since four seeded runs share the work: 20, 10 and 5 gave the same covers on the 24 paper
-// models at the defaults (1591 balls in all) and in bench_select's rows (paper models with
-// Voronoi and with 10 000 random candidates); 3 and 2 lost a ball on bear and desk_table.
+// of a single run came ~10 (R + C) swaps past twice the step of the previous one, most come
+// much sooner; the old fixed 100000 swaps cost 0.3-0.5 s on small kernels that cannot
+// improve). 5 since four seeded runs share the work: 10 and 5 gave the same covers on the 24
+// paper models at the defaults (1591 balls in all) and, at a 1 s limit, on bench_select's rows
+// with Voronoi and with 10 000 random candidates (5 one ball better on bear, whose search the
+// limit cut); 3 and 2 lost a ball on bear and desk_table. (20 and 10 had given the same covers
+// on the ten hardest paper kernels.)
 constexpr uint64_t kStallPerElement = 5;
 constexpr uint64_t kStallMin = 2000;
 }  // namespace
