@@ -1,6 +1,7 @@
-// parallel.h: a minimal fork-join loop over index ranges with std::thread, and one task run
-// beside the caller. Work is cut into batches; between batches the calling thread reports
-// progress (callbacks never run on worker threads) and stops early when the monitor says so.
+// parallel.h: fork-join with std::thread: a fixed set of workers (run_workers), a loop over
+// index ranges built on it (parallel_for), and one task run beside the caller (Beside). The
+// loop cuts work into batches; between batches the calling thread reports progress (callbacks
+// never run on worker threads) and stops early when the monitor says so.
 // A thread that cannot be started (std::system_error) leaves its work to the calling thread:
 // the results are the same either way.
 #pragma once
