@@ -15,7 +15,8 @@
 // reduced-cost fixing (drop every column that no cover smaller than the incumbent can
 // contain), reduction again, and CBC on what is left with the incumbent as cutoff and CBC's
 // own heuristics off (it only has to prove). With the fast effort (the default) CBC runs only
-// when one ball separates incumbent and bound on a small kernel, with a node limit (see Effort);
+// when one ball separates incumbent and bound on a small kernel, with a node limit and no
+// preprocessing or cuts (see Effort);
 // otherwise the local-search cover is returned with its bound. Row generation (exact ILPs on growing row subsets,
 // see row_generation) runs first only on request (CoverOptions::row_generation) or when the
 // component is too large for one CBC solve.
@@ -314,7 +315,7 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
     }
     CbcOutcome cbc;
     try {
-        cbc = run_cbc(K, kbest, has_deadline ? remaining : 0.0, threads, false, false, fast ? kFastCbcNodes : 0);
+        cbc = run_cbc(K, kbest, has_deadline ? remaining : 0.0, threads, false, false, fast ? kFastCbcNodes : 0, fast);
     } catch (const std::bad_alloc&) {
         throw;
     } catch (...) {

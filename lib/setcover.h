@@ -17,7 +17,8 @@ enum class Solver : int32_t { exact = 0, greedy = 1, capp = 2 };
 // cuts it short):
 // - fast (default): greedy, the LP bound, local search; CBC only when a single ball separates
 //   the incumbent from the bound and the kernel left after reduced-cost fixing is small
-//   (kFastCbcMaxRows rows), with at most kFastCbcNodes branch-and-bound nodes. Otherwise the
+//   (kFastCbcMaxRows rows), with at most kFastCbcNodes branch-and-bound nodes and without
+//   CBC's preprocessing and cuts (on such small kernels they cost more than they save). Otherwise the
 //   local-search cover is returned with its LP bound and gap (usually already the optimum:
 //   CBC's remaining work is the proof).
 // - prove: CBC until the cover is proven optimal or the time limit ends it.

@@ -256,7 +256,7 @@ std::vector<double> lp_duals_core(const Problem& P, const std::vector<double>& c
 // 1500 x 2000 kernel where the cutoff alone gives the same result in seconds.
 // With `first_solution`, CBC stops at the first cover below the cutoff (not proven optimal).
 CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int threads, bool first_solution,
-                   bool heuristics, int max_nodes) {
+                   bool heuristics, int max_nodes, bool lean) {
     CbcOutcome out;
     std::vector<CoinBigIndex> colstart(P.C + 1);
     std::vector<int> rowidx(P.crow.begin(), P.crow.end());
@@ -290,6 +290,12 @@ CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int 
     // kernels and rarely beat a local-search incumbent.
     if (!heuristics) Cbc_setParameter(m, "heuristicsOnOff", "off");
     if (first_solution) Cbc_setParameter(m, "maxSolutions", "1");
+    // On Ant-12's 228 x 208 kernel (a one-ball gap) CBC took 60 ms with its preprocessing and
+    // cuts, 30 ms without the cuts and 15 ms without either, with the same outcome.
+    if (lean) {
+        Cbc_setParameter(m, "preprocess", "off");
+        Cbc_setParameter(m, "cuts", "off");
+    }
     if (max_nodes > 0) {
         std::snprintf(buf, sizeof buf, "%d", max_nodes);
         Cbc_setParameter(m, "maxNodes", buf);

@@ -84,8 +84,10 @@ struct CbcOutcome {
 // `first_solution` stops at the first one; `heuristics` = CBC's own primal heuristics.
 constexpr double kCutoffSlack = 1e-3;
 // `max_nodes` > 0: CBC's branch-and-bound node limit (deterministic, unlike the time limit).
+// `lean`: no preprocessing and no cut generation, for short node-limited proofs on small
+// kernels, where they cost more than the branching they save.
 CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int threads, bool first_solution = false,
-                   bool heuristics = true, int max_nodes = 0);
+                   bool heuristics = true, int max_nodes = 0, bool lean = false);
 
 // Row generation (lazy covering constraints) on a reduced component K, looking for covers
 // smaller than `target` (the incumbent's size; `best` below, lowered as better covers appear).
