@@ -160,6 +160,12 @@ constexpr uint64_t kLocalSearchSeed = 3;
 // Independent local-search runs (seeds kLocalSearchSeed, +1, ...): single runs with seeds 1-11
 // differed by 1-2 balls on cup, desk_table and bird_penguin.
 constexpr int kLocalSearchStarts = 4;
+// Components of at most kSmallSearchRows rows get kSmallSearchStarts runs: on such kernels two
+// runs gave the same cover sizes and proofs as four (bench_select at a 1 s limit, all 57 rows;
+// other covers of the same size on plane, spider and dog_sub_fox) for half the search time
+// (Ant-12: 327 rows, its selection ~10 ms faster).
+constexpr uint32_t kSmallSearchRows = 400;
+constexpr int kSmallSearchStarts = 2;
 
 // Largest component CBC solves as a whole (its root LP cannot be interrupted).
 constexpr uint32_t kWholeCbcMaxRows = 4000;
@@ -213,7 +219,8 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
     const std::vector<uint32_t> start = out.sel;
     std::vector<uint32_t> searched;
     auto search = [&]() {
-        searched = local_search_multi(P, start, size_t(out.lb), kLocalSearchSteps, kLocalSearchSeed, kLocalSearchStarts,
+        const int starts = P.R <= kSmallSearchRows ? kSmallSearchStarts : kLocalSearchStarts;
+        searched = local_search_multi(P, start, size_t(out.lb), kLocalSearchSteps, kLocalSearchSeed, starts,
                                       resolve_threads(search_threads), ls_deadline, &known_bound);
     };
     if (resolve_threads(search_threads) > 1) {
