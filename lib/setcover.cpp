@@ -200,7 +200,8 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
     // reduced-cost greedy around them) and the local search from the warm-up's cover (at most a
     // quarter of what is left: it usually reaches the optimum, so that CBC only has to prove it)
     // run side by side. Neither depends on the other's result, so the outcome is the same on one
-    // thread or several; the LP's bound, once known, only lets the search stop earlier.
+    // thread or several; the LP's bound, once known, only lets the search stop earlier, and the
+    // runs do not depend on which thread takes them or when (SearchRuns).
     double lp_limit = 0;
     if (has_deadline) lp_limit = std::max(1e-3, std::chrono::duration<double>(deadline - Clock::now()).count() / 4);
     Clock::time_point ls_deadline = deadline;
@@ -217,20 +218,25 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
         known_bound.store(std::max(known_bound.load(), size_t(std::max(0.0, std::ceil(D.bound - 1e-6)))));
     };
     const std::vector<uint32_t> start = out.sel;
-    std::vector<uint32_t> searched;
-    auto search = [&]() {
-        const int starts = P.R <= kSmallSearchRows ? kSmallSearchStarts : kLocalSearchStarts;
-        searched = local_search_multi(P, start, size_t(out.lb), kLocalSearchSteps, kLocalSearchSeed, starts,
-                                      resolve_threads(search_threads), ls_deadline, &known_bound);
-    };
-    if (resolve_threads(search_threads) > 1) {
-        Beside lp(lp_phase);  // without a thread it runs here first: the same result
-        search();
+    const int starts = P.R <= kSmallSearchRows ? kSmallSearchStarts : kLocalSearchStarts;
+    SearchRuns runs(P, start, size_t(out.lb), kLocalSearchSteps, kLocalSearchSeed, starts, ls_deadline, &known_bound);
+    const int search_workers = std::min(resolve_threads(search_threads), starts);
+    if (search_workers > 1) {
+        // One search run per thread, and the LP's thread takes the runs still waiting once its
+        // LP is solved (when every run had its own thread beside the LP, the LP got less than
+        // half a core on two: bear's LP took 145 ms instead of ~70). Without a thread for the
+        // LP it runs here first: the same result.
+        Beside lp([&]() {
+            lp_phase();
+            runs.work();
+        });
+        run_workers(size_t(search_workers), [&](size_t) { runs.work(); });
         lp.wait();
     } else {
         lp_phase();
-        search();
+        runs.work();
     }
+    const std::vector<uint32_t> searched = runs.best();
     const bool lp_ok = have_duals;  // else CBC does not get the whole component (its root LP)
     if (have_duals) {
         if (D.best.size() < L.best.size()) L.best = D.best;

@@ -146,6 +146,30 @@ std::vector<uint32_t> local_search_multi(const Problem& P, const std::vector<uin
                                          uint64_t max_steps, uint64_t seed, int starts, int threads,
                                          Clock::time_point deadline, const std::atomic<size_t>* known_bound = nullptr);
 
+// The runs of local_search_multi as a pool of work: every thread that calls work() takes the
+// next run not yet started until none is left, so threads can join at any time (the LP's
+// thread, once its LP is solved). best() (after every work() has returned) is the same cover
+// however many threads took part and whenever they joined.
+class SearchRuns {
+public:
+    SearchRuns(const Problem& P, const std::vector<uint32_t>& start, size_t lower_bound, uint64_t max_steps,
+               uint64_t seed, int starts, Clock::time_point deadline, const std::atomic<size_t>* known_bound);
+    void work();
+    std::vector<uint32_t> best() const;
+
+private:
+    const Problem& P_;
+    const std::vector<uint32_t>& start_;
+    size_t lower_bound_;
+    uint64_t max_steps_, seed_;
+    Clock::time_point deadline_;
+    const std::atomic<size_t>* known_bound_;
+    SearchRace race_;
+    std::atomic<size_t> next_{0};
+    std::vector<std::vector<uint32_t>> found_;
+    std::vector<uint64_t> found_at_;
+};
+
 // ---- setcover_reduce.cpp ----
 // Reduction of the input to its kernel: rows = the `required` samples, columns = the `allowed`
 // balls, the `locked` ones (forced in) selected first; `transpose_ok`: cov's sample -> ball

@@ -226,30 +226,34 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
     return best;
 }
 
+SearchRuns::SearchRuns(const Problem& P, const std::vector<uint32_t>& start, size_t lower_bound, uint64_t max_steps,
+                       uint64_t seed, int starts, Clock::time_point deadline, const std::atomic<size_t>* known_bound)
+    : P_(P), start_(start), lower_bound_(lower_bound), max_steps_(max_steps), seed_(seed), deadline_(deadline),
+      known_bound_(known_bound), found_(size_t(std::max(1, starts))), found_at_(found_.size(), 0) {}
+
+void SearchRuns::work() {
+    for (size_t i = next_++; i < found_.size(); i = next_++)
+        found_[i] = local_search(P_, start_, lower_bound_, max_steps_, seed_ + i, deadline_, nullptr, known_bound_, &race_,
+                                 &found_at_[i]);
+}
+
+std::vector<uint32_t> SearchRuns::best() const {
+    size_t best = 0;
+    for (size_t i = 1; i < found_.size(); ++i)
+        if (found_[i].size() < found_[best].size() ||
+            (found_[i].size() == found_[best].size() && found_at_[i] < found_at_[best]))
+            best = i;
+    return found_[best];
+}
+
 std::vector<uint32_t> local_search_multi(const Problem& P, const std::vector<uint32_t>& start, size_t lower_bound,
                                          uint64_t max_steps, uint64_t seed, int starts, int threads,
                                          Clock::time_point deadline, const std::atomic<size_t>* known_bound) {
-    starts = std::max(1, starts);
-    std::vector<std::vector<uint32_t>> found(static_cast<size_t>(starts));
-    std::vector<uint64_t> found_at(found.size(), 0);
-    SearchRace race;
-    auto run = [&](size_t i) {
-        found[i] = local_search(P, start, lower_bound, max_steps, seed + i, deadline, nullptr, known_bound, &race,
-                                &found_at[i]);
-    };
+    SearchRuns runs(P, start, lower_bound, max_steps, seed, starts, deadline, known_bound);
     // side by side: one thread per run (they only stop each other when one is sure to win); with
-    // one thread, the runs one after the other. Worker w takes runs w, w + workers, ...;
-    // exceptions (bad_alloc) are passed on.
-    const size_t workers = threads > 1 ? size_t(starts) : 1;
-    run_workers(workers, [&](size_t w) {
-        for (size_t i = w; i < size_t(starts); i += workers) run(i);
-    });
-    size_t best = 0;
-    for (size_t i = 1; i < found.size(); ++i)
-        if (found[i].size() < found[best].size() ||
-            (found[i].size() == found[best].size() && found_at[i] < found_at[best]))
-            best = i;
-    return found[best];
+    // one thread, the runs one after the other. Exceptions (bad_alloc) are passed on.
+    run_workers(threads > 1 ? size_t(std::max(1, starts)) : 1, [&](size_t) { runs.work(); });
+    return runs.best();
 }
 
 }  // namespace sc

@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <set>
 #include <string>
+#include <thread>
 #include <vector>
 
 #if defined(__unix__)
@@ -772,6 +773,41 @@ TEST_CASE("set cover: runs that stop each other at a known bound still give the 
         }
     }
     CHECK(raced >= 3);  // runs that reach the bound at different swaps
+}
+
+TEST_CASE("set cover: search runs taken by threads that join late, with a bound that arrives late, give the best single run") {
+    // SearchRuns as the exact solver uses it: some threads take runs at once, another joins after a delay (the LP's
+    // thread, once its LP is solved), and the bound the runs may stop at is published during the search.
+    const auto far = sc::Clock::now() + std::chrono::hours(1);
+    Rng rng(777);
+    int checked = 0;
+    for (int t = 0; t < 6; ++t) {
+        const sc::Problem P = to_problem(random_cover(rng, 300, 200, 0.02));
+        const std::vector<uint32_t> g = greedy_start(P);
+        const size_t bound = best_single_run(P, g, 0, 20000, 7, 4).size();
+        if (bound >= g.size()) continue;
+        const std::vector<uint32_t> expect = best_single_run(P, g, bound, 20000, 40, 4);
+        for (int early : {1, 2}) {
+            for (int delay_ms : {0, 2, 20}) {
+                INFO("instance " << t << " early threads " << early << " delay " << delay_ms << " ms");
+                std::atomic<size_t> known{0};
+                sc::SearchRuns runs(P, g, 0, 20000, 40, 4, far, &known);
+                std::thread late([&] {
+                    std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
+                    known.store(bound);
+                    runs.work();
+                });
+                std::vector<std::thread> pool;
+                for (int k = 1; k < early; ++k) pool.emplace_back([&] { runs.work(); });
+                runs.work();
+                for (auto& th : pool) th.join();
+                late.join();
+                CHECK(runs.best() == expect);
+                ++checked;
+            }
+        }
+    }
+    CHECK(checked >= 12);
 }
 
 TEST_CASE("set cover: the local search with no steps or an expired deadline keeps its start") {
