@@ -4,7 +4,8 @@
 // weighted coverage is smallest, add the best column for a random uncovered row), raising the
 // weight of rows that stay uncovered so that the search leaves local minima. Stops at a step
 // limit, at the lower bound, or when it stalls. Deterministic for a seed (own RNG arithmetic;
-// the deadline is only a safety stop).
+// the deadline is only a safety stop). SearchRuns: several seeded runs as a pool that threads
+// work through; local_search_multi: those runs on a fixed set of threads.
 #include "setcover_internal.h"
 #include "parallel.h"
 
