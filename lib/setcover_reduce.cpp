@@ -23,6 +23,8 @@
 //    bit is its label, given in order of first appearance in that pass: a ball's samples then
 //    fall in few words (bear: 6 of 24 instead of 18), which every later bitset test profits from
 //    (only the tie between equal samples and the kernel's lists use sample indices);
+//    likewise the kept balls' slots are numbered by their smallest label, which brings the
+//    balls of a sample into few words;
 //  - after it, only the balls it kept can be alive: they get slots 0, 1, ..., and the state
 //    becomes bitwise (samples of each slot, slots of each sample, alive sets, list sizes kept
 //    up to date as elements die), so nothing is ever rebuilt;
@@ -240,6 +242,8 @@ private:
             ++n_kept;
         }
         n_slots_ = n_kept;
+        kept.reset();
+        renumber_slots();
         for (uint32_t j = 0; j < m_; ++j)  // samples of no alive ball
             if (label_[j] == kNone) label_[j] = n_labels++;
         sample_of_label_.resize(m_);
@@ -252,7 +256,6 @@ private:
         // freed before the samples' bitsets are made, which bounds the peak memory (30 000
         // samples: each of kept, bits_b_ and bits_s_ is 20-30 MB). The kept balls of sample j
         // (kept[sbeg_[j] ...]) are the slots whose bitset has j: bits_s_ is bits_b_ transposed.
-        kept.reset();
         size_.resize(n_kept);
         for (uint32_t t = 0; t < n_kept; ++t) size_[t] = bsize(ball_of_slot_[t]);
         release_lists();
@@ -277,6 +280,28 @@ private:
         tested_.reset(std::max(ws_, wb_));
         bitwise_ = true;
         return any;
+    }
+
+    // Slots (kept balls) in order of their smallest label, ties in slot order: near balls get
+    // near slots, so that the balls of a sample fall in few words too. Slots only decide where
+    // bits go, never a result.
+    void renumber_slots() {
+        std::vector<uint32_t> first(n_slots_), start(m_ + 1, 0), slot_of(n_slots_);
+        for (uint32_t t = 0; t < n_slots_; ++t) {
+            const uint64_t* row = &bits_b_[size_t(t) * ws_];
+            size_t w = 0;
+            while (row[w] == 0) ++w;  // a kept ball has a sample
+            first[t] = uint32_t(w * 64 + __builtin_ctzll(row[w]));
+            start[first[t] + 1]++;
+        }
+        for (size_t j = 0; j < m_; ++j) start[j + 1] += start[j];
+        for (uint32_t t = 0; t < n_slots_; ++t) slot_of[t] = start[first[t]]++;
+        std::vector<uint64_t> bits(bits_b_.size());
+        for (uint32_t t = 0; t < n_slots_; ++t)
+            std::copy_n(&bits_b_[size_t(t) * ws_], ws_, &bits[size_t(slot_of[t]) * ws_]);
+        bits_b_.swap(bits);
+        for (uint32_t& t : slot_)
+            if (t != UINT32_MAX) t = slot_of[t];
     }
 
     // The lists (and what maintains them) once the state is bitwise: only the bitsets are read.
