@@ -4,10 +4,10 @@
 // candidates, delta 0.02). Each is repeated and its median printed, so that a change of a few
 // milliseconds can be seen through the machine's noise.
 #include "bench_common.h"
+#include "bench_surface.h"
 #include "candidates.h"
 #include "coverage.h"
 #include "setcover.h"
-#include "surface.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -17,18 +17,6 @@
 namespace {
 
 constexpr int kRepeats = 9;
-
-bool load_model(const std::string& path, ca::Surface& s) {
-    caio::MeshData md;
-    std::string err;
-    if (!caio::read_mesh(path, md, err)) return false;
-    ca::Mesh m;
-    for (size_t i = 0; i + 2 < md.positions.size(); i += 3)
-        m.vertices.emplace_back(md.positions[i], md.positions[i + 1], md.positions[i + 2]);
-    for (size_t i = 0; i + 2 < md.triangles.size(); i += 3)
-        m.triangles.push_back({md.triangles[i], md.triangles[i + 1], md.triangles[i + 2]});
-    return ca::prepare_surface(std::move(m), {}, s).ok();
-}
 
 double median_ms(std::vector<double> t) {
     std::sort(t.begin(), t.end());
@@ -49,7 +37,7 @@ int main(int argc, char** argv) {
     for (const std::string& path : models) {
         const std::string name = bench::stem(path);
         ca::Surface s;
-        if (!load_model(path, s)) { std::printf("| %s | read failed |\n", name.c_str()); continue; }
+        if (!bench::load_surface(path, s)) { std::printf("| %s | read failed |\n", name.c_str()); continue; }
         ca::CandidateSet set;
         const ca::Status st = ca::generate_candidates(std::move(s), ca::CandidateOptions{}, ca::Monitor{}, set);
         if (!st.ok()) { std::printf("| %s | candidates failed: %s |\n", name.c_str(), st.message.c_str()); continue; }

@@ -8,9 +8,9 @@
 // there, and divide and conquer forced with a threshold of 8000).
 // usage: bench_select [DATA_ROOT] [TIME_LIMIT_S]   (default ../shared/data, 5 s; skipped when missing)
 #include "bench_common.h"
+#include "bench_surface.h"
 #include "candidates.h"
 #include "selection.h"
-#include "surface.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -75,18 +75,6 @@ void in_child(F fn) {
     if (pid > 0) waitpid(pid, &status, 0);
 }
 
-bool load_model(const std::string& path, ca::Surface& s) {
-    caio::MeshData md;
-    std::string err;
-    if (!caio::read_mesh(path, md, err)) return false;
-    ca::Mesh m;
-    for (size_t i = 0; i + 2 < md.positions.size(); i += 3)
-        m.vertices.emplace_back(md.positions[i], md.positions[i + 1], md.positions[i + 2]);
-    for (size_t i = 0; i + 2 < md.triangles.size(); i += 3)
-        m.triangles.push_back({md.triangles[i], md.triangles[i + 1], md.triangles[i + 2]});
-    return ca::prepare_surface(std::move(m), {}, s).ok();
-}
-
 // `dc_threshold` 0: the library default.
 void model_instance(const std::string& path, ca::Generator gen, uint32_t samples, uint32_t dc_threshold = 0) {
     in_child([&] {
@@ -94,7 +82,7 @@ void model_instance(const std::string& path, ca::Generator gen, uint32_t samples
         const std::string name = bench::stem(path) + (gen == ca::Generator::random ? " (random)" : "") +
                                  (samples != 1500 ? " |S| " + std::to_string(samples) : "") +
                                  (dc_threshold ? " d&c" : "");
-        if (!load_model(path, s)) { std::printf("| %s | read failed |\n", name.c_str()); return; }
+        if (!bench::load_surface(path, s)) { std::printf("| %s | read failed |\n", name.c_str()); return; }
         ca::CandidateOptions co;
         co.generator = gen;
         co.random_candidates = 10000;
