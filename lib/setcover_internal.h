@@ -137,19 +137,12 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
                                    SearchRace* race = nullptr, uint64_t* found_step = nullptr);
 
 // Independent runs of local_search from the same start with seeds seed, seed + 1, ...,
-// seed + starts - 1, side by side on their own threads (one after the other when `threads` is
-// 1); returns the smallest cover, ties to the one found at the earliest swap, then to the
-// lowest seed. A run stops early only when it can no longer be the one returned (see
-// SearchRace), so the result does not depend on the number of threads or their timing. On the
-// paper kernels the seed alone moves results by 1-2 balls.
-std::vector<uint32_t> local_search_multi(const Problem& P, const std::vector<uint32_t>& start, size_t lower_bound,
-                                         uint64_t max_steps, uint64_t seed, int starts, int threads,
-                                         Clock::time_point deadline, const std::atomic<size_t>* known_bound = nullptr);
-
-// The runs of local_search_multi as a pool of work: every thread that calls work() takes the
-// next run not yet started until none is left, so threads can join at any time (the LP's
-// thread, once its LP is solved). best() (after every work() has returned) is the same cover
-// however many threads took part and whenever they joined.
+// seed + starts - 1, as a pool of work: every thread that calls work() takes the next run not
+// yet started until none is left, so threads can join at any time (the LP's thread, once its
+// LP is solved). best() (after every work() has returned) is the smallest cover, ties to the one
+// found at the earliest swap, then to the lowest seed. A run stops early only when it can no
+// longer be the one returned (see SearchRace), so best() is the same however many threads took
+// part and whenever they joined. On the paper kernels the seed alone moves results by 1-2 balls.
 class SearchRuns {
 public:
     SearchRuns(const Problem& P, const std::vector<uint32_t>& start, size_t lower_bound, uint64_t max_steps,

@@ -5,9 +5,8 @@
 // weight of rows that stay uncovered so that the search leaves local minima. Stops at a step
 // limit, at the lower bound, or when it stalls. Deterministic for a seed (own RNG arithmetic;
 // the deadline is only a safety stop). SearchRuns: several seeded runs as a pool that threads
-// work through; local_search_multi: those runs on a fixed set of threads.
+// work through.
 #include "setcover_internal.h"
-#include "parallel.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -245,16 +244,6 @@ std::vector<uint32_t> SearchRuns::best() const {
             (found_[i].size() == found_[best].size() && found_at_[i] < found_at_[best]))
             best = i;
     return found_[best];
-}
-
-std::vector<uint32_t> local_search_multi(const Problem& P, const std::vector<uint32_t>& start, size_t lower_bound,
-                                         uint64_t max_steps, uint64_t seed, int starts, int threads,
-                                         Clock::time_point deadline, const std::atomic<size_t>* known_bound) {
-    SearchRuns runs(P, start, lower_bound, max_steps, seed, starts, deadline, known_bound);
-    // side by side: one thread per run (they only stop each other when one is sure to win); with
-    // one thread, the runs one after the other. Exceptions (bad_alloc) are passed on.
-    run_workers(threads > 1 ? size_t(std::max(1, starts)) : 1, [&](size_t) { runs.work(); });
-    return runs.best();
 }
 
 }  // namespace sc

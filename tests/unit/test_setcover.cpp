@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include "coverage.h"
+#include "parallel.h"
 #include "setcover.h"
 #include "setcover_internal.h"
 
@@ -710,7 +711,17 @@ std::vector<uint32_t> greedy_start(const sc::Problem& P) {
     return g;
 }
 
-// The run local_search_multi must return: the smallest of the single runs, ties to the earliest
+// The runs of SearchRuns on a fixed set of threads: one per run, or all on the calling thread
+// with `threads` 1.
+std::vector<uint32_t> local_search_multi(const sc::Problem& P, const std::vector<uint32_t>& start, size_t lower_bound,
+                                         uint64_t max_steps, uint64_t seed, int starts, int threads,
+                                         sc::Clock::time_point deadline) {
+    sc::SearchRuns runs(P, start, lower_bound, max_steps, seed, starts, deadline, nullptr);
+    run_workers(threads > 1 ? size_t(starts) : 1, [&](size_t) { runs.work(); });
+    return runs.best();
+}
+
+// The run SearchRuns must return: the smallest of the single runs, ties to the earliest
 // swap at which it was found, then to the lowest seed.
 std::vector<uint32_t> best_single_run(const sc::Problem& P, const std::vector<uint32_t>& g, size_t lower_bound,
                                       uint64_t steps, uint64_t seed, int starts, std::set<size_t>* sizes = nullptr,
@@ -746,7 +757,7 @@ TEST_CASE("set cover: independent local-search runs give the best run, whatever 
         if (sizes.size() > 1) ++differ;
         for (int threads : {1, 2, 3}) {
             INFO("instance " << t << " threads " << threads);
-            CHECK(sc::local_search_multi(P, g, 0, 300, 40, 4, threads, far) == expect);
+            CHECK(local_search_multi(P, g, 0, 300, 40, 4, threads, far) == expect);
         }
     }
     CHECK(differ > 0);  // the seeds matter on some of these
@@ -769,7 +780,7 @@ TEST_CASE("set cover: runs that stop each other at a known bound still give the 
         raced += expect.size() == bound && found_steps.size() > 1;
         for (int threads : {1, 2, 3, 3}) {
             INFO("instance " << t << " threads " << threads);
-            CHECK(sc::local_search_multi(P, g, bound, 20000, 40, 4, threads, far) == expect);
+            CHECK(local_search_multi(P, g, bound, 20000, 40, 4, threads, far) == expect);
         }
     }
     CHECK(raced >= 3);  // runs that reach the bound at different swaps
