@@ -8,8 +8,8 @@
 // removal -> verification.
 // Exact kernel solve, per connected component of the kernel (components share no rows and no
 // columns, so optima and bounds add): greedy cover -> Lagrangian subgradient (bound, and a
-// reduced-cost greedy that improves the incumbent) -> if that leaves a gap, the LP relaxation's
-// duals (Clp) as multipliers, with small subgradient steps around them for the greedy ->
+// reduced-cost greedy that improves the incumbent; the volume algorithm on components too large
+// for CBC) -> if that leaves a gap, the LP relaxation's duals (Clp) as multipliers, with small subgradient steps around them for the greedy ->
 // done if ceil(bound) meets the incumbent; otherwise row-weighting local search
 // (setcover_local.cpp, a quarter of the remaining budget) for a better incumbent, then
 // reduced-cost fixing (drop every column that no cover smaller than the incumbent can
@@ -163,16 +163,21 @@ constexpr int kLocalSearchStarts = 4;
 // Components of at most kSmallSearchRows rows get kSmallSearchStarts runs: on such kernels two
 // runs gave the same cover sizes and proofs as four (bench_select at a 1 s limit, all 57 rows;
 // other covers of the same size on plane, spider and dog_sub_fox) for half the search time
-// (Ant-12: 327 rows, its selection ~10 ms faster).
+// (Ant-12: 327 rows, its selection ~10 ms faster). Components too large for CBC (below) get
+// kSmallSearchStarts runs too: a run takes 2-8 s there, and on the |S| 30 000 kernels of bunny
+// and fertility the first two of four runs already gave the best covers (92 and 85 balls).
 constexpr uint32_t kSmallSearchRows = 400;
 constexpr int kSmallSearchStarts = 2;
 
-// Largest component CBC solves as a whole (its root LP cannot be interrupted).
+// Largest component CBC solves as a whole (its root LP cannot be interrupted). Larger ones also
+// get the volume ascent, the LP by row and column generation, and kSmallSearchStarts search runs.
 constexpr uint32_t kWholeCbcMaxRows = 4000;
 // Subgradient steps around the LP duals (for the reduced-cost greedy).
 constexpr int kDualSteps = 10;
 // Subgradient steps before the LP on components up to kWholeCbcMaxRows rows.
 constexpr int kSubgradientWarmup = 150;
+// Volume steps before the LP on larger components.
+constexpr int kVolumeSteps = 1000;
 
 ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bool has_deadline, int threads,
                                 bool row_gen, Effort effort, int search_threads, const Monitor& monitor) {
@@ -191,10 +196,13 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
     // Before the LP only a warm-up (its covers and reduced costs seed the core LP and the local
     // search: 1000 steps cost 0.1-0.3 s more and changed no result on the paper models once the
     // local search runs from several seeds; 50 steps gave a poorer core, a slower LP and cup one
-    // ball more); components too large for a sure LP get the long ascent, whose bound may have
-    // to stand alone.
-    const int subgradient_steps = P.R <= kWholeCbcMaxRows ? kSubgradientWarmup : 1000;
-    Lagrange L = lagrangian(P, out.sel, subgradient_steps, lag_deadline);
+    // ball more). Components too large for CBC get the volume ascent instead: its bound may have
+    // to stand alone, and its sparse multipliers start the LP by row generation. (On the
+    // 1500-sample kernels the volume start gave other search starts, bunny one ball more, and
+    // no faster LP beside the search.)
+    const bool large = P.R > kWholeCbcMaxRows;
+    Lagrange L = large ? volume_ascent(P, out.sel, kVolumeSteps, lag_deadline)
+                       : lagrangian(P, out.sel, kSubgradientWarmup, lag_deadline);
     if (L.best.size() < out.sel.size()) out.sel = L.best;
     out.lb = std::max(out.lb, std::ceil(L.bound - 1e-6));
     if (done() || monitor.cancelled()) return out;
@@ -212,7 +220,7 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
     Lagrange D;
     bool have_duals = false;
     auto lp_phase = [&]() {
-        const std::vector<double> duals = lp_duals_core(P, L.cost, lp_limit);
+        const std::vector<double> duals = large ? lp_duals_rows(P, L.u, L.cost, lp_limit) : lp_duals_core(P, L.cost, lp_limit);
         if (duals.empty()) return;
         // bound and costs at the duals, then a few small steps around them for the reduced-cost
         // greedy (10 steps instead of 200 gave the same covers on the 24 paper models and the same
@@ -222,7 +230,7 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
         known_bound.store(std::max(known_bound.load(), size_t(std::max(0.0, std::ceil(D.bound - 1e-6)))));
     };
     const std::vector<uint32_t> start = out.sel;
-    const int starts = P.R <= kSmallSearchRows ? kSmallSearchStarts : kLocalSearchStarts;
+    const int starts = (P.R <= kSmallSearchRows || large) ? kSmallSearchStarts : kLocalSearchStarts;
     SearchRuns runs(P, start, size_t(out.lb), kLocalSearchSteps, kLocalSearchSeed, starts, ls_deadline, &known_bound);
     const int search_workers = std::min(resolve_threads(search_threads), starts);
     if (search_workers > 1) {

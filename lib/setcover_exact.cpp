@@ -1,5 +1,6 @@
 // setcover_exact.cpp: the exact machinery for one component of the kernel: the Lagrangian
-// lower bound with its reduced-cost heuristic, the LP relaxation's duals (Clp), CBC (the C interface, silenced, with a cutoff and
+// lower bound (subgradient and volume ascent) with its reduced-cost heuristic, the LP
+// relaxation's duals (Clp; whole, by column generation, or by row and column generation), CBC (the C interface, silenced, with a cutoff and
 // a time limit, behind the library's only process-wide mutex), and row generation.
 #include "setcover_internal.h"
 
@@ -146,6 +147,97 @@ Lagrange lagrangian(const Problem& P, std::vector<uint32_t> incumbent, int max_i
 }
 
 
+// Volume algorithm (Barahona & Anbil 2000): like the subgradient method, but the direction is
+// the subgradient of a running average of the Lagrangian solutions (xbar, an approximate LP
+// solution; v = 1 - A xbar), the step factor grows after improving steps whose new subgradient
+// agrees with the direction and shrinks after runs without improvement, and the averaging
+// weight's upper limit halves whenever 100 steps raise the bound by less than 1 %.
+Lagrange volume_ascent(const Problem& P, std::vector<uint32_t> incumbent, int max_iter, Clock::time_point deadline) {
+    Lagrange L;
+    L.best = std::move(incumbent);
+    std::vector<double> ubar(P.R), u(P.R), cost(P.C), xbar(P.C), v(P.R), w(P.R), g(P.R);
+    std::vector<uint8_t> x(P.C);
+    for (uint32_t r = 0; r < P.R; ++r) {
+        double val = 1.0;
+        for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q) {
+            const uint32_t c = P.rcol[q];
+            val = std::min(val, 1.0 / double(P.cptr[c + 1] - P.cptr[c]));
+        }
+        ubar[r] = val;
+    }
+    // L(y), the reduced costs, x = x(y) (c_j(y) < 0) and w = 1 - A x
+    auto evaluate = [&](const std::vector<double>& y) {
+        double z = 0;
+        for (uint32_t r = 0; r < P.R; ++r) z += y[r];
+        std::fill(w.begin(), w.end(), 1.0);
+        for (uint32_t c = 0; c < P.C; ++c) {
+            double cc = 1.0;
+            for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) cc -= y[P.crow[k]];
+            cost[c] = cc;
+            x[c] = cc < 0;
+            if (cc < 0) {
+                z += cc;
+                for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) w[P.crow[k]] -= 1.0;
+            }
+        }
+        return z;
+    };
+    double zbar = evaluate(ubar);
+    for (uint32_t c = 0; c < P.C; ++c) xbar[c] = x[c];
+    v = w;
+    L.bound = zbar;
+    L.u = ubar;
+    L.cost = cost;
+    double lambda = 0.1, alpha_max = 0.1, z_checked = zbar;
+    int red = 0;  // steps since the last improvement
+    for (int it = 0; it < max_iter; ++it) {
+        if (std::ceil(L.bound - 1e-6) >= double(L.best.size())) break;
+        if ((it & 15) == 15 && Clock::now() > deadline) break;
+        double norm = 0;
+        for (uint32_t r = 0; r < P.R; ++r) {
+            g[r] = (v[r] < 0 && ubar[r] <= 0) ? 0.0 : v[r];  // projected: u stays >= 0
+            norm += g[r] * g[r];
+        }
+        if (norm < 1e-12) break;  // xbar covers every row exactly where u > 0
+        const double step = lambda * (double(L.best.size()) - zbar) / norm;
+        for (uint32_t r = 0; r < P.R; ++r) u[r] = std::max(0.0, ubar[r] + step * g[r]);
+        const double z = evaluate(u);
+        // averaging weight: the one minimising |alpha w + (1 - alpha) v|, within [alpha_max / 10, alpha_max]
+        double a = 0, b = 0;
+        for (uint32_t r = 0; r < P.R; ++r) {
+            const double d = w[r] - v[r];
+            a += v[r] * d;
+            b += d * d;
+        }
+        const double alpha = std::min(alpha_max, std::max(alpha_max / 10, b > 0 ? -a / b : alpha_max));
+        for (uint32_t c = 0; c < P.C; ++c) xbar[c] = alpha * x[c] + (1 - alpha) * xbar[c];
+        for (uint32_t r = 0; r < P.R; ++r) v[r] = alpha * w[r] + (1 - alpha) * v[r];
+        if (z > zbar) {
+            double agree = 0;
+            for (uint32_t r = 0; r < P.R; ++r) agree += g[r] * w[r];
+            if (agree >= 0) lambda = std::min(2.0, lambda * 1.1);
+            ubar = u;
+            zbar = z;
+            red = 0;
+            L.bound = z;
+            L.u = u;
+            L.cost = cost;
+        } else if (++red >= 20) {
+            lambda *= 0.67;
+            red = 0;
+        }
+        if ((it + 1) % 100 == 0) {
+            if (zbar - z_checked < 0.01 * std::fabs(zbar) && alpha_max > 1e-5) alpha_max /= 2;
+            z_checked = zbar;
+        }
+        if (it % 8 == 0) {
+            std::vector<uint32_t> h = lagrange_greedy(P, u);
+            if (h.size() < L.best.size()) L.best.swap(h);
+        }
+    }
+    return L;
+}
+
 namespace {
 // CBC parses its options through process-wide globals and is not thread-safe: every CBC (and
 // Clp) call sequence in the process goes through this one mutex. It is the library's only
@@ -247,6 +339,130 @@ std::vector<double> lp_duals_core(const Problem& P, const std::vector<double>& c
         if (added == 0) return u;
         m->addColumns(added, lb.data(), ub.data(), obj.data(), colstart.data(), rowidx.data(), val.data());
         m->primal(0);  // the basis stays primal feasible: continue from it
+    }
+}
+
+std::vector<double> lp_duals_rows(const Problem& P, const std::vector<double>& u0, const std::vector<double>& cost,
+                                  double time_limit_s) {
+    if (u0.size() != P.R || cost.size() != P.C) return lp_duals(P, time_limit_s);
+    constexpr double kStartDual = 1e-6;  // rows with a larger multiplier start in the LP
+    constexpr double kCoreCost = 0.05;   // columns with a smaller reduced cost start in it,
+    constexpr size_t kCorePerRow = 2;    // and the cheapest few of every starting row
+    const Clock::time_point t0 = Clock::now();
+    const bool limited = time_limit_s > 0 && std::isfinite(time_limit_s);
+    std::vector<int> lp_row(P.R, -1), lp_col(P.C, -1);  // P index -> LP index, -1 = not in the LP
+    std::vector<uint32_t> rows, cols;                    // LP index -> P index
+    for (uint32_t r = 0; r < P.R; ++r)
+        if (u0[r] > kStartDual) {
+            lp_row[r] = int(rows.size());
+            rows.push_back(r);
+        }
+    if (rows.empty())
+        for (uint32_t r = 0; r < P.R; ++r) {
+            lp_row[r] = int(r);
+            rows.push_back(r);
+        }
+    std::vector<uint8_t> in_core(P.C, 0);
+    for (uint32_t c = 0; c < P.C; ++c) in_core[c] = cost[c] < kCoreCost;
+    std::vector<uint32_t> cheapest;
+    for (uint32_t r : rows) {
+        cheapest.assign(P.rcol.begin() + P.rptr[r], P.rcol.begin() + P.rptr[r + 1]);
+        const size_t k = std::min(kCorePerRow, cheapest.size());
+        std::partial_sort(cheapest.begin(), cheapest.begin() + k, cheapest.end(),
+                          [&](uint32_t a, uint32_t b) { return cost[a] != cost[b] ? cost[a] < cost[b] : a < b; });
+        for (size_t i = 0; i < k; ++i) in_core[cheapest[i]] = 1;
+    }
+    // entries of the columns or rows to add, restricted to the rows or columns in the LP
+    std::vector<CoinBigIndex> start(1, 0);
+    std::vector<int> index;
+    auto add_column = [&](uint32_t c) {
+        lp_col[c] = int(cols.size());
+        cols.push_back(c);
+        for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k)
+            if (lp_row[P.crow[k]] >= 0) index.push_back(lp_row[P.crow[k]]);
+        start.push_back(CoinBigIndex(index.size()));
+    };
+    auto add_row = [&](uint32_t r) {
+        lp_row[r] = int(rows.size());
+        rows.push_back(r);
+        for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q)
+            if (lp_col[P.rcol[q]] >= 0) index.push_back(lp_col[P.rcol[q]]);
+        start.push_back(CoinBigIndex(index.size()));
+    };
+    for (uint32_t c = 0; c < P.C; ++c)
+        if (in_core[c]) add_column(c);
+    const std::vector<double> ones(std::max<size_t>(P.crow.size(), std::max(P.R, P.C)), 1.0), zeros(P.C, 0.0),
+        no_upper(P.R, COIN_DBL_MAX);
+
+    std::lock_guard<std::mutex> lock(coin_mutex());
+    const ClpModel model = load_cover_lp(uint32_t(rows.size()), start, index, time_limit_s);
+    ClpSimplex* m = model.get();
+    m->primal(0);
+    std::vector<double> u(P.R), x(P.C);
+    // Every round adds a column or a row, so it ends; on the |S| 30 000 kernels it took 5-10 rounds.
+    for (;;) {
+        if (m->status() != 0) return {};  // time limit or numerical trouble
+        const double* y = m->getRowPrice();
+        const double* xs = m->getColSolution();
+        if (!y || !xs) return {};
+        std::fill(u.begin(), u.end(), 0.0);
+        for (size_t i = 0; i < rows.size(); ++i) u[rows[i]] = std::isfinite(y[i]) ? std::max(0.0, y[i]) : 0.0;
+        double left = 0;
+        if (limited) {
+            left = time_limit_s - seconds_since(t0);
+            if (left <= 0) return {};
+        }
+        // columns of negative reduced cost join; the basis stays primal feasible
+        start.assign(1, 0);
+        index.clear();
+        const size_t cols_before = cols.size();
+        for (uint32_t c = 0; c < P.C; ++c) {
+            if (lp_col[c] >= 0) continue;
+            double rc = 1.0;
+            for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) rc -= u[P.crow[k]];
+            if (rc < -1e-9) add_column(c);
+        }
+        if (cols.size() > cols_before) {
+            const int added = int(cols.size() - cols_before);
+            m->addColumns(added, zeros.data(), ones.data(), ones.data(), start.data(), index.data(), ones.data());
+            if (limited) m->setMaximumWallSeconds(left);
+            m->primal(0);
+            continue;
+        }
+        // rows the LP solution leaves uncovered join; the basis stays dual feasible. A row none
+        // of whose columns is in the LP first brings its cheapest one (priced >= 0: the basis
+        // stays optimal), else the LP would be infeasible.
+        std::fill(x.begin(), x.end(), 0.0);
+        for (size_t i = 0; i < cols.size(); ++i) x[cols[i]] = xs[i];
+        std::vector<uint32_t> uncovered;
+        for (uint32_t r = 0; r < P.R; ++r) {
+            if (lp_row[r] >= 0) continue;
+            double covered = 0;
+            bool any = false;
+            for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q) {
+                covered += x[P.rcol[q]];
+                any = any || lp_col[P.rcol[q]] >= 0;
+            }
+            if (covered >= 1.0 - 1e-7) continue;
+            uncovered.push_back(r);
+            if (!any) {
+                uint32_t best = P.rcol[P.rptr[r]];
+                for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q)
+                    if (cost[P.rcol[q]] < cost[best]) best = P.rcol[q];
+                add_column(best);
+            }
+        }
+        if (uncovered.empty()) return u;  // feasible for P with dual-feasible duals: optimal
+        if (cols.size() > cols_before) {
+            const int added = int(cols.size() - cols_before);
+            m->addColumns(added, zeros.data(), ones.data(), ones.data(), start.data(), index.data(), ones.data());
+            start.assign(1, 0);
+            index.clear();
+        }
+        for (uint32_t r : uncovered) add_row(r);
+        m->addRows(int(uncovered.size()), ones.data(), no_upper.data(), start.data(), index.data(), ones.data());
+        if (limited) m->setMaximumWallSeconds(left);
+        m->dual(0);
     }
 }
 

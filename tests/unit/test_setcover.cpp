@@ -611,6 +611,87 @@ TEST_CASE("set cover: the core LP (column generation) has the whole LP's optimum
     }
 }
 
+namespace {
+// Larger random problems than small_instances (a few hundred rows), fixed seeds.
+std::vector<sc::Problem> medium_problems(uint64_t seed, int count) {
+    Rng rng(seed);
+    std::vector<sc::Problem> out;
+    for (int t = 0; t < count; ++t) {
+        const size_t m = 150 + rng.below(250), n = 100 + rng.below(200);
+        out.push_back(to_problem(random_cover(rng, m, n, 0.01 + 0.03 * rng.uniform())));
+    }
+    return out;
+}
+std::vector<uint32_t> all_columns(const sc::Problem& P) {
+    std::vector<uint32_t> all(P.C);
+    for (uint32_t i = 0; i < P.C; ++i) all[i] = i;
+    return all;
+}
+}  // namespace
+
+TEST_CASE("set cover: the LP by row and column generation has the whole LP's optimum") {
+    const auto far = sc::Clock::now() + std::chrono::hours(1);
+    std::vector<sc::Problem> problems = medium_problems(2024, 24);
+    for (const Instance& in : small_instances(4321, 60)) problems.push_back(to_problem(in.cov));
+    Rng rng(12);
+    for (size_t t = 0; t < problems.size(); ++t) {
+        const sc::Problem& P = problems[t];
+        const std::vector<uint32_t> all = all_columns(P);
+        const std::vector<double> y = sc::lp_duals(P, 0);
+        REQUIRE(y.size() == P.R);
+        const double lp = sc::lagrangian(P, all, 1, far, &y).bound;
+        // starts: the volume ascent's multipliers (what the solver passes); none (every row
+        // starts); a random tenth of the rows with random costs (many rows and columns to add)
+        const sc::Lagrange V = sc::volume_ascent(P, all, 200, far);
+        std::vector<double> none(P.R, 0.0), sparse(P.R, 0.0), random_cost(P.C);
+        for (double& v : sparse) v = rng.uniform() < 0.1 ? rng.uniform() : 0.0;
+        for (double& v : random_cost) v = rng.uniform();
+        const std::pair<const std::vector<double>*, const std::vector<double>*> starts[] = {
+            {&V.u, &V.cost}, {&none, &random_cost}, {&sparse, &random_cost}};
+        for (const auto& st : starts) {
+            const std::vector<double> yr = sc::lp_duals_rows(P, *st.first, *st.second, 0);
+            INFO("problem " << t << " (" << P.R << " x " << P.C << ")");
+            REQUIRE(yr.size() == P.R);
+            CHECK(sc::lagrangian(P, all, 1, far, &yr).bound == doctest::Approx(lp).epsilon(1e-7));
+        }
+    }
+}
+
+TEST_CASE("set cover: the volume ascent gives a valid bound near the LP optimum") {
+    const auto far = sc::Clock::now() + std::chrono::hours(1);
+    SUBCASE("small instances: below the brute-force minimum and the LP, at its own multipliers") {
+        for (const Instance& in : small_instances(515, 120)) {
+            const sc::Problem P = to_problem(in.cov);
+            const std::vector<uint32_t> all = all_columns(P);
+            const std::vector<double> y = sc::lp_duals(P, 0);
+            REQUIRE(y.size() == P.R);
+            const double lp = sc::lagrangian(P, all, 1, far, &y).bound;
+            const sc::Lagrange V = sc::volume_ascent(P, all, 1000, far);
+            const int best = brute_min(in.cov);
+            CHECK(V.bound <= best + 1e-9);
+            CHECK(V.bound <= lp + 1e-7);
+            CHECK(sc::lagrangian(P, all, 1, far, &V.u).bound == doctest::Approx(V.bound).epsilon(1e-9));
+            CHECK(sc::covers_problem(P, V.best));
+            CHECK(int(V.best.size()) >= best);
+        }
+    }
+    SUBCASE("medium problems: within 3 % of the LP") {
+        const auto problems = medium_problems(77, 16);
+        for (size_t t = 0; t < problems.size(); ++t) {
+            const sc::Problem& P = problems[t];
+            const std::vector<uint32_t> start = sc::greedy_cover(P);
+            const std::vector<double> y = sc::lp_duals(P, 0);
+            REQUIRE(y.size() == P.R);
+            const double lp = sc::lagrangian(P, all_columns(P), 1, far, &y).bound;
+            const sc::Lagrange V = sc::volume_ascent(P, start, 1000, far);
+            INFO("problem " << t << ": volume " << V.bound << ", LP " << lp);
+            CHECK(V.bound <= lp + 1e-7);
+            CHECK(V.bound >= 0.97 * lp);
+            CHECK(sc::covers_problem(P, V.best));
+        }
+    }
+}
+
 TEST_CASE("set cover: the bound at the LP duals equals the LP optimum and bounds the brute-force minimum") {
     const auto far = sc::Clock::now() + std::chrono::hours(1);
     SUBCASE("odd cycle: LP 5/2, integer optimum 3") {
