@@ -9,7 +9,8 @@
 // Exact kernel solve, per connected component of the kernel (components share no rows and no
 // columns, so optima and bounds add): greedy cover -> Lagrangian subgradient (bound, and a
 // reduced-cost greedy that improves the incumbent; the volume algorithm on components too large
-// for CBC) -> if that leaves a gap, the LP relaxation's duals (Clp) as multipliers, with small subgradient steps around them for the greedy ->
+// for CBC) -> if that leaves a gap, the LP relaxation's duals (Clp) as multipliers, with small
+// subgradient steps around them for the greedy ->
 // done if ceil(bound) meets the incumbent; otherwise row-weighting local search
 // (setcover_local.cpp, a quarter of the remaining budget) for a better incumbent, then
 // reduced-cost fixing (drop every column that no cover smaller than the incumbent can
@@ -220,7 +221,8 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
     Lagrange D;
     bool have_duals = false;
     auto lp_phase = [&]() {
-        const std::vector<double> duals = large ? lp_duals_rows(P, L.u, L.cost, lp_limit) : lp_duals_core(P, L.cost, lp_limit);
+        const std::vector<double> duals =
+            large ? lp_duals_rows(P, L.u, L.cost, lp_limit) : lp_duals_core(P, L.cost, lp_limit);
         if (duals.empty()) return;
         // bound and costs at the duals, then a few small steps around them for the reduced-cost
         // greedy (10 steps instead of 200 gave the same covers on the 24 paper models and the same

@@ -1,7 +1,8 @@
 // setcover_exact.cpp: the exact machinery for one component of the kernel: the Lagrangian
 // lower bound (subgradient and volume ascent) with its reduced-cost heuristic, the LP
-// relaxation's duals (Clp; whole, by column generation, or by row and column generation), CBC (the C interface, silenced, with a cutoff and
-// a time limit, behind the library's only process-wide mutex), and row generation.
+// relaxation's duals (Clp; whole, by column generation, or by row and column generation), CBC
+// (the C interface, silenced, with a cutoff and a time limit, behind the library's only
+// process-wide mutex), and row generation.
 #include "setcover_internal.h"
 
 #include <algorithm>
