@@ -269,6 +269,25 @@ ClpModel load_cover_lp(uint32_t rows, const std::vector<CoinBigIndex>& colstart,
 }
 }  // namespace
 
+namespace {
+// The columns of reduced cost below max_cost, and the per_row cheapest columns of each of `rows`
+// (ties to the lower index), as a mask over P's columns.
+std::vector<uint8_t> core_columns(const Problem& P, const std::vector<double>& cost, double max_cost, size_t per_row,
+                                  const std::vector<uint32_t>& rows) {
+    std::vector<uint8_t> in_core(P.C, 0);
+    for (uint32_t c = 0; c < P.C; ++c) in_core[c] = cost[c] < max_cost;
+    std::vector<uint32_t> cheapest;
+    for (uint32_t r : rows) {
+        cheapest.assign(P.rcol.begin() + P.rptr[r], P.rcol.begin() + P.rptr[r + 1]);
+        const size_t k = std::min(per_row, cheapest.size());
+        std::partial_sort(cheapest.begin(), cheapest.begin() + k, cheapest.end(),
+                          [&](uint32_t a, uint32_t b) { return cost[a] != cost[b] ? cost[a] < cost[b] : a < b; });
+        for (size_t i = 0; i < k; ++i) in_core[cheapest[i]] = 1;
+    }
+    return in_core;
+}
+}  // namespace
+
 std::vector<double> lp_duals(const Problem& P, double time_limit_s) {
     std::vector<CoinBigIndex> colstart(P.C + 1);
     std::vector<int> rowidx(P.crow.begin(), P.crow.end());
@@ -290,16 +309,9 @@ std::vector<double> lp_duals_core(const Problem& P, const std::vector<double>& c
     // The core: reduced cost below 0.1, and the 5 cheapest columns of every row.
     constexpr double kCoreCost = 0.1;
     constexpr size_t kCorePerRow = 5;
-    std::vector<uint8_t> in_core(P.C, 0);
-    for (uint32_t c = 0; c < P.C; ++c) in_core[c] = cost[c] < kCoreCost;
-    std::vector<uint32_t> cols;
-    for (uint32_t r = 0; r < P.R; ++r) {
-        cols.assign(P.rcol.begin() + P.rptr[r], P.rcol.begin() + P.rptr[r + 1]);
-        const size_t k = std::min(kCorePerRow, cols.size());
-        std::partial_sort(cols.begin(), cols.begin() + k, cols.end(),
-                          [&](uint32_t a, uint32_t b) { return cost[a] != cost[b] ? cost[a] < cost[b] : a < b; });
-        for (size_t i = 0; i < k; ++i) in_core[cols[i]] = 1;
-    }
+    std::vector<uint32_t> all_rows(P.R);
+    std::iota(all_rows.begin(), all_rows.end(), 0u);
+    std::vector<uint8_t> in_core = core_columns(P, cost, kCoreCost, kCorePerRow, all_rows);
     // Column-major arrays of the columns to add (all of the core first).
     std::vector<CoinBigIndex> colstart(1, 0);
     std::vector<int> rowidx;
@@ -363,16 +375,7 @@ std::vector<double> lp_duals_rows(const Problem& P, const std::vector<double>& u
             lp_row[r] = int(r);
             rows.push_back(r);
         }
-    std::vector<uint8_t> in_core(P.C, 0);
-    for (uint32_t c = 0; c < P.C; ++c) in_core[c] = cost[c] < kCoreCost;
-    std::vector<uint32_t> cheapest;
-    for (uint32_t r : rows) {
-        cheapest.assign(P.rcol.begin() + P.rptr[r], P.rcol.begin() + P.rptr[r + 1]);
-        const size_t k = std::min(kCorePerRow, cheapest.size());
-        std::partial_sort(cheapest.begin(), cheapest.begin() + k, cheapest.end(),
-                          [&](uint32_t a, uint32_t b) { return cost[a] != cost[b] ? cost[a] < cost[b] : a < b; });
-        for (size_t i = 0; i < k; ++i) in_core[cheapest[i]] = 1;
-    }
+    const std::vector<uint8_t> in_core = core_columns(P, cost, kCoreCost, kCorePerRow, rows);
     // entries of the columns or rows to add, restricted to the rows or columns in the LP
     std::vector<CoinBigIndex> start(1, 0);
     std::vector<int> index;
