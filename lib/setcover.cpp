@@ -31,6 +31,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -143,6 +144,31 @@ Status prepare(const Coverage& cov, const CoverOptions& opt, bool skip_uncoverab
     return Status::success();
 }
 
+// The columns a cover of at most `size` columns can contain: a column j is in none when
+// L(u) + max(0, c_j(u)) > size (`bound` = L(u), `cost` = the reduced costs at u).
+Problem drop_beyond(const Problem& P, double bound, const std::vector<double>& cost, double size) {
+    std::vector<uint8_t> keep(P.C, 0);
+    for (uint32_t c = 0; c < P.C; ++c) keep[c] = bound + std::max(0.0, cost[c]) <= size + 1e-6;
+    return restrict_columns(P, keep);
+}
+
+// Whether P has no cover of `size` columns, shown after dropping the columns no such cover
+// contains (at the multipliers of D) and reducing what is left: a row left without a column, more
+// forced columns than `size`, or branching on the LP (no_cover_within).
+constexpr int kBranchColumns = 8;
+bool rules_out(const Problem& P, const Lagrange& D, size_t size, const Monitor& monitor,
+               const std::function<bool()>& stop) {
+    const Problem Q = drop_beyond(P, D.bound, D.cost, double(size));
+    for (uint32_t r = 0; r < Q.R; ++r)
+        if (Q.rptr[r] == Q.rptr[r + 1]) return true;
+    std::vector<uint32_t> forced;
+    Problem K;
+    if (!reduce_problem(Q, monitor, forced, K).ok()) return false;
+    if (forced.size() > size) return true;
+    if (K.R == 0) return false;  // the forced columns are such a cover
+    return no_cover_within(K, size - forced.size(), kBranchColumns, stop);
+}
+
 // Exact solve of one connected component: greedy -> Lagrangian bound and heuristic ->
 // reduced-cost fixing (drop every column that no cover smaller than the incumbent can use) ->
 // reduction of what is left -> CBC on that, with the incumbent as cutoff.
@@ -220,6 +246,10 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
     std::atomic<size_t> known_bound{size_t(out.lb)};
     Lagrange D;
     bool have_duals = false;
+    const std::vector<uint32_t> start = out.sel;
+    const int starts = (P.R <= kSmallSearchRows || large) ? kSmallSearchStarts : kLocalSearchStarts;
+    SearchRuns runs(P, start, size_t(out.lb), kLocalSearchSteps, kLocalSearchSeed, starts, ls_deadline, &known_bound);
+    size_t branched_bound = 0;  // > 0: branching showed that every cover has at least this many columns
     auto lp_phase = [&]() {
         const std::vector<double> duals =
             large ? lp_duals_rows(P, L.u, L.cost, lp_limit) : lp_duals_core(P, L.cost, lp_limit);
@@ -229,11 +259,18 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
         // sizes and proofs on bench_select's 1500-sample rows; bear's 200 steps took 37 ms)
         D = lagrangian(P, L.best, kDualSteps, deadline, &duals, 0.05);
         have_duals = true;
-        known_bound.store(std::max(known_bound.load(), size_t(std::max(0.0, std::ceil(D.bound - 1e-6)))));
+        const size_t lp_bound = size_t(std::max(0.0, std::ceil(D.bound - 1e-6)));
+        known_bound.store(std::max(known_bound.load(), lp_bound));
+        // Fast effort, small component: try to show that no cover has lp_bound columns (one more
+        // ball of bound, often the proof the search's cover needs, without CBC). It gives up once a
+        // search run finds a cover that small, which would make it fail anyway, so the outcome
+        // does not depend on timing.
+        if (effort == Effort::fast && P.R <= kFastCbcMaxRows && lp_bound < start.size() &&
+            rules_out(P, D, lp_bound, monitor, [&]() { return runs.reached_bound(); })) {
+            branched_bound = lp_bound + 1;
+            known_bound.store(std::max(known_bound.load(), branched_bound));
+        }
     };
-    const std::vector<uint32_t> start = out.sel;
-    const int starts = (P.R <= kSmallSearchRows || large) ? kSmallSearchStarts : kLocalSearchStarts;
-    SearchRuns runs(P, start, size_t(out.lb), kLocalSearchSteps, kLocalSearchSeed, starts, ls_deadline, &known_bound);
     const int search_workers = std::min(resolve_threads(search_threads), starts);
     if (search_workers > 1) {
         // One search run per thread, and the LP's thread takes the runs still waiting once its
@@ -261,15 +298,12 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
         }
     }
     out.sel = searched.size() <= L.best.size() ? searched : L.best;
-    out.lb = std::max(out.lb, std::ceil(L.bound - 1e-6));
+    out.lb = std::max({out.lb, std::ceil(L.bound - 1e-6), double(branched_bound)});
     if (done() || monitor.cancelled()) return out;
 
-    // Covers smaller than the incumbent have value <= target; a column j with
-    // L(u) + c_j(u) > target is in none of them.
+    // Covers smaller than the incumbent have at most target columns.
     const double target = double(out.sel.size()) - 1.0;
-    std::vector<uint8_t> keep(P.C, 0);
-    for (uint32_t c = 0; c < P.C; ++c) keep[c] = L.bound + std::max(0.0, L.cost[c]) <= target + 1e-6;
-    const Problem Q = restrict_columns(P, keep);
+    const Problem Q = drop_beyond(P, L.bound, L.cost, target);
     for (uint32_t r = 0; r < Q.R; ++r)
         if (Q.rptr[r] == Q.rptr[r + 1]) { out.lb = double(out.sel.size()); out.proven = true; return out; }
     std::vector<uint32_t> qforced;

@@ -470,6 +470,67 @@ std::vector<double> lp_duals_rows(const Problem& P, const std::vector<double>& u
     }
 }
 
+bool no_cover_within(const Problem& K, size_t size, int max_branches, const std::function<bool()>& stop) {
+    if (K.R == 0) return false;  // the empty cover
+    std::vector<CoinBigIndex> colstart(K.C + 1);
+    std::vector<int> rowidx(K.crow.begin(), K.crow.end());
+    for (uint32_t c = 0; c <= K.C; ++c) colstart[c] = CoinBigIndex(K.cptr[c]);
+    const double limit = double(size) + 1e-6;  // an LP value above it rules out covers of `size`
+    // L(u) from Clp's row prices (clamped to >= 0), over the rows not covered by column `fixed_in`
+    // (plus 1 for it) and the columns other than `fixed_in` / `fixed_out` (-1: none): a valid
+    // bound on the covers of that branch whatever the LP's tolerances.
+    std::vector<double> u(K.R);
+    std::vector<uint8_t> in_fixed(K.R, 0);
+    auto bound = [&](const double* y, int fixed_in, int fixed_out) {
+        std::fill(in_fixed.begin(), in_fixed.end(), 0);
+        if (fixed_in >= 0)
+            for (uint32_t k = K.cptr[fixed_in]; k < K.cptr[fixed_in + 1]; ++k) in_fixed[K.crow[k]] = 1;
+        double z = fixed_in >= 0 ? 1.0 : 0.0;
+        for (uint32_t r = 0; r < K.R; ++r) {
+            u[r] = in_fixed[r] || !std::isfinite(y[r]) ? 0.0 : std::max(0.0, y[r]);
+            z += u[r];
+        }
+        for (uint32_t c = 0; c < K.C; ++c) {
+            if (int(c) == fixed_in || int(c) == fixed_out) continue;
+            double cc = 1.0;
+            for (uint32_t k = K.cptr[c]; k < K.cptr[c + 1]; ++k) cc -= u[K.crow[k]];
+            z += std::min(0.0, cc);
+        }
+        return z;
+    };
+    std::lock_guard<std::mutex> lock(coin_mutex());
+    const ClpModel root = load_cover_lp(K.R, colstart, rowidx, 0.0);
+    root->dual(0);
+    if (root->status() != 0 || !root->getRowPrice() || !root->getColSolution()) return false;
+    if (bound(root->getRowPrice(), -1, -1) > limit) return true;
+    // branching candidates: the most fractional columns of the LP solution (ties to the lower index)
+    const double* x = root->getColSolution();
+    std::vector<uint32_t> candidates;
+    for (uint32_t c = 0; c < K.C; ++c)
+        if (x[c] > 1e-6 && x[c] < 1 - 1e-6) candidates.push_back(c);
+    std::sort(candidates.begin(), candidates.end(), [&](uint32_t a, uint32_t b) {
+        const double fa = std::fabs(x[a] - 0.5), fb = std::fabs(x[b] - 0.5);
+        return fa != fb ? fa < fb : a < b;
+    });
+    if (candidates.size() > size_t(std::max(0, max_branches))) candidates.resize(size_t(std::max(0, max_branches)));
+    for (uint32_t j : candidates) {
+        bool both = true;
+        for (int up = 0; up < 2 && both; ++up) {
+            if (stop && stop()) return false;
+            ClpSimplex child(*root);  // warm start from the root's basis
+            if (up) child.setColumnLower(int(j), 1.0);
+            else child.setColumnUpper(int(j), 0.0);
+            child.setDualObjectiveLimit(limit);  // the dual simplex may stop once past it
+            child.dual(0);
+            const double* y = child.getRowPrice();
+            // whatever the status (optimal, stopped at the limit): L(u) holds for any u >= 0
+            both = y && bound(y, up ? int(j) : -1, up ? -1 : int(j)) > limit;
+        }
+        if (both) return true;
+    }
+    return false;
+}
+
 // Solves the kernel with CBC, looking only for covers smaller than `incumbent` (the best known
 // cover): the cutoff incumbent - 1 + kCutoffSlack prunes at least as much as a MIP start would. A MIP start (Cbc_setMIPStartI) is deliberately not used: in CBC 2.10 its
 // processing ("Reduced search") ignored the time limit and took over a minute on a dense

@@ -549,12 +549,13 @@ sc::Problem to_problem(const Coverage& c) {
 }  // namespace
 
 TEST_CASE("set cover: the fast effort gives valid covers, valid bounds and the same result every time") {
-    // Instances large enough that the LP bound often leaves a gap of two balls or more (where
-    // the fast effort does not run CBC); the prove effort gives the optimum to compare with.
+    // Instances large enough that the LP bound, even one ball higher after branching, often leaves
+    // a gap of two balls or more (where the fast effort does not run CBC); the prove effort gives
+    // the optimum to compare with.
     Rng rng(9090);
     int unproven = 0, optimal = 0;
     for (int t = 0; t < 40; ++t) {
-        const Coverage c = random_cover(rng, 70 + rng.below(40), 60 + rng.below(40), 0.06);
+        const Coverage c = random_cover(rng, 100 + rng.below(40), 90 + rng.below(40), 0.05);
         CoverOptions fast, prove;
         prove.effort = Effort::prove;
         prove.time_limit_s = 0;
@@ -655,6 +656,57 @@ TEST_CASE("set cover: the LP by row and column generation has the whole LP's opt
             CHECK(sc::lagrangian(P, all, 1, far, &yr).bound == doctest::Approx(lp).epsilon(1e-7));
         }
     }
+}
+
+TEST_CASE("set cover: branching on the LP never rules out the brute-force minimum, and often rules out one ball less") {
+    const auto far = sc::Clock::now() + std::chrono::hours(1);
+    int beyond_lp = 0, below = 0;
+    Rng rng(2468);
+    for (int t = 0; t < 200; ++t) {
+        // Random instances (up to 30 rows, for the brute force) and unions of odd cycles with a
+        // few random extra columns: an odd cycle's LP is half its length, one ball below its
+        // minimum, so the LP alone often leaves a gap there.
+        Coverage c;
+        if (t % 2 == 0) {
+            c = random_cover(rng, 22 + rng.below(9), 16 + rng.below(9), 0.12 + 0.08 * rng.uniform());
+        } else {
+            std::vector<std::vector<uint32_t>> cols;
+            uint32_t rows = 0;
+            for (int k = 0, cycles = 2 + int(rng.below(2)); k < cycles; ++k) {
+                const uint32_t len = 3 + 2 * uint32_t(rng.below(3));
+                for (uint32_t i = 0; i < len; ++i) cols.push_back({rows + i, rows + (i + 1) % len});
+                rows += len;
+            }
+            for (int e = 0, extra = int(rng.below(4)); e < extra; ++e)
+                cols.push_back({uint32_t(rng.below(rows)), uint32_t(rng.below(rows)), uint32_t(rng.below(rows))});
+            c.n_samples = rows;
+            c.n_balls = cols.size();
+            c.ball_ptr.push_back(0);
+            for (auto& l : cols) {
+                std::sort(l.begin(), l.end());
+                l.erase(std::unique(l.begin(), l.end()), l.end());
+                c.ball_samples.insert(c.ball_samples.end(), l.begin(), l.end());
+                c.ball_ptr.push_back(uint32_t(c.ball_samples.size()));
+            }
+            c.build_transpose();
+        }
+        const sc::Problem P = to_problem(c);
+        const int best = brute_min(c);
+        REQUIRE(best > 0);
+        INFO("brute-force minimum " << best);
+        CHECK_FALSE(sc::no_cover_within(P, size_t(best), 8));  // a cover of that size exists
+        CHECK_FALSE(sc::no_cover_within(P, size_t(best) + 1, 8));
+        const std::vector<double> y = sc::lp_duals(P, 0);
+        REQUIRE(y.size() == P.R);
+        const bool by_lp = sc::lagrangian(P, all_columns(P), 1, far, &y).bound > double(best) - 1.0 + 1e-6;
+        const bool ruled_out = sc::no_cover_within(P, size_t(best) - 1, 8);
+        below += ruled_out;
+        beyond_lp += ruled_out && !by_lp;  // branching was needed
+        // told to stop at once, only the LP itself can rule it out
+        CHECK(sc::no_cover_within(P, size_t(best) - 1, 8, [] { return true; }) == by_lp);
+    }
+    CHECK(below >= 150);
+    CHECK(beyond_lp >= 5);
 }
 
 TEST_CASE("set cover: the volume ascent gives a valid bound near the LP optimum") {
