@@ -15,7 +15,9 @@
 // (setcover_local.cpp, a quarter of the remaining budget) for a better incumbent, then
 // reduced-cost fixing (drop every column that no cover smaller than the incumbent can
 // contain), reduction again, and CBC on what is left with the incumbent as cutoff and CBC's
-// own heuristics off (it only has to prove). With the fast effort (the default) CBC runs only
+// own heuristics off (it only has to prove). The fast effort first tries, on small components
+// and beside the search, to raise the LP bound by one ball by branching on the LP (rules_out).
+// With the fast effort (the default) CBC runs only
 // when one ball separates incumbent and bound on a small kernel, with a node limit and no
 // preprocessing or cuts (see Effort);
 // otherwise the local-search cover is returned with its bound. Row generation (exact ILPs on growing row subsets,

@@ -15,7 +15,9 @@ enum class Solver : int32_t { exact = 0, greedy = 1, capp = 2 };
 
 // How hard the exact solver works for a proof (deterministic either way, unless the time limit
 // cuts it short):
-// - fast (default): greedy, the LP bound, local search; CBC only when a single ball separates
+// - fast (default): greedy, the LP bound (on components of at most kFastCbcMaxRows rows raised
+//   by one ball when branching on one column of the LP shows it), local search; CBC only when a
+//   single ball separates
 //   the incumbent from the bound and the kernel left after reduced-cost fixing is small
 //   (kFastCbcMaxRows rows), with at most kFastCbcNodes branch-and-bound nodes and without
 //   CBC's preprocessing and cuts (on such small kernels they cost more than they save). Otherwise the
