@@ -83,15 +83,11 @@ std::vector<uint32_t> lagrange_greedy(const Problem& P, const std::vector<double
     return kept;
 }
 
-// `incumbent`: a cover of P (ascending). Stops early once ceil(bound) >= |best|.
-Lagrange lagrangian(const Problem& P, std::vector<uint32_t> incumbent, int max_iter, Clock::time_point deadline,
-                    const std::vector<double>* start, double step) {
-    Lagrange L;
-    L.best = std::move(incumbent);
-    std::vector<double> u(P.R), cost(P.C), g(P.R);
-    std::vector<uint8_t> x(P.C);
-    if (start && start->size() == P.R) u = *start;
-    else for (uint32_t r = 0; r < P.R; ++r) {
+namespace {
+// The usual first multipliers: u_r = 1 / (the size of the largest column covering r).
+std::vector<double> first_multipliers(const Problem& P) {
+    std::vector<double> u(P.R);
+    for (uint32_t r = 0; r < P.R; ++r) {
         double v = 1.0;
         for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q) {
             const uint32_t c = P.rcol[q];
@@ -99,6 +95,17 @@ Lagrange lagrangian(const Problem& P, std::vector<uint32_t> incumbent, int max_i
         }
         u[r] = v;
     }
+    return u;
+}
+}  // namespace
+
+// `incumbent`: a cover of P (ascending). Stops early once ceil(bound) >= |best|.
+Lagrange lagrangian(const Problem& P, std::vector<uint32_t> incumbent, int max_iter, Clock::time_point deadline,
+                    const std::vector<double>* start, double step) {
+    Lagrange L;
+    L.best = std::move(incumbent);
+    std::vector<double> u = start && start->size() == P.R ? *start : first_multipliers(P), cost(P.C), g(P.R);
+    std::vector<uint8_t> x(P.C);
     L.bound = -1;
     double lambda = step;
     const int stall_max = 20;
@@ -156,16 +163,8 @@ Lagrange lagrangian(const Problem& P, std::vector<uint32_t> incumbent, int max_i
 Lagrange volume_ascent(const Problem& P, std::vector<uint32_t> incumbent, int max_iter, Clock::time_point deadline) {
     Lagrange L;
     L.best = std::move(incumbent);
-    std::vector<double> ubar(P.R), u(P.R), cost(P.C), xbar(P.C), v(P.R), w(P.R), g(P.R);
+    std::vector<double> ubar = first_multipliers(P), u(P.R), cost(P.C), xbar(P.C), v(P.R), w(P.R), g(P.R);
     std::vector<uint8_t> x(P.C);
-    for (uint32_t r = 0; r < P.R; ++r) {
-        double val = 1.0;
-        for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q) {
-            const uint32_t c = P.rcol[q];
-            val = std::min(val, 1.0 / double(P.cptr[c + 1] - P.cptr[c]));
-        }
-        ubar[r] = val;
-    }
     // L(y), the reduced costs, x = x(y) (c_j(y) < 0) and w = 1 - A x
     auto evaluate = [&](const std::vector<double>& y) {
         double z = 0;
