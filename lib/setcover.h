@@ -15,8 +15,9 @@ enum class Solver : int32_t { exact = 0, greedy = 1, capp = 2 };
 
 // How hard the exact solver works for a proof (deterministic either way, unless the time limit
 // cuts it short):
-// - fast (default): greedy, the LP bound (on components of at most kFastCbcMaxRows rows raised
-//   by one ball when branching on one column of the LP shows it), local search; CBC only when a
+// - fast (default): greedy, the LP bound (raised by one ball when branching on one column of the
+//   LP shows it; tried on components of at most kFastCbcMaxRows rows, and on larger ones whose
+//   LP lies within kFastBranchShortfall of the next integer), local search; CBC only when a
 //   single ball separates
 //   the incumbent from the bound and the kernel left after reduced-cost fixing is small
 //   (kFastCbcMaxRows rows), with at most kFastCbcNodes branch-and-bound nodes and without
@@ -26,6 +27,9 @@ enum class Solver : int32_t { exact = 0, greedy = 1, capp = 2 };
 // - prove: CBC until the cover is proven optimal or the time limit ends it.
 enum class Effort : int32_t { fast = 0, prove = 1 };
 constexpr uint32_t kFastCbcMaxRows = 400;
+// The fast effort's branching step also runs on larger components when their LP lies within
+// this much of the next integer (see solve_component).
+constexpr double kFastBranchShortfall = 0.2;
 constexpr int kFastCbcNodes = 200;
 
 struct CoverOptions {

@@ -575,8 +575,9 @@ TEST_CASE("set cover: the fast effort gives valid covers, valid bounds and the s
         else ++unproven;
         if (a.objective == p.objective) ++optimal;
     }
-    // Components over 400 rows get neither the branching step nor CBC with the fast effort:
-    // there the early stop is the rule (no optimum to compare with at this size).
+    // Components over 400 rows get CBC only for a one-ball gap, and the branching step only when
+    // the LP is close to the next integer: there the early stop is the rule (no optimum to
+    // compare with at this size).
     for (int t = 0; t < 3; ++t) {
         const Coverage c = random_cover(rng, 450 + rng.below(50), 300 + rng.below(50), 0.02);
         CoverOptions fast;
@@ -1258,4 +1259,42 @@ TEST_CASE("set cover: the reduction gives the reference kernel (rules, ties, mas
     }
     CHECK(with_kernel >= 100);
     CHECK(multi_round >= 20);
+}
+
+
+TEST_CASE("set cover: on components over 400 rows the fast effort branches only when the LP is close to the next integer") {
+    // On one-component kernels of 400-550 rows whose cover stays at least three balls above the
+    // LP (so that the fast effort does not run CBC), the bound beyond ceil(LP) can only come from
+    // the branching step: it must not appear where the LP is further than kFastBranchShortfall
+    // from the next integer, and it should where it is close.
+    const auto far = sc::Clock::now() + std::chrono::hours(1);
+    Rng rng(1357);
+    int close = 0, raised = 0, far_from = 0;
+    for (int t = 0; t < 30; ++t) {
+        const Coverage c = random_cover(rng, 450 + rng.below(100), 250 + rng.below(100), 0.015 + 0.01 * rng.uniform());
+        const sc::Problem P = to_problem(c);
+        const std::vector<double> y = sc::lp_duals(P, 0);
+        REQUIRE(y.size() == P.R);
+        // the reductions keep the LP's optimum, so this is forced + the kernel's LP
+        const double lp = sc::lagrangian(P, all_columns(P), 1, far, &y).bound;
+        const double ceil_lp = std::ceil(lp - 1e-6);
+        CoverOptions fast;
+        CoverResult a;
+        REQUIRE(solve_set_cover(c, fast, false, Monitor{}, a).ok());
+        CHECK(valid_cover(c, a.selected));
+        if (a.rows_after <= kFastCbcMaxRows || a.components != 1 || a.objective < ceil_lp + 3) continue;
+        INFO("instance " << t << ": LP " << lp << ", bound " << a.lower_bound << ", cover " << a.objective);
+        CHECK(a.lower_bound >= ceil_lp);
+        CHECK(a.lower_bound <= ceil_lp + 1);
+        if (ceil_lp - lp <= kFastBranchShortfall) {
+            ++close;
+            raised += a.lower_bound == ceil_lp + 1;
+        } else {
+            ++far_from;
+            CHECK(a.lower_bound == ceil_lp);
+        }
+    }
+    CHECK(far_from >= 5);
+    CHECK(close >= 3);
+    CHECK(raised >= 3);
 }
