@@ -1261,7 +1261,6 @@ TEST_CASE("set cover: the reduction gives the reference kernel (rules, ties, mas
     CHECK(multi_round >= 20);
 }
 
-
 TEST_CASE("set cover: on components over 400 rows the fast effort branches only when the LP is close to the next integer") {
     // On one-component kernels of 400-550 rows whose cover stays at least three balls above the
     // LP (so that the fast effort does not run CBC), the bound beyond ceil(LP) can only come from
