@@ -176,7 +176,7 @@ bool rules_out(const Problem& P, const Lagrange& D, size_t size, const Monitor& 
 // is lp (ceil: lp_bound): always on small components, and on larger ones when the LP lies
 // within kFastBranchShortfall of lp_bound. Branching on one column raised the LP by 0.07-0.11
 // where it proved (Ant-12, fish, bird_dove); where the LP was 0.5-1 short (chair, cup,
-// desk_table, dolphin, duck) no column did, at 0.3-1.9 s each on kernels of 550-1060 rows.
+// desk_table, dolphin, duck) no column did, at 0.27-1.9 s each on kernels of 550-1060 rows.
 bool worth_branching(const Problem& P, double lp, size_t lp_bound) {
     return P.R <= kFastCbcMaxRows || double(lp_bound) - lp <= kFastBranchShortfall;
 }
