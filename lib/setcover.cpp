@@ -312,6 +312,25 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
     out.sel = searched.size() <= L.best.size() ? searched : L.best;
     out.lb = std::max({out.lb, std::ceil(L.bound - 1e-6), double(branched_bound)});
     if (done() || monitor.cancelled()) return out;
+    // Prove effort: a short search on the LP optimal face first (core_cover), for a smaller
+    // incumbent (dolphin: 38 -> 37, the LP bound: proven in 0.5-0.7 s instead of not within 5 s).
+    // Not in the fast effort: 0.1-0.8 s on each of the other unproven paper kernels, for nothing.
+    if (effort == Effort::prove && lp_ok && !large) {
+        double limit = 0;
+        if (has_deadline) limit = std::chrono::duration<double>(deadline - Clock::now()).count() / 4;
+        if (!has_deadline || limit > 0) {
+            std::vector<uint32_t> smaller;
+            try {
+                smaller = core_cover(P, L.cost, out.sel.size(), limit, threads, monitor);
+            } catch (const std::bad_alloc&) {
+                throw;
+            } catch (...) {
+                smaller.clear();  // CBC failure: keep the incumbent
+            }
+            if (!smaller.empty()) out.sel = std::move(smaller);
+            if (done() || monitor.cancelled()) return out;
+        }
+    }
 
     // Covers smaller than the incumbent have at most target columns.
     const double target = double(out.sel.size()) - 1.0;

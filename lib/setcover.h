@@ -18,13 +18,15 @@ enum class Solver : int32_t { exact = 0, greedy = 1, capp = 2 };
 // - fast (default): greedy, the LP bound (raised by one ball when branching on one column of the
 //   LP shows it; tried on components of at most kFastCbcMaxRows rows, and on larger ones whose
 //   LP lies within kFastBranchShortfall of the next integer), local search; CBC only when a
-//   single ball separates
-//   the incumbent from the bound and the kernel left after reduced-cost fixing is small
-//   (kFastCbcMaxRows rows), with at most kFastCbcNodes branch-and-bound nodes and without
-//   CBC's preprocessing and cuts (on such small kernels they cost more than they save). Otherwise the
-//   local-search cover is returned with its LP bound and gap (usually already the optimum:
-//   CBC's remaining work is the proof).
-// - prove: CBC until the cover is proven optimal or the time limit ends it.
+//   single ball separates the incumbent from the bound and the kernel left after reduced-cost
+//   fixing is small (kFastCbcMaxRows rows), with at most kFastCbcNodes branch-and-bound nodes
+//   and without CBC's preprocessing and cuts (on such small kernels they cost more than they
+//   save). Otherwise the local-search cover is returned with its LP bound and gap (usually
+//   already the optimum: CBC's remaining work is the proof).
+// - prove: greedy, the LP bound and the local search as above (not the branching step), then a
+//   short CBC search for a smaller cover among the columns of zero reduced cost at the LP duals
+//   (at most 30 nodes, no strong branching: core_cover), then CBC until the cover is proven
+//   optimal or the time limit ends it.
 enum class Effort : int32_t { fast = 0, prove = 1 };
 constexpr uint32_t kFastCbcMaxRows = 400;
 // The fast effort's branching step also runs on larger components when their LP lies within

@@ -115,8 +115,20 @@ constexpr double kCutoffSlack = 1e-3;
 // `max_nodes` > 0: CBC's branch-and-bound node limit (deterministic, unlike the time limit).
 // `lean`: no preprocessing and no cut generation, for short node-limited proofs on small
 // kernels, where they cost more than the branching they save.
+// `strong_branching` false: no strong branching and no pseudo-cost trust (CBC's "strong 0",
+// "trust 0"), for a quick search for covers rather than a proof.
 CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int threads, bool first_solution = false,
-                   bool heuristics = true, int max_nodes = 0, bool lean = false);
+                   bool heuristics = true, int max_nodes = 0, bool lean = false, bool strong_branching = true);
+
+// A cover of P smaller than `incumbent` among the columns of P's LP optimal face: those whose
+// reduced cost at the LP duals (`cost`) is at most kCoreMaxCost, and each row's cheapest column.
+// Reduced, then searched by CBC for at most kCoreCbcNodes nodes, without strong branching
+// (time_limit_s > 0: also a time limit). Returns the cover (P-local, ascending), or empty if
+// none was found.
+constexpr double kCoreMaxCost = 1e-4;
+constexpr int kCoreCbcNodes = 30;
+std::vector<uint32_t> core_cover(const Problem& P, const std::vector<double>& cost, size_t incumbent,
+                                 double time_limit_s, int threads, const Monitor& monitor);
 
 // Row generation (lazy covering constraints) on a reduced component K, looking for covers
 // smaller than `target` (the incumbent's size; `best` below, lowered as better covers appear).

@@ -724,6 +724,70 @@ TEST_CASE("set cover: branching on the LP never rules out the brute-force minimu
     CHECK(beyond_lp >= 5);
 }
 
+TEST_CASE("set cover: the search on the LP optimal face returns only smaller covers from its core, and often finds one") {
+    const auto far = sc::Clock::now() + std::chrono::hours(1);
+    Rng rng(8642);
+    int found = 0, through_cbc = 0;
+    for (int t = 0; t < 150; ++t) {
+        const Coverage c = random_cover(rng, 22 + rng.below(9), 20 + rng.below(15), 0.1 + 0.1 * rng.uniform());
+        const sc::Problem P = to_problem(c);
+        const int best = brute_min(c);
+        REQUIRE(best > 0);
+        const std::vector<double> y = sc::lp_duals(P, 0);
+        REQUIRE(y.size() == P.R);
+        const std::vector<double> cost = sc::lagrangian(P, all_columns(P), 1, far, &y).cost;
+        REQUIRE(cost.size() == P.C);
+        // the core: reduced cost at most kCoreMaxCost, or the cheapest column of a row (ties to
+        // the lower index)
+        std::vector<uint8_t> core(P.C, 0);
+        for (uint32_t j = 0; j < P.C; ++j) core[j] = cost[j] <= sc::kCoreMaxCost;
+        for (uint32_t r = 0; r < P.R; ++r) {
+            uint32_t cheapest = P.rcol[P.rptr[r]];
+            for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q)
+                if (cost[P.rcol[q]] < cost[cheapest]) cheapest = P.rcol[q];
+            core[cheapest] = 1;
+        }
+        INFO("instance " << t << ", brute-force minimum " << best);
+        // nothing is smaller than the minimum
+        CHECK(sc::core_cover(P, cost, size_t(best), 0, 1, Monitor{}).empty());
+        // below an incumbent one ball above it: a minimum cover from the core, or nothing
+        const std::vector<uint32_t> sel = sc::core_cover(P, cost, size_t(best) + 1, 0, 1, Monitor{});
+        if (sel.empty()) continue;
+        ++found;
+        CHECK(valid_cover(c, sel));
+        CHECK(int(sel.size()) == best);
+        for (uint32_t j : sel) CHECK(core[j] == 1);
+        // found by CBC, not by the reduction of the core alone
+        std::vector<uint32_t> forced;
+        sc::Problem K;
+        REQUIRE(sc::reduce_problem(sc::restrict_columns(P, core), Monitor{}, forced, K).ok());
+        through_cbc += K.R > 0;
+    }
+    CHECK(found >= 120);
+    CHECK(through_cbc >= 60);
+
+    // Costs that are not reduced costs at LP duals (no column at zero): the core is each row's
+    // cheapest column, itself a cover, which any incumbent above the column count admits.
+    for (int t = 0; t < 20; ++t) {
+        const Coverage c = random_cover(rng, 22 + rng.below(9), 20 + rng.below(15), 0.15);
+        const sc::Problem P = to_problem(c);
+        std::vector<double> cost(P.C);
+        for (double& x : cost) x = 0.01 + rng.uniform();
+        std::vector<uint8_t> cheapest_of_a_row(P.C, 0);
+        for (uint32_t r = 0; r < P.R; ++r) {
+            uint32_t cheapest = P.rcol[P.rptr[r]];
+            for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q)
+                if (cost[P.rcol[q]] < cost[cheapest]) cheapest = P.rcol[q];
+            cheapest_of_a_row[cheapest] = 1;
+        }
+        INFO("instance " << t);
+        const std::vector<uint32_t> sel = sc::core_cover(P, cost, P.C + 1, 0, 1, Monitor{});
+        CHECK(valid_cover(c, sel));
+        CHECK_FALSE(sel.empty());
+        for (uint32_t j : sel) CHECK(cheapest_of_a_row[j] == 1);
+    }
+}
+
 TEST_CASE("set cover: the volume ascent gives a valid bound near the LP optimum") {
     const auto far = sc::Clock::now() + std::chrono::hours(1);
     SUBCASE("small instances: below the brute-force minimum and the LP, at its own multipliers") {
