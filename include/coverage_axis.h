@@ -202,7 +202,9 @@ CA_API ca_status ca_candidate_set_copy(const ca_candidate_set* set, double* cent
 #define CA_EFFORT_FAST  0 /* default: LP bound + local search; CBC only when one ball separates the
                              cover from the bound on a small kernel, with a node limit; otherwise the
                              cover is returned unproven with its bound and gap */
-#define CA_EFFORT_PROVE 1 /* CBC until the cover is proven optimal or the time limit ends it */
+#define CA_EFFORT_PROVE 1 /* a short CBC search for a smaller cover among the balls of zero
+                             reduced cost at the LP optimum, then CBC until the cover is proven
+                             optimal or the time limit ends it */
 
 typedef struct ca_select_options {
     uint32_t struct_size;        /* sizeof(ca_select_options) */
