@@ -313,7 +313,7 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
     out.lb = std::max({out.lb, std::ceil(L.bound - 1e-6), double(branched_bound)});
     if (done() || monitor.cancelled()) return out;
     // Prove effort: a short search on the LP optimal face first (core_cover), for a smaller
-    // incumbent (dolphin: 38 -> 37, the LP bound: proven in 0.5-0.7 s instead of not within 5 s).
+    // incumbent (dolphin: 38 -> 37, the LP bound: proven in 0.5-0.9 s instead of not within 5 s).
     // Not in the fast effort: 0.1-0.8 s on each of the other unproven paper kernels, for nothing.
     if (effort == Effort::prove && lp_ok && !large) {
         double limit = 0;
