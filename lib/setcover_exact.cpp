@@ -637,15 +637,10 @@ CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int 
 // 0.1-0.8 s each.
 std::vector<uint32_t> core_cover(const Problem& P, const std::vector<double>& cost, size_t incumbent,
                                  double time_limit_s, int threads, const Monitor& monitor) {
-    std::vector<uint8_t> keep(P.C, 0);
-    for (uint32_t c = 0; c < P.C; ++c) keep[c] = cost[c] <= kCoreMaxCost;
-    for (uint32_t r = 0; r < P.R; ++r) {  // every row keeps a column
-        uint32_t cheapest = P.rcol[P.rptr[r]];
-        for (uint32_t q = P.rptr[r] + 1; q < P.rptr[r + 1]; ++q)
-            if (cost[P.rcol[q]] < cost[cheapest]) cheapest = P.rcol[q];
-        keep[cheapest] = 1;
-    }
-    const Problem Q = restrict_columns(P, keep);
+    std::vector<uint32_t> all_rows(P.R);
+    std::iota(all_rows.begin(), all_rows.end(), 0u);
+    // every row keeps a column: its cheapest
+    const Problem Q = restrict_columns(P, core_columns(P, cost, kCoreMaxCost, 1, all_rows));
     std::vector<uint32_t> forced;  // Q-local
     Problem K;                     // col_id Q-local
     if (!reduce_problem(Q, monitor, forced, K).ok()) return {};

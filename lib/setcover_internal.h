@@ -121,7 +121,7 @@ CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int 
                    bool heuristics = true, int max_nodes = 0, bool lean = false, bool strong_branching = true);
 
 // A cover of P smaller than `incumbent` among the columns of P's LP optimal face: those whose
-// reduced cost at the LP duals (`cost`) is at most kCoreMaxCost, and each row's cheapest column.
+// reduced cost at the LP duals (`cost`) is below kCoreMaxCost, and each row's cheapest column.
 // Reduced, then searched by CBC for at most kCoreCbcNodes nodes, without strong branching
 // (time_limit_s > 0: also a time limit). Returns the cover (P-local, ascending), or empty if
 // none was found.
