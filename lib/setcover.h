@@ -23,7 +23,7 @@ enum class Solver : int32_t { exact = 0, greedy = 1, capp = 2 };
 //   and without CBC's preprocessing and cuts (on such small kernels they cost more than they
 //   save). Otherwise the local-search cover is returned with its LP bound and gap (usually
 //   already the optimum: CBC's remaining work is the proof).
-// - prove: greedy, the LP bound and the local search as above (not the branching step), then a
+// - prove: greedy, the LP bound (with the branching step) and the local search as above, then a
 //   short CBC search for a smaller cover among the columns of zero reduced cost at the LP duals
 //   (at most 30 nodes, no strong branching: core_cover), then CBC until the cover is proven
 //   optimal or the time limit ends it.
