@@ -320,14 +320,7 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
         double limit = 0;
         if (has_deadline) limit = std::chrono::duration<double>(deadline - Clock::now()).count() / 4;
         if (!has_deadline || limit > 0) {
-            std::vector<uint32_t> smaller;
-            try {
-                smaller = core_cover(P, L.cost, out.sel.size(), limit, threads, monitor);
-            } catch (const std::bad_alloc&) {
-                throw;
-            } catch (...) {
-                smaller.clear();  // CBC failure: keep the incumbent
-            }
+            std::vector<uint32_t> smaller = core_cover(P, L.cost, out.sel.size(), limit, threads, monitor);
             if (!smaller.empty()) out.sel = std::move(smaller);
             if (done() || monitor.cancelled()) return out;
         }
@@ -406,14 +399,9 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
             }
         }
     }
-    CbcOutcome cbc;
-    try {
-        cbc = run_cbc(K, kbest, has_deadline ? remaining : 0.0, threads, false, false, fast ? kFastCbcNodes : 0, fast);
-    } catch (const std::bad_alloc&) {
-        throw;
-    } catch (...) {
-        cbc = CbcOutcome{};  // CBC failure: keep the incumbent
-    }
+    // not ok: CBC failed, the incumbent stays
+    const CbcOutcome cbc =
+        run_cbc(K, kbest, has_deadline ? remaining : 0.0, threads, false, false, fast ? kFastCbcNodes : 0, fast);
     if (cbc.ok && cbc.has_solution) take(cbc.solution);
     const double obj = double(out.sel.size());
     if (cbc.ok && cbc.proven) {

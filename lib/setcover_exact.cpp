@@ -14,6 +14,7 @@
 #include <string>
 #include <memory>
 #include <mutex>
+#include <new>
 
 #include <coin/Cbc_C_Interface.h>
 #include <coin/ClpSimplex.hpp>
@@ -545,8 +546,9 @@ bool no_cover_within(const Problem& K, size_t size, int max_branches, const std:
 // processing ("Reduced search") ignored the time limit and took over a minute on a dense
 // 1500 x 2000 kernel where the cutoff alone gives the same result in seconds.
 // With `first_solution`, CBC stops at the first cover below the cutoff (not proven optimal).
-CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int threads, bool first_solution,
-                   bool heuristics, int max_nodes, bool lean, bool strong_branching) {
+namespace {
+CbcOutcome run_cbc_unguarded(const Problem& P, size_t incumbent, double time_limit_s, int threads,
+                             bool first_solution, bool heuristics, int max_nodes, bool lean, bool strong_branching) {
     CbcOutcome out;
     std::vector<CoinBigIndex> colstart(P.C + 1);
     std::vector<int> rowidx(P.crow.begin(), P.crow.end());
@@ -626,6 +628,21 @@ CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int 
         out.proven = finished && trusted && Cbc_isProvenInfeasible(m) != 0;
     return out;
 }
+}  // namespace
+
+// Any exception from CBC other than bad_alloc is a failed solve (ok = false): the callers keep
+// their incumbent.
+CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int threads, bool first_solution,
+                   bool heuristics, int max_nodes, bool lean, bool strong_branching) {
+    try {
+        return run_cbc_unguarded(P, incumbent, time_limit_s, threads, first_solution, heuristics, max_nodes, lean,
+                                 strong_branching);
+    } catch (const std::bad_alloc&) {
+        throw;
+    } catch (...) {
+        return CbcOutcome{};
+    }
+}
 
 
 // On dolphin's kernel (694 x 1400, LP 32.47) the local search's covers have 34 columns, two or
@@ -695,14 +712,7 @@ RowGenOutcome row_generation(const Problem& K, size_t target, Clock::time_point 
             if (L.best.size() + sforced.size() < best) {
                 sub = L.best;
             } else {
-                CbcOutcome cbc;
-                try {
-                    cbc = run_cbc(SK, best - sforced.size(), has_deadline ? remaining : 0.0, threads, true);
-                } catch (const std::bad_alloc&) {
-                    throw;
-                } catch (...) {
-                    cbc = CbcOutcome{};
-                }
+                const CbcOutcome cbc = run_cbc(SK, best - sforced.size(), has_deadline ? remaining : 0.0, threads, true);
                 if (!cbc.ok) break;
                 if (std::isfinite(cbc.bound))
                     out.lb = std::max(out.lb, std::min(double(best), double(sforced.size()) + std::ceil(cbc.bound - 1e-6)));

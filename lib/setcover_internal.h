@@ -117,6 +117,7 @@ constexpr double kCutoffSlack = 1e-3;
 // kernels, where they cost more than the branching they save.
 // `strong_branching` false: no strong branching and no pseudo-cost trust (CBC's "strong 0",
 // "trust 0"), for a quick search for covers rather than a proof.
+// Exceptions from CBC other than std::bad_alloc give ok = false.
 CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int threads, bool first_solution = false,
                    bool heuristics = true, int max_nodes = 0, bool lean = false, bool strong_branching = true);
 
@@ -124,7 +125,7 @@ CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int 
 // reduced cost at the LP duals (`cost`) is below kCoreMaxCost, and each row's cheapest column.
 // Reduced, then searched by CBC for at most kCoreCbcNodes nodes, without strong branching
 // (time_limit_s > 0: also a time limit). Returns the cover (P-local, ascending), or empty if
-// none was found.
+// none was found (or CBC failed).
 constexpr double kCoreMaxCost = 1e-4;
 constexpr int kCoreCbcNodes = 30;
 std::vector<uint32_t> core_cover(const Problem& P, const std::vector<double>& cost, size_t incumbent,
