@@ -1,4 +1,4 @@
-// setcover_reduce.cpp: reduction of a set-cover instance (rows = samples, columns = balls) to its
+// reduction.cpp: reduction of a set-cover instance (rows = samples, columns = balls) to its
 // kernel, on the input (with its masks) and on compact problems (see setcover_internal.h).
 //
 // Rules, applied to a fixpoint; none changes the optimum:

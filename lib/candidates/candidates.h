@@ -57,14 +57,14 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
                            CandidateSet& out);
 
 // Every cover sample that no candidate reaches within kFallbackReach gets a small inner ball
-// under it (candidates_fallback.cpp), so a cover exists for every offset delta >= kFallbackReach.
+// under it (fallback_balls.cpp), so a cover exists for every offset delta >= kFallbackReach.
 constexpr double kFallbackReach = 0.005;   // unit-cube units (0.5 % of the longest bbox side)
 // `caps` (optional): distances to the hole caps of an open mesh, which also bound the radius.
 // `threads`: for the coverage queries (0 = all cores).
 size_t add_fallback_balls(CandidateSet& set, const WindingNumber& winding, const MeshDistance& distance,
                           const MeshDistance* caps = nullptr, int threads = 0);
 
-// Open meshes (candidates_holes.cpp): every closed boundary loop is capped by a fan from its
+// Open meshes (hole_caps.cpp): every closed boundary loop is capped by a fan from its
 // centroid (for distances only) and every candidate's radius is clamped to its distance to the
 // caps, so no ball reaches out through a hole. Closed meshes are unchanged. False if cancelled.
 Mesh hole_caps(const Mesh& mesh);

@@ -1,4 +1,4 @@
-// connect_inside.cpp: the inside test for skeleton elements (InsideTest, rule in connect.h).
+// inside_test.cpp: the inside test for skeleton elements (InsideTest, rule in connect.h).
 // An element is tested at hundreds of grid points; most of the cost is the winding number and the
 // distance to the surface at each. Two exact shortcuts skip most of those queries without
 // changing any decision (a cache of "probes" per element, points where the exact distance d to

@@ -27,7 +27,7 @@
 //    whose removed edges were all used by earlier removed triangles also loses its longest edge
 //    that is on no kept triangle, so removal adds no loop (the medial mesh has the shape's
 //    topology; genus-3 gave b1 = 4 or 5 on some covers).
-//    One failing point removes the element (InsideTest, connect_inside.cpp: the rule is evaluated
+//    One failing point removes the element (InsideTest, inside_test.cpp: the rule is evaluated
 //    exactly, but most winding-number and distance queries are skipped by a Lipschitz bound and
 //    by surface-free balls on closed meshes). On the medial route (meshes), removal and hole filling also require the
 //    element's reconstruction to stay in the shape: at each test point the interpolated ball
@@ -91,14 +91,14 @@ public:
     bool triangle_inside(const Ball& a, const Ball& b, const Ball& c, double h, double envelope_tol = -1) const;
 private:
     struct Impl;
-    class Probes;   // per-element cache of exact distances (connect_inside.cpp)
+    class Probes;   // per-element cache of exact distances (inside_test.cpp)
     bool point_ok(Probes* probes, const Vec3& p, double r, double tol, double outside_tol,
                   const Ball* const* own, int n_own) const;
     std::unique_ptr<Impl> impl_;
 };
 
 namespace detail {
-// The medial-axis route's raw edges and faces (connect_medial.cpp); `out.balls` is already set.
+// The medial-axis route's raw edges and faces (medial_route.cpp); `out.balls` is already set.
 Status connect_medial(const CandidateSet& set, const Selection& sel, int threads, const Monitor& monitor, Skeleton& out);
 }  // namespace detail
 

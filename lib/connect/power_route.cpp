@@ -1,7 +1,7 @@
-// connect_power.cpp: the power-diagram connection route (regular triangulation via Qhull), the
+// power_route.cpp: the power-diagram connection route (regular triangulation via Qhull), the
 // repairs shared by both routes (removal of edges and triangles that leave the shape, hole
 // filling, reconnection of components), plus the connect_balls dispatcher. The inside test
-// itself is in connect_inside.cpp.
+// itself is in inside_test.cpp.
 #include "connect.h"
 
 #include "delaunay.h"

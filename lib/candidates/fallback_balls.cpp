@@ -1,4 +1,4 @@
-// candidates_fallback.cpp: makes every surface sample coverable. Thin features (tentacle tips,
+// fallback_balls.cpp: makes every surface sample coverable. Thin features (tentacle tips,
 // sharp ears) can have no inner Voronoi vertex near them, so no dilated candidate reaches some
 // samples and the set cover is infeasible. Under each sample that no candidate reaches within
 // kFallbackReach (in unit-cube units) this adds an inner ball touching the surface at that sample:
@@ -9,7 +9,7 @@
 // offset delta >= kFallbackReach / 2, so a cover exists for every delta >= kFallbackReach. The
 // optimiser uses such balls only where nothing else covers the sample. Samples where no point below the surface is inside (open
 // sheets, non-orientable strips) get no ball and are still reported as uncoverable. On an open
-// mesh the radius is also the distance to the hole caps (candidates_holes.cpp).
+// mesh the radius is also the distance to the hole caps (hole_caps.cpp).
 #include "candidates.h"
 
 #include "coverage.h"

@@ -1,4 +1,4 @@
-// connect_medial.cpp: the medial-axis connection route. The inner Voronoi diagram of the Voronoi
+// medial_route.cpp: the medial-axis connection route. The inner Voronoi diagram of the Voronoi
 // samples is the medial mesh (vertices: circumcentres of inner Delaunay tetrahedra; edges: inner
 // tetrahedra sharing a face; faces: Voronoi polygons dual to Delaunay edges whose closed ring of
 // tetrahedra is all inner, fanned into triangles). The selected balls are snapped to medial

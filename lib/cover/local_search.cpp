@@ -1,4 +1,4 @@
-// setcover_local.cpp: the anytime primal heuristic of the exact solver: row-weighting local
+// local_search.cpp: the anytime primal heuristic of the exact solver: row-weighting local
 // search for unicost set cover (RWLS, Gao, Weise & Li 2015). Starting from a cover, it looks
 // for covers one column smaller: drop a column, then swap columns (remove the one whose loss of
 // weighted coverage is smallest, add the best column for a random uncovered row), raising the

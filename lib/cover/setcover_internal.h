@@ -1,8 +1,8 @@
 // setcover_internal.h: what the set-cover files share; not part of the library's interface.
 // The compact problem (rows = samples x columns = balls, stored both ways) with its heuristics
 // and bounds (setcover_problem.cpp), the exact machinery (setcover_exact.cpp: Lagrangian bound,
-// CBC behind the process-wide mutex, row generation), the local search (setcover_local.cpp),
-// and the reduction of the input and of compact problems (setcover_reduce.cpp; the solve driver
+// CBC behind the process-wide mutex, row generation), the local search (local_search.cpp),
+// and the reduction of the input and of compact problems (reduction.cpp; the solve driver
 // is setcover.cpp).
 #pragma once
 #include "setcover.h"
@@ -154,7 +154,7 @@ constexpr double kRowGenShare = 0.25;
 RowGenOutcome row_generation(const Problem& K, size_t target, Clock::time_point deadline, bool has_deadline,
                              int threads, const Monitor& monitor);
 
-// ---- setcover_local.cpp ----
+// ---- local_search.cpp ----
 // Row-weighting local search (RWLS) from the cover `start` of P: returns the smallest cover
 // found (ascending, redundancy-free, never larger than `start`). Stops after `max_steps` swaps,
 // when it stalls (no improvement for max(2000, 5 (R + C)) swaps + as many as the last
@@ -207,7 +207,7 @@ private:
     std::vector<uint64_t> found_at_;
 };
 
-// ---- setcover_reduce.cpp ----
+// ---- reduction.cpp ----
 // Reduction of the input to its kernel: rows = the `required` samples, columns = the `allowed`
 // balls, the `locked` ones (forced in) selected first; `transpose_ok`: cov's sample -> ball
 // lists are consistent with its ball -> sample lists (otherwise they are rebuilt). `forced` gets the balls the reduction

@@ -241,7 +241,7 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
             [&built, &mesh] {
                 built.winding = std::make_shared<const WindingNumber>(mesh);
                 built.distance = std::make_shared<const MeshDistance>(mesh);
-                // open meshes: no ball reaches out through a hole (candidates_holes.cpp)
+                // open meshes: no ball reaches out through a hole (hole_caps.cpp)
                 const Mesh caps = hole_caps(mesh);
                 if (!caps.triangles.empty()) built.cap_distance = std::make_unique<const MeshDistance>(caps);
             },

@@ -1,5 +1,5 @@
 // setcover.cpp: minimum set cover of the samples by the candidate balls (see setcover.h): input
-// checks and the solve driver. The reduction is in setcover_reduce.cpp, building blocks in
+// checks and the solve driver. The reduction is in reduction.cpp, building blocks in
 // setcover_problem.cpp, the exact machinery in setcover_exact.cpp (setcover_internal.h).
 //
 // Pipeline: input checks -> reduction to a fixpoint (forced balls, degree-1 samples, dominated
@@ -12,7 +12,7 @@
 // for CBC) -> if that leaves a gap, the LP relaxation's duals (Clp) as multipliers, with small
 // subgradient steps around them for the greedy ->
 // done if ceil(bound) meets the incumbent; otherwise row-weighting local search
-// (setcover_local.cpp, a quarter of the remaining budget) for a better incumbent, then
+// (local_search.cpp, a quarter of the remaining budget) for a better incumbent, then
 // reduced-cost fixing (drop every column that no cover smaller than the incumbent can
 // contain), reduction again, and CBC on what is left with the incumbent as cutoff and CBC's
 // own heuristics off (it only has to prove). Both efforts first try, beside the search and

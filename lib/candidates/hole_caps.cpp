@@ -1,4 +1,4 @@
-// candidates_holes.cpp: keeps candidate balls of an open mesh from reaching out through its
+// hole_caps.cpp: keeps candidate balls of an open mesh from reaching out through its
 // holes. A Voronoi ball is empty of samples, but a hole has no samples, so a ball under a hole
 // (venus's base) bulges out through it; a random candidate's radius (distance to the mesh) has
 // the same problem. Each closed boundary loop of the mesh (edges used by one triangle, vertices
