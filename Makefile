@@ -25,8 +25,9 @@ demo: build
 test: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
+# every bench program, its output written to docs/benchmarks.md (stamped with date, machine, commit)
 bench: build
-	@for b in $(BUILD)/bench_*; do [ -x "$$b" ] && "$$b" $(DATA) || exit 1; done
+	@bash scripts/bench_report.sh $(BUILD) $(DATA) docs/benchmarks.md
 
 install: build
 	@cmake --install $(BUILD) $(if $(PREFIX),--prefix $(PREFIX),)
