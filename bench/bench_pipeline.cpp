@@ -1,6 +1,6 @@
 // bench_pipeline.cpp: the whole pipeline at the defaults on every mesh of <data>/meshes/paper:
 // |S|, |P|, |V|, proven optimal?, gap, time per stage, and the skeleton's Hausdorff distances to
-// the input (evaluation protocol of EVALUATION.md, % of the bbox diagonal); the same selection
+// the input (evaluation protocol of docs/evaluation.md, % of the bbox diagonal); the same selection
 // connected by the other route (power diagram) and measured by the same evaluator, which is the
 // measurement behind the default route for meshes. Also the two Coverage Axis reference
 // instances (the reference code's own samples and candidates) against their known optima.

@@ -1,6 +1,6 @@
 // bench_qmat.cpp: evaluates Q-MAT's own medial meshes (reference/qmat_matfp/) against their input
 // models with the default evaluation options and prints |V|, h(S->E), h(E->S), the two-sided
-// Hausdorff distance (% of the bbox diagonal) and the time, next to EVALUATION.md's reference.
+// Hausdorff distance (% of the bbox diagonal) and the time, next to the reference values of docs/evaluation.md.
 // Then the comparison: our skeleton at the default delta and at Q-MAT's sizes (target size),
 // Q-MAT's own medial mesh, and the Coverage Axis paper's reported values, all measured (except
 // the paper's) by the same evaluation code.
@@ -82,8 +82,8 @@ void synthetic(ca::Mesh& mesh, ca::Skeleton& sk) {
 
 struct Model {
     const char* name;
-    double ref_se, ref_es;   // EVALUATION.md, this protocol
-    double paper_hd;         // Coverage Axis paper, two-sided, at Q-MAT's size (EVALUATION.md)
+    double ref_se, ref_es;   // docs/evaluation.md, this protocol
+    double paper_hd;         // Coverage Axis paper, two-sided, at Q-MAT's size (docs/evaluation.md)
 };
 
 }  // namespace
