@@ -23,8 +23,17 @@
  *   threads at once.
  * - A context must be used by one thread at a time. ca_context_request_cancel() may be called from
  *   any thread. Callbacks run on the calling thread only.
- * - Option structs start with struct_size; fill them with the matching *_init() function, which
- *   sets the defaults, then change what you need.
+ * - Every struct starts with uint32_t struct_size (the ABI can grow; docs/abi.md):
+ *   . struct_size may be any size this library has published for the struct: sizeof of its
+ *     layout in any ABI version from the first to CA_ABI_VERSION (fields are only appended; each
+ *     field says the ABI version that added it, none = ABI 1). Other sizes are refused with
+ *     CA_ERROR_STRUCT_SIZE and a message naming the struct and the sizes it accepts.
+ *   . Inputs: fields past the caller's struct_size take their defaults. Fill a struct with its
+ *     *_init() (static inline: struct_size = sizeof as your compiler sees it, then the library's
+ *     defaults), then change what you need. Bindings call ca_*_defaults(p, size) directly.
+ *   . Outputs (stats, evaluation, skeleton view): the caller sets struct_size; the library writes
+ *     only the first struct_size bytes.
+ *   . The defaults live in the library only (ca_*_defaults); the comments below name them.
  * - The library never prints, never calls exit()/abort() on bad input, and lets no C++ exception
  *   cross this boundary. Its only process-wide state is a mutex that serialises calls into CBC
  *   (CBC is not thread-safe); Qhull runs with one handle per call.
@@ -58,8 +67,10 @@ extern "C" {
 #define CA_VERSION_MINOR 1
 #define CA_VERSION_PATCH 0
 #define CA_VERSION_NUMBER (CA_VERSION_MAJOR * 10000 + CA_VERSION_MINOR * 100 + CA_VERSION_PATCH)
-/* The ABI version changes only when existing functions or struct prefixes change. */
-#define CA_ABI_VERSION 1
+/* ABI 2: structs grow by appending (see struct_size above); *_init became static inline over
+   the exported ca_*_defaults; ca_context_desc.progress_interval_s and three ca_select_stats
+   fields were appended. */
+#define CA_ABI_VERSION 2
 
 CA_API uint32_t ca_version(void);     /* CA_VERSION_NUMBER of the linked library */
 CA_API uint32_t ca_abi_version(void); /* CA_ABI_VERSION of the linked library */
@@ -109,9 +120,17 @@ typedef struct ca_context_desc {
     ca_progress_fn progress; /* NULL: no progress */
     void* progress_user;
     int32_t threads;       /* worker threads for parallel stages; 0 = all cores, 1 = serial */
+    double progress_interval_s; /* ABI 2. Least time between two progress calls within a stage
+                                   (a stage's first call and calls with fraction 1 always come); default 0 =
+                                   every update. Cancel requests are still seen at every update. */
 } ca_context_desc;
 
-CA_API void ca_context_desc_init(ca_context_desc* desc);
+/* Sets struct_size and the defaults (all zero/NULL, threads 0) of the first struct_size bytes of
+   *desc; CA_ERROR_STRUCT_SIZE (nothing written) if struct_size is not a published size. */
+CA_API ca_status ca_context_desc_defaults(ca_context_desc* desc, uint32_t struct_size);
+static inline void ca_context_desc_init(ca_context_desc* desc) {
+    if (desc) { desc->struct_size = (uint32_t)sizeof *desc; (void)ca_context_desc_defaults(desc, (uint32_t)sizeof *desc); }
+}
 /* desc may be NULL (defaults). */
 CA_API ca_status ca_context_create(const ca_context_desc* desc, ca_context** out);
 CA_API void ca_context_destroy(ca_context* ctx); /* NULL is a no-op */
@@ -138,7 +157,10 @@ typedef struct ca_surface_view {
     size_t normal_stride;       /* 0 = 3 * sizeof(double) */
 } ca_surface_view;
 
-CA_API void ca_surface_view_init(ca_surface_view* view);
+CA_API ca_status ca_surface_view_defaults(ca_surface_view* view, uint32_t struct_size); /* all zero */
+static inline void ca_surface_view_init(ca_surface_view* view) {
+    if (view) { view->struct_size = (uint32_t)sizeof *view; (void)ca_surface_view_defaults(view, (uint32_t)sizeof *view); }
+}
 
 /* ---- step 1: candidates -------------------------------------------------------------------- */
 #define CA_CANDIDATES_VORONOI 0 /* inner Voronoi vertices of voronoi_samples surface samples */
@@ -156,7 +178,10 @@ typedef struct ca_candidate_options {
                                     default 10000; 0 = reuse the Voronoi samples */
 } ca_candidate_options;
 
-CA_API void ca_candidate_options_init(ca_candidate_options* options);
+CA_API ca_status ca_candidate_options_defaults(ca_candidate_options* options, uint32_t struct_size); /* the defaults named above */
+static inline void ca_candidate_options_init(ca_candidate_options* options) {
+    if (options) { options->struct_size = (uint32_t)sizeof *options; (void)ca_candidate_options_defaults(options, (uint32_t)sizeof *options); }
+}
 
 typedef struct ca_candidate_set ca_candidate_set;
 
@@ -229,7 +254,10 @@ typedef struct ca_select_options {
     int32_t effort;              /* CA_EFFORT_*; default FAST */
 } ca_select_options;
 
-CA_API void ca_select_options_init(ca_select_options* options);
+CA_API ca_status ca_select_options_defaults(ca_select_options* options, uint32_t struct_size); /* the defaults named above */
+static inline void ca_select_options_init(ca_select_options* options) {
+    if (options) { options->struct_size = (uint32_t)sizeof *options; (void)ca_select_options_defaults(options, (uint32_t)sizeof *options); }
+}
 
 typedef struct ca_selection ca_selection;
 
@@ -261,6 +289,9 @@ typedef struct ca_select_stats {
     uint64_t probes;             /* set-cover solves (target_count: one per bisection step) */
     uint64_t parts;              /* divide and conquer: spatial parts (0 = not used) */
     double scale_used;           /* the scale factor used (CA_DILATE_SCALE), else 0 */
+    double time_coverage_s;      /* ABI 2: building the coverage matrix (part of time_total_s) */
+    uint64_t cbc_components;     /* ABI 2: components of the kernel that needed CBC */
+    uint64_t rowgen_rounds;      /* ABI 2: row-generation rounds (sub-problems solved) */
 } ca_select_stats;
 
 CA_API ca_status ca_selection_stats(const ca_selection* selection, ca_select_stats* stats);
@@ -278,7 +309,10 @@ typedef struct ca_connect_options {
     int32_t reconnect;           /* 1 (default): join components by the shortest inside edges */
 } ca_connect_options;
 
-CA_API void ca_connect_options_init(ca_connect_options* options);
+CA_API ca_status ca_connect_options_defaults(ca_connect_options* options, uint32_t struct_size); /* the defaults named above */
+static inline void ca_connect_options_init(ca_connect_options* options) {
+    if (options) { options->struct_size = (uint32_t)sizeof *options; (void)ca_connect_options_defaults(options, (uint32_t)sizeof *options); }
+}
 
 typedef struct ca_skeleton ca_skeleton;
 
@@ -322,7 +356,10 @@ typedef struct ca_skeleton_view {
     size_t face_count;
 } ca_skeleton_view;
 
-CA_API void ca_skeleton_view_init(ca_skeleton_view* view);
+CA_API ca_status ca_skeleton_view_defaults(ca_skeleton_view* view, uint32_t struct_size); /* all zero */
+static inline void ca_skeleton_view_init(ca_skeleton_view* view) {
+    if (view) { view->struct_size = (uint32_t)sizeof *view; (void)ca_skeleton_view_defaults(view, (uint32_t)sizeof *view); }
+}
 /* A view of a skeleton result (valid while the skeleton lives). */
 CA_API ca_status ca_skeleton_get_view(const ca_skeleton* skeleton, ca_skeleton_view* view);
 
@@ -333,7 +370,10 @@ typedef struct ca_evaluate_options {
     uint64_t seed;               /* default 1 */
 } ca_evaluate_options;
 
-CA_API void ca_evaluate_options_init(ca_evaluate_options* options);
+CA_API ca_status ca_evaluate_options_defaults(ca_evaluate_options* options, uint32_t struct_size); /* the defaults named above */
+static inline void ca_evaluate_options_init(ca_evaluate_options* options) {
+    if (options) { options->struct_size = (uint32_t)sizeof *options; (void)ca_evaluate_options_defaults(options, (uint32_t)sizeof *options); }
+}
 
 typedef struct ca_evaluation {
     uint32_t struct_size;        /* set by the caller: sizeof(ca_evaluation) */

@@ -11,7 +11,7 @@ import ctypes
 import os
 from ctypes import POINTER, Structure, c_char_p, c_double, c_int32, c_int64, c_size_t, c_uint8, c_uint32, c_uint64, c_void_p
 
-ABI_VERSION = 1
+ABI_VERSION = 2
 
 STATUS_NAMES = {
     0: "CA_OK", 1: "CA_ERROR_INVALID_ARGUMENT", 2: "CA_ERROR_NULL_POINTER", 3: "CA_ERROR_STRUCT_SIZE",
@@ -58,7 +58,8 @@ class _SelectStats(Structure):
                 ("lower_bound", c_double), ("gap", c_double), ("delta_absolute", c_double), ("time_reduce_s", c_double),
                 ("time_solve_s", c_double), ("time_total_s", c_double), ("rows_before", c_uint64),
                 ("cols_before", c_uint64), ("rows_after", c_uint64), ("cols_after", c_uint64), ("forced", c_uint64),
-                ("components", c_uint64), ("probes", c_uint64), ("parts", c_uint64), ("scale_used", c_double)]
+                ("components", c_uint64), ("probes", c_uint64), ("parts", c_uint64), ("scale_used", c_double),
+                ("time_coverage_s", c_double), ("cbc_components", c_uint64), ("rowgen_rounds", c_uint64)]
 
 
 class _ConnectOptions(Structure):
@@ -97,22 +98,22 @@ def _load():
         "ca_version": (c_uint32, []), "ca_abi_version": (c_uint32, []), "ca_status_string": (c_char_p, [c_int32]),
         "ca_context_create": (c_int32, [P, POINTER(P)]), "ca_context_destroy": (None, [P]),
         "ca_context_last_error": (c_char_p, [P]),
-        "ca_surface_view_init": (None, [POINTER(_SurfaceView)]),
-        "ca_candidate_options_init": (None, [POINTER(_CandidateOptions)]),
+        "ca_surface_view_defaults": (c_int32, [POINTER(_SurfaceView), c_uint32]),
+        "ca_candidate_options_defaults": (c_int32, [POINTER(_CandidateOptions), c_uint32]),
         "ca_candidates": (c_int32, [P, POINTER(_SurfaceView), POINTER(_CandidateOptions), POINTER(P)]),
         "ca_candidate_set_destroy": (None, [P]), "ca_candidate_set_count": (c_size_t, [P]),
-        "ca_select_options_init": (None, [POINTER(_SelectOptions)]),
+        "ca_select_options_defaults": (c_int32, [POINTER(_SelectOptions), c_uint32]),
         "ca_select": (c_int32, [P, P, POINTER(_SelectOptions), POINTER(P)]),
         "ca_selection_destroy": (None, [P]), "ca_selection_stats": (c_int32, [P, POINTER(_SelectStats)]),
-        "ca_connect_options_init": (None, [POINTER(_ConnectOptions)]),
+        "ca_connect_options_defaults": (c_int32, [POINTER(_ConnectOptions), c_uint32]),
         "ca_connect": (c_int32, [P, P, P, POINTER(_ConnectOptions), POINTER(P)]),
         "ca_skeleton_destroy": (None, [P]), "ca_skeleton_vertex_count": (c_size_t, [P]),
         "ca_skeleton_centers": (POINTER(c_double), [P]), "ca_skeleton_radii": (POINTER(c_double), [P]),
         "ca_skeleton_edge_count": (c_size_t, [P]), "ca_skeleton_edges": (POINTER(c_uint32), [P]),
         "ca_skeleton_face_count": (c_size_t, [P]), "ca_skeleton_faces": (POINTER(c_uint32), [P]),
         "ca_skeleton_stats_get": (c_int32, [P, POINTER(_SkeletonStats)]),
-        "ca_skeleton_view_init": (None, [POINTER(_SkeletonView)]),
-        "ca_evaluate_options_init": (None, [POINTER(_EvaluateOptions)]),
+        "ca_skeleton_view_defaults": (c_int32, [POINTER(_SkeletonView), c_uint32]),
+        "ca_evaluate_options_defaults": (c_int32, [POINTER(_EvaluateOptions), c_uint32]),
         "ca_evaluate": (c_int32, [P, POINTER(_SurfaceView), POINTER(_SkeletonView), POINTER(_EvaluateOptions),
                                   POINTER(_Evaluation)]),
     }
@@ -125,6 +126,14 @@ def _load():
 
 
 _lib = _load()
+
+
+def _init(defaults, struct):
+    """Fills a struct with the library's defaults for this binding's layout (its ctypes size)."""
+    status = defaults(ctypes.byref(struct), ctypes.sizeof(struct))
+    if status:
+        raise CoverageAxisError(status, "%s: the library does not accept struct_size %d" %
+                                (type(struct).__name__, ctypes.sizeof(struct)))
 
 
 def version():
@@ -156,7 +165,7 @@ def _surface(vertices, triangles, normals=None):
     pos = (c_double * len(flat))(*flat)
     tri = (c_uint32 * len(tris))(*tris)
     view = _SurfaceView()
-    _lib.ca_surface_view_init(ctypes.byref(view))
+    _init(_lib.ca_surface_view_defaults, view)
     view.positions = pos
     view.vertex_count = len(flat) // 3
     view.triangles = tri
@@ -184,11 +193,11 @@ def skeletonize(vertices, triangles=None, normals=None, delta=0.02, scale=None, 
     """Runs candidates -> selection -> connection. Raises CoverageAxisError on bad input."""
     view, keep = _surface(vertices, triangles, normals)
     co = _CandidateOptions()
-    _lib.ca_candidate_options_init(ctypes.byref(co))
+    _init(_lib.ca_candidate_options_defaults, co)
     co.generator, co.cover_samples, co.voronoi_samples = GENERATORS[generator], cover_samples, voronoi_samples
     co.random_candidates, co.seed = random_candidates, seed
     so = _SelectOptions()
-    _lib.ca_select_options_init(ctypes.byref(so))
+    _init(_lib.ca_select_options_defaults, so)
     if scale is not None:
         so.dilation, so.scale = 1, scale
     else:
@@ -197,7 +206,7 @@ def skeletonize(vertices, triangles=None, normals=None, delta=0.02, scale=None, 
     so.target_count = target_count
     so.effort = EFFORTS[effort]
     cop = _ConnectOptions()
-    _lib.ca_connect_options_init(ctypes.byref(cop))
+    _init(_lib.ca_connect_options_defaults, cop)
     cop.method = CONNECT[connect]
     with _Context() as ctx:
         cset, sel, sk = c_void_p(), c_void_p(), c_void_p()
@@ -237,11 +246,11 @@ def evaluate(vertices, triangles, skeleton, surface_samples=30000, envelope_samp
     c_arr, r_arr = (c_double * len(cflat))(*cflat), (c_double * n)(*skeleton.radii)
     e_arr, f_arr = (c_uint32 * len(eflat))(*eflat), (c_uint32 * len(fflat))(*fflat)
     sv = _SkeletonView()
-    _lib.ca_skeleton_view_init(ctypes.byref(sv))
+    _init(_lib.ca_skeleton_view_defaults, sv)
     sv.centers, sv.radii, sv.vertex_count = c_arr, r_arr, n
     sv.edges, sv.edge_count, sv.faces, sv.face_count = e_arr, len(eflat) // 2, f_arr, len(fflat) // 3
     eo = _EvaluateOptions()
-    _lib.ca_evaluate_options_init(ctypes.byref(eo))
+    _init(_lib.ca_evaluate_options_defaults, eo)
     eo.surface_samples, eo.envelope_samples, eo.seed = surface_samples, envelope_samples, seed
     out = _Evaluation(struct_size=ctypes.sizeof(_Evaluation))
     with _Context() as ctx:

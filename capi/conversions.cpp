@@ -1,0 +1,65 @@
+// conversions.cpp: reading the caller's strided arrays and surface view, writing points back in
+// the caller's units.
+#include "conversions.h"
+#include "struct_size.h"
+
+namespace capi {
+
+using ca::Code;
+using ca::Status;
+using ca::Vec3;
+
+Status null_pointer(const char* what) { return ca::fail(Code::null_pointer, std::string(what) + " is NULL"); }
+
+Status check_stride(size_t stride, size_t min, const char* name, size_t& out) {
+    if (stride != 0 && stride < min)
+        return ca::fail(Code::invalid_argument, std::string(name) + " (" + std::to_string(stride) +
+                                                    " bytes) is smaller than one element (" + std::to_string(min) + " bytes)");
+    out = stride ? stride : min;
+    return Status::success();
+}
+
+Status read_points(const double* base, size_t count, size_t stride, const char* name, std::vector<Vec3>& out) {
+    size_t s;
+    Status st = check_stride(stride, 3 * sizeof(double), name, s);
+    if (!st.ok()) return st;
+    out.resize(count);
+    for (size_t i = 0; i < count; ++i) {
+        const double* p = at(base, s, i);
+        out[i] = Vec3(p[0], p[1], p[2]);
+    }
+    return Status::success();
+}
+
+Status read_surface(const ca_surface_view* in, bool want_normals, ca::Mesh& raw, std::vector<Vec3>& normals) {
+    ca_surface_view surface;
+    Status st = read_input(in, surface);
+    if (!st.ok()) return st;
+    if (surface.vertex_count > 0 && !surface.positions) return null_pointer("surface->positions");
+    if (surface.triangle_count > 0 && !surface.triangles) return null_pointer("surface->triangles");
+    if (surface.vertex_count > UINT32_MAX) return ca::fail(Code::invalid_argument, "more than 2^32 - 1 vertices");
+    st = read_points(surface.positions, surface.vertex_count, surface.position_stride, "surface->position_stride",
+                     raw.vertices);
+    if (!st.ok()) return st;
+    size_t ts;
+    st = check_stride(surface.triangle_stride, 3 * sizeof(uint32_t), "surface->triangle_stride", ts);
+    if (!st.ok()) return st;
+    raw.triangles.resize(surface.triangle_count);
+    for (size_t t = 0; t < surface.triangle_count; ++t) {
+        const uint32_t* f = reinterpret_cast<const uint32_t*>(reinterpret_cast<const char*>(surface.triangles) + t * ts);
+        raw.triangles[t] = {f[0], f[1], f[2]};
+    }
+    if (want_normals && surface.triangle_count == 0 && surface.normals)
+        return read_points(surface.normals, surface.vertex_count, surface.normal_stride, "surface->normal_stride", normals);
+    return Status::success();
+}
+
+void fill(Array<double>& a, const Allocator& al, const std::vector<Vec3>& pts, const ca::Normalization& n) {
+    a.assign(al, 3 * pts.size());
+    for (size_t i = 0; i < pts.size(); ++i) {
+        const Vec3 p = n.to_user(pts[i]);
+        a.data[3 * i] = p.x(); a.data[3 * i + 1] = p.y(); a.data[3 * i + 2] = p.z();
+    }
+}
+
+}  // namespace capi

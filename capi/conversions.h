@@ -1,0 +1,33 @@
+// conversions.h: checks and conversions between the caller's C views (strided arrays, the caller's
+// units) and the core's types (Vec3 arrays in unit-cube units).
+#pragma once
+
+#include "context.h"
+
+#include "surface.h"
+
+#include <vector>
+
+namespace capi {
+
+ca::Status null_pointer(const char* what);
+
+// A byte stride: 0 means packed (min); otherwise at least one element.
+ca::Status check_stride(size_t stride, size_t min, const char* name, size_t& out);
+
+// The i-th element of a strided array of doubles.
+inline const double* at(const double* base, size_t stride, size_t i) {
+    return reinterpret_cast<const double*>(reinterpret_cast<const char*>(base) + i * stride);
+}
+
+// x y z per item from a strided array (values are not checked).
+ca::Status read_points(const double* base, size_t count, size_t stride, const char* name, std::vector<ca::Vec3>& out);
+
+// A surface view into raw arrays (struct size, pointers and strides checked; values are checked
+// by prepare_surface). Normals are read for point clouds when want_normals.
+ca::Status read_surface(const ca_surface_view* surface, bool want_normals, ca::Mesh& raw, std::vector<ca::Vec3>& normals);
+
+// Points in the caller's units, x y z per point, in memory from the result's allocator.
+void fill(Array<double>& a, const Allocator& al, const std::vector<ca::Vec3>& pts, const ca::Normalization& n);
+
+}  // namespace capi

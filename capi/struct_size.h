@@ -1,0 +1,121 @@
+// struct_size.h: the rule that lets the ABI grow. Every public struct starts with struct_size;
+// a call accepts any size this library has published for the struct (sizeof of its layout in
+// ABI 1, 2, ...: fields are only ever appended). Inputs are read up to the caller's size and the
+// rest takes the defaults; outputs are written up to the caller's size only.
+// The layouts of earlier ABI versions are frozen here, so their sizes are what the caller's
+// compiler computed for them on this platform.
+#pragma once
+
+#include "coverage_axis.h"
+
+#include "common.h"
+
+#include <cstddef>
+#include <cstring>
+#include <string>
+
+namespace capi {
+
+// ---- layouts published in ABI 1 (only structs that grew since) ----
+namespace abi1 {
+struct ca_context_desc {
+    uint32_t struct_size;
+    ca_alloc_fn alloc;
+    ca_free_fn free;
+    void* alloc_user;
+    ca_log_fn log;
+    void* log_user;
+    ca_progress_fn progress;
+    void* progress_user;
+    int32_t threads;
+};
+struct ca_select_stats {
+    uint32_t struct_size;
+    int32_t proven_optimal;
+    int32_t solver;
+    double objective, lower_bound, gap, delta_absolute, time_reduce_s, time_solve_s, time_total_s;
+    uint64_t rows_before, cols_before, rows_after, cols_after, forced, components, probes, parts;
+    double scale_used;
+};
+}  // namespace abi1
+
+// Published sizes of each struct, first (ABI 1) to current. A new ABI version appends its size;
+// appended fields must start at or after the previous size (checked below), so a caller's
+// struct_size tells exactly which fields it has.
+template <class T> struct Published;
+#define CA_PUBLISHED(T, ...)                                          \
+    template <> struct Published<T> {                                 \
+        static constexpr const char* name = #T;                       \
+        static constexpr uint32_t sizes[] = {__VA_ARGS__};            \
+    };
+CA_PUBLISHED(ca_context_desc, sizeof(abi1::ca_context_desc), sizeof(ca_context_desc))
+CA_PUBLISHED(ca_surface_view, sizeof(ca_surface_view))
+CA_PUBLISHED(ca_candidate_options, sizeof(ca_candidate_options))
+CA_PUBLISHED(ca_select_options, sizeof(ca_select_options))
+CA_PUBLISHED(ca_select_stats, sizeof(abi1::ca_select_stats), sizeof(ca_select_stats))
+CA_PUBLISHED(ca_connect_options, sizeof(ca_connect_options))
+CA_PUBLISHED(ca_skeleton_stats, sizeof(ca_skeleton_stats))
+CA_PUBLISHED(ca_skeleton_view, sizeof(ca_skeleton_view))
+CA_PUBLISHED(ca_evaluate_options, sizeof(ca_evaluate_options))
+CA_PUBLISHED(ca_evaluation, sizeof(ca_evaluation))
+#undef CA_PUBLISHED
+
+static_assert(offsetof(ca_context_desc, threads) == offsetof(abi1::ca_context_desc, threads) &&
+                  offsetof(ca_context_desc, progress_interval_s) >= sizeof(abi1::ca_context_desc),
+              "ca_context_desc: ABI 1 is a prefix of ABI 2");
+static_assert(offsetof(ca_select_stats, scale_used) == offsetof(abi1::ca_select_stats, scale_used) &&
+                  offsetof(ca_select_stats, time_coverage_s) >= sizeof(abi1::ca_select_stats),
+              "ca_select_stats: ABI 1 is a prefix of ABI 2");
+
+template <class T>
+bool published_size(uint32_t size) {
+    for (uint32_t s : Published<T>::sizes)
+        if (s == size) return true;
+    return false;
+}
+
+// "ca_select_stats.struct_size is 12; this library (ABI 2) accepts 136 (ABI 1) or 160 (ABI 2)"
+std::string struct_size_message(const char* name, uint32_t size, const uint32_t* sizes, size_t count);
+
+template <class T>
+ca::Status check_struct_size(uint32_t size) {
+    if (published_size<T>(size)) return ca::Status::success();
+    constexpr size_t n = sizeof(Published<T>::sizes) / sizeof(uint32_t);
+    return ca::fail(ca::Code::struct_size, struct_size_message(Published<T>::name, size, Published<T>::sizes, n));
+}
+
+// The defaults of T (full current size); defined in defaults.cpp, the one place they live.
+template <class T> T defaults();
+template <> ca_context_desc defaults<ca_context_desc>();
+template <> ca_surface_view defaults<ca_surface_view>();
+template <> ca_candidate_options defaults<ca_candidate_options>();
+template <> ca_select_options defaults<ca_select_options>();
+template <> ca_connect_options defaults<ca_connect_options>();
+template <> ca_skeleton_view defaults<ca_skeleton_view>();
+template <> ca_evaluate_options defaults<ca_evaluate_options>();
+
+// An input struct: NULL means all defaults; otherwise the caller's fields up to its struct_size,
+// the defaults after.
+template <class T>
+ca::Status read_input(const T* in, T& out) {
+    out = defaults<T>();
+    if (!in) return ca::Status::success();
+    ca::Status st = check_struct_size<T>(in->struct_size);
+    if (!st.ok()) return st;
+    std::memcpy(&out, in, in->struct_size);
+    out.struct_size = sizeof(T);
+    return ca::Status::success();
+}
+
+// An output struct: writes value's first out->struct_size bytes, keeping the caller's size.
+template <class T>
+ca::Status write_output(const T& value, T* out) {
+    ca::Status st = check_struct_size<T>(out->struct_size);
+    if (!st.ok()) return st;
+    const uint32_t size = out->struct_size;
+    std::memcpy(out, &value, size);
+    out->struct_size = size;
+    return ca::Status::success();
+}
+
+}  // namespace capi

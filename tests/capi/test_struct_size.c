@@ -1,0 +1,220 @@
+/* test_struct_size.c: the ABI's growth rule, compiled as C99. A caller built against the ABI 1
+ * layouts (declared here as they were published) is accepted and gets the defaults for the
+ * fields it does not have; output structs are written only up to the caller's struct_size (a
+ * canary after a short struct stays intact); sizes the library never published are refused
+ * with CA_ERROR_STRUCT_SIZE and a message; ca_*_defaults writes only the caller's size; a
+ * selection keeps its candidate set alive after the set's handle is destroyed. */
+#include "coverage_axis.h"
+
+#include <stdio.h>
+#include <string.h>
+
+static int failures = 0, checks = 0;
+#define CHECK(cond)                                                                  \
+    do {                                                                             \
+        ++checks;                                                                    \
+        if (!(cond)) {                                                               \
+            ++failures;                                                              \
+            fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond); \
+        }                                                                            \
+    } while (0)
+
+/* ---- the layouts of ABI 1 (ca_context_desc and ca_select_stats grew in ABI 2) ---- */
+typedef struct v1_context_desc {
+    uint32_t struct_size;
+    ca_alloc_fn alloc;
+    ca_free_fn free;
+    void* alloc_user;
+    ca_log_fn log;
+    void* log_user;
+    ca_progress_fn progress;
+    void* progress_user;
+    int32_t threads;
+} v1_context_desc;
+
+typedef struct v1_select_stats {
+    uint32_t struct_size;
+    int32_t proven_optimal;
+    int32_t solver;
+    double objective, lower_bound, gap, delta_absolute, time_reduce_s, time_solve_s, time_total_s;
+    uint64_t rows_before, cols_before, rows_after, cols_after, forced, components, probes, parts;
+    double scale_used;
+} v1_select_stats;
+
+#define CANARY 0xA5
+static int canary_intact(const unsigned char* p, size_t n) {
+    size_t i;
+    for (i = 0; i < n; ++i)
+        if (p[i] != CANARY) return 0;
+    return 1;
+}
+
+/* a 2 x 1 x 1 box, outward-facing */
+static const double box_v[] = {0, 0, 0, 2, 0, 0, 2, 1, 0, 0, 1, 0, 0, 0, 1, 2, 0, 1, 2, 1, 1, 0, 1, 1};
+static const uint32_t box_f[] = {0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
+                                 1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7};
+
+static int progress_calls = 0, progress_rule_broken = 0;
+static char last_stage[64];
+/* Counts the calls and checks the throttle's rule when user is non-NULL: a call is either the
+   first of its stage or has fraction 1. */
+static int32_t count_progress(void* user, const char* stage, double f) {
+    const int new_stage = strcmp(stage, last_stage) != 0;
+    if (user && !new_stage && f < 1) progress_rule_broken = 1;
+    strncpy(last_stage, stage, sizeof last_stage - 1);
+    ++progress_calls;
+    return 0;
+}
+
+/* Runs step 1 on the box with a context made from desc (of any layout); the progress count. */
+static int box_progress_calls(const void* desc) {
+    ca_context* ctx = NULL;
+    ca_candidate_set* set = NULL;
+    ca_surface_view v;
+    ca_candidate_options o;
+    ca_surface_view_init(&v);
+    v.positions = box_v;
+    v.vertex_count = 8;
+    v.triangles = box_f;
+    v.triangle_count = 12;
+    ca_candidate_options_init(&o);
+    o.cover_samples = 300;
+    o.voronoi_samples = 600;
+    progress_calls = 0;
+    last_stage[0] = '\0';
+    if (ca_context_create((const ca_context_desc*)desc, &ctx) != CA_OK) return -1;
+    if (ca_candidates(ctx, &v, &o, &set) != CA_OK) progress_calls = -2;
+    ca_candidate_set_destroy(set);
+    ca_context_destroy(ctx);
+    return progress_calls;
+}
+
+static void test_old_input_struct(void) {
+    /* a v1 desc followed by bytes that would be an invalid progress_interval_s (NaN) if read */
+    struct { v1_context_desc d; unsigned char tail[32]; } old;
+    ca_context_desc now;
+    int calls_v1, calls_v2;
+    CHECK(sizeof(v1_context_desc) < sizeof(ca_context_desc));
+    memset(&old, 0xFF, sizeof old);
+    memset(&old.d, 0, sizeof old.d);
+    old.d.struct_size = (uint32_t)sizeof(v1_context_desc);
+    old.d.progress = count_progress;
+    old.d.threads = 1;
+    calls_v1 = box_progress_calls(&old);
+    CHECK(calls_v1 > 0);
+    /* the same with the current layout and its default interval (every update) */
+    ca_context_desc_init(&now);
+    CHECK(now.struct_size == sizeof now && now.progress_interval_s == 0 && now.threads == 0 && now.progress == NULL);
+    now.progress = count_progress;
+    now.threads = 1;
+    calls_v2 = box_progress_calls(&now);
+    CHECK(calls_v2 == calls_v1);
+    /* a long interval: only a stage's first call and calls with fraction 1 come */
+    now.progress_interval_s = 1e6;
+    now.progress_user = &now;
+    progress_rule_broken = 0;
+    CHECK(box_progress_calls(&now) > 0 && progress_calls <= calls_v2 && !progress_rule_broken);
+    now.progress_interval_s = -1;
+    CHECK(box_progress_calls(&now) == -1);
+}
+
+static void test_defaults_write_only_the_callers_size(void) {
+    struct { v1_context_desc d; unsigned char tail[16]; } old;
+    struct { ca_select_options o; unsigned char tail[16]; } cur;
+    ca_select_options ref;
+    memset(&old, CANARY, sizeof old);
+    CHECK(ca_context_desc_defaults((ca_context_desc*)(void*)&old, (uint32_t)sizeof old.d) == CA_OK);
+    CHECK(old.d.struct_size == sizeof old.d && old.d.threads == 0 && old.d.progress == NULL);
+    CHECK(canary_intact(old.tail, sizeof old.tail));
+    /* unknown sizes: refused, nothing written */
+    memset(&cur, CANARY, sizeof cur);
+    CHECK(ca_select_options_defaults(&cur.o, 4) == CA_ERROR_STRUCT_SIZE);
+    CHECK(ca_select_options_defaults(&cur.o, (uint32_t)sizeof cur.o + 8) == CA_ERROR_STRUCT_SIZE);
+    CHECK(canary_intact((const unsigned char*)&cur, sizeof cur));
+    CHECK(ca_select_options_defaults(NULL, (uint32_t)sizeof cur.o) == CA_ERROR_NULL_POINTER);
+    /* the inline init and the exported defaults agree */
+    CHECK(ca_select_options_defaults(&cur.o, (uint32_t)sizeof cur.o) == CA_OK && canary_intact(cur.tail, sizeof cur.tail));
+    ca_select_options_init(&ref);
+    CHECK(ref.struct_size == sizeof ref && ref.delta == 0.02 && ref.divide_threshold == 100000);
+    CHECK(cur.o.delta == ref.delta && cur.o.scale == ref.scale && cur.o.time_limit_s == ref.time_limit_s &&
+          cur.o.target_tolerance == ref.target_tolerance && cur.o.effort == ref.effort && cur.o.forced_in == NULL);
+}
+
+static void test_sizes_refused(void) {
+    ca_context* ctx = NULL;
+    ca_context_desc d;
+    ca_candidate_set* set = NULL;
+    ca_surface_view v;
+    ca_candidate_options o;
+    ca_context_desc_init(&d);
+    d.struct_size = 4; /* smaller than the first published size */
+    CHECK(ca_context_create(&d, &ctx) == CA_ERROR_STRUCT_SIZE && ctx == NULL);
+    d.struct_size = (uint32_t)sizeof(v1_context_desc) + 4; /* between two published sizes */
+    if (d.struct_size != sizeof d) CHECK(ca_context_create(&d, &ctx) == CA_ERROR_STRUCT_SIZE && ctx == NULL);
+    d.struct_size = (uint32_t)sizeof d + 8; /* a later ABI than this library */
+    CHECK(ca_context_create(&d, &ctx) == CA_ERROR_STRUCT_SIZE && ctx == NULL);
+    CHECK(ca_context_create(NULL, &ctx) == CA_OK);
+    ca_surface_view_init(&v);
+    v.positions = box_v;
+    v.vertex_count = 8;
+    v.triangles = box_f;
+    v.triangle_count = 12;
+    ca_candidate_options_init(&o);
+    o.struct_size = 8;
+    CHECK(ca_candidates(ctx, &v, &o, &set) == CA_ERROR_STRUCT_SIZE && set == NULL);
+    /* the message names the struct, the size given and the sizes accepted */
+    CHECK(strstr(ca_context_last_error(ctx), "ca_candidate_options.struct_size is 8") != NULL);
+    CHECK(strstr(ca_context_last_error(ctx), "accepts") != NULL);
+    ca_context_destroy(ctx);
+}
+
+static void test_old_output_struct_and_lifetimes(void) {
+    ca_context* ctx = NULL;
+    ca_candidate_set* set = NULL;
+    ca_selection* sel = NULL;
+    ca_skeleton* sk = NULL;
+    ca_select_stats full;
+    struct { v1_select_stats s; unsigned char tail[32]; } old;
+    struct { ca_skeleton_stats s; unsigned char tail[16]; } ks;
+    const double samples[] = {0, 0, 0, 1, 0, 0, 2, 0, 0, 3, 0, 0};
+    const double centers[] = {0.5, 0, 0, 2.5, 0, 0};
+    const double radii[] = {0.6, 0.6};
+    CHECK(ca_context_create(NULL, &ctx) == CA_OK);
+    CHECK(ca_candidates_from_arrays(ctx, samples, 4, 0, centers, 0, radii, 0, 2, 1.0, &set) == CA_OK);
+    CHECK(ca_select(ctx, set, NULL, &sel) == CA_OK);
+
+    full.struct_size = sizeof full;
+    CHECK(ca_selection_stats(sel, &full) == CA_OK && full.objective == 2 && full.struct_size == sizeof full);
+    memset(&old, CANARY, sizeof old);
+    old.s.struct_size = (uint32_t)sizeof old.s;
+    CHECK(ca_selection_stats(sel, (ca_select_stats*)(void*)&old) == CA_OK);
+    CHECK(old.s.struct_size == sizeof old.s);
+    CHECK(canary_intact(old.tail, sizeof old.tail));
+    CHECK(old.s.objective == full.objective && old.s.proven_optimal == full.proven_optimal &&
+          old.s.components == full.components && old.s.scale_used == full.scale_used);
+    old.s.struct_size = 8;
+    CHECK(ca_selection_stats(sel, (ca_select_stats*)(void*)&old) == CA_ERROR_STRUCT_SIZE);
+    CHECK(canary_intact(old.tail, sizeof old.tail));
+
+    /* the set's handle goes first: the selection keeps the set alive, connect still works */
+    CHECK(ca_connect(ctx, set, sel, NULL, &sk) == CA_OK);
+    ca_candidate_set_destroy(set);
+    CHECK(ca_selection_count(sel) == 2 && ca_selection_centers(sel)[3] == 2.5);
+    ca_selection_destroy(sel); /* frees the set too (a leak checker would see it otherwise) */
+    CHECK(ca_skeleton_vertex_count(sk) == 2); /* a skeleton outlives both */
+    memset(&ks, CANARY, sizeof ks);
+    ks.s.struct_size = (uint32_t)sizeof ks.s;
+    CHECK(ca_skeleton_stats_get(sk, &ks.s) == CA_OK && ks.s.vertices == 2 && canary_intact(ks.tail, sizeof ks.tail));
+    ca_skeleton_destroy(sk);
+    ca_context_destroy(ctx);
+}
+
+int main(void) {
+    CHECK(ca_abi_version() == 2 && CA_ABI_VERSION == 2);
+    test_old_input_struct();
+    test_defaults_write_only_the_callers_size();
+    test_sizes_refused();
+    test_old_output_struct_and_lifetimes();
+    printf("test_struct_size: %d checks, %d failed\n", checks, failures);
+    return failures ? 1 : 0;
+}
