@@ -23,24 +23,24 @@ const char* kUsage =
     "  -o, --output OUT.ma       write the skeleton as .ma (default: INPUT stem + .ma)\n"
     "  --obj OUT.obj             also write .obj (v, l, f)\n"
     "  --ply OUT.ply             also write .ply (radius property, edge element)\n"
-    "  --delta D                 dilation offset, fraction of the longest bbox side (default 0.02)\n"
+    "  --delta D                 dilation offset, fraction of the longest bbox side (default %DELTA%)\n"
     "  --scale S                 dilation by scaling r' = r * S instead of an offset\n"
-    "  --samples N               surface samples to cover (default 1500)\n"
-    "  --voronoi-samples N       samples for the Voronoi candidates (default 4000)\n"
-    "  --candidates KIND         voronoi (default) | random[:N] (default N 10000) | FILE (v x y z r)\n"
+    "  --samples N               surface samples to cover (default %SAMPLES%)\n"
+    "  --voronoi-samples N       samples for the Voronoi candidates (default %VORONOI%)\n"
+    "  --candidates KIND         voronoi (default) | random[:N] (default N %RANDOM%) | FILE (v x y z r)\n"
     "  --surface-samples FILE    cover these samples (v x y z, input units) instead of sampling\n"
     "  --solver NAME             exact (default) | greedy | capp\n"
     "  --effort NAME             exact solver: fast (default: LP bound + local search, CBC only for a\n"
     "                            one-ball gap on a small kernel) | prove (CBC until proven optimal)\n"
     "  --target-count K          at most K balls, with the smallest delta (or scale) that achieves it\n"
-    "  --divide N                divide and conquer above N surface samples (default 100000; 0 = never)\n"
+    "  --divide N                divide and conquer above N surface samples (default %DIVIDE%; 0 = never)\n"
     "  --connect ROUTE           auto (default: medial for meshes, power for point clouds) | medial | power\n"
     "  --skip-uncoverable        ignore samples no ball covers instead of failing\n"
     "  --ignore-samples FILE     indices (0-based) of samples that need not be covered\n"
     "  --force-in FILE           indices of candidate balls that must be selected\n"
     "  --force-out FILE          indices of candidate balls that must not be selected\n"
-    "  --seed N                  random seed (default 1)\n"
-    "  --time-limit SEC          exact solver budget in seconds (default 60)\n"
+    "  --seed N                  random seed (default %SEED%)\n"
+    "  --time-limit SEC          exact solver budget in seconds (default %TIME%)\n"
     "  --threads N               worker threads (default 0 = all cores)\n"
     "  --export-samples FILE     write the covered surface samples (v x y z)\n"
     "  --export-candidates FILE  write the candidate balls (v x y z r)\n"
@@ -48,16 +48,48 @@ const char* kUsage =
     "  --json                    print one JSON object on stdout\n"
     "  --quiet                   no summary, no progress bar\n";
 
+// The usage text with the library's defaults (from the *_init functions) in place of %NAME%.
+std::string usage_text() {
+    ca_candidate_options co;
+    ca_candidate_options_init(&co);
+    ca_select_options so;
+    ca_select_options_init(&so);
+    auto num = [](double v) { char b[32]; std::snprintf(b, sizeof b, "%g", v); return std::string(b); };
+    const std::pair<const char*, std::string> values[] = {
+        {"%DELTA%", num(so.delta)}, {"%SAMPLES%", num(co.cover_samples)}, {"%VORONOI%", num(co.voronoi_samples)},
+        {"%RANDOM%", num(co.random_candidates)}, {"%DIVIDE%", num(so.divide_threshold)},
+        {"%SEED%", std::to_string(co.seed)}, {"%TIME%", num(so.time_limit_s)}};
+    std::string text = kUsage;
+    for (const auto& [key, value] : values) text.replace(text.find(key), std::strlen(key), value);
+    return text;
+}
+
+// Command-line settings; the defaults are the library's (the *_init functions).
 struct Args {
     std::string input, out_ma, out_obj, out_ply, candidates = "voronoi", surface_samples;
     std::string export_samples, export_candidates, solver = "exact", effort = "fast";
     std::string ignore_samples, force_in, force_out, connect = "auto";
     long target_count = 0;
     long divide = -1;  // -1: the library default
-    double delta = 0.02, scale = 0, time_limit = 60;
-    long samples = 1500, voronoi_samples = 4000, random_count = 10000, threads = 0;
-    unsigned long long seed = 1;
+    double delta, scale = 0, time_limit;
+    long samples, voronoi_samples, random_count, threads;
+    unsigned long long seed;
     bool json = false, quiet = false, skip_uncoverable = false, evaluate = false;
+    Args() {
+        ca_context_desc cd;
+        ca_context_desc_init(&cd);
+        ca_candidate_options co;
+        ca_candidate_options_init(&co);
+        ca_select_options so;
+        ca_select_options_init(&so);
+        delta = so.delta;
+        time_limit = so.time_limit_s;
+        samples = co.cover_samples;
+        voronoi_samples = co.voronoi_samples;
+        random_count = co.random_candidates;
+        seed = co.seed;
+        threads = cd.threads;
+    }
 };
 
 int usage_error(const std::string& msg) {
@@ -86,7 +118,7 @@ int parse_args(int argc, char** argv, Args& a) {
         };
         const char* v = nullptr;
         double d;
-        if (k == "-h" || k == "--help") { std::fputs(kUsage, stdout); return -1; }
+        if (k == "-h" || k == "--help") { std::fputs(usage_text().c_str(), stdout); return -1; }
         else if (k == "--json") a.json = true;
         else if (k == "--evaluate") a.evaluate = true;
         else if (k == "--quiet") a.quiet = true;
