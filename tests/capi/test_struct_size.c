@@ -4,20 +4,10 @@
  * canary after a short struct stays intact); sizes the library never published are refused
  * with CA_ERROR_STRUCT_SIZE and a message; ca_*_defaults writes only the caller's size; a
  * selection keeps its candidate set alive after the set's handle is destroyed. */
-#include "coverage_axis.h"
+#include "capi_check.h"
 
 #include <stdio.h>
 #include <string.h>
-
-static int failures = 0, checks = 0;
-#define CHECK(cond)                                                                  \
-    do {                                                                             \
-        ++checks;                                                                    \
-        if (!(cond)) {                                                               \
-            ++failures;                                                              \
-            fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond); \
-        }                                                                            \
-    } while (0)
 
 /* ---- the layouts of ABI 1 (ca_context_desc and ca_select_stats grew in ABI 2) ---- */
 typedef struct v1_context_desc {
@@ -49,11 +39,6 @@ static int canary_intact(const unsigned char* p, size_t n) {
     return 1;
 }
 
-/* a 2 x 1 x 1 box, outward-facing */
-static const double box_v[] = {0, 0, 0, 2, 0, 0, 2, 1, 0, 0, 1, 0, 0, 0, 1, 2, 0, 1, 2, 1, 1, 0, 1, 1};
-static const uint32_t box_f[] = {0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
-                                 1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7};
-
 static int progress_calls = 0, progress_rule_broken = 0;
 static char last_stage[64];
 /* Counts the calls and checks the throttle's rule when user is non-NULL: a call is either the
@@ -70,13 +55,8 @@ static int32_t count_progress(void* user, const char* stage, double f) {
 static int box_progress_calls(const void* desc) {
     ca_context* ctx = NULL;
     ca_candidate_set* set = NULL;
-    ca_surface_view v;
+    ca_surface_view v = box_view();
     ca_candidate_options o;
-    ca_surface_view_init(&v);
-    v.positions = box_v;
-    v.vertex_count = 8;
-    v.triangles = box_f;
-    v.triangle_count = 12;
     ca_candidate_options_init(&o);
     o.cover_samples = 300;
     o.voronoi_samples = 600;
@@ -144,7 +124,7 @@ static void test_sizes_refused(void) {
     ca_context* ctx = NULL;
     ca_context_desc d;
     ca_candidate_set* set = NULL;
-    ca_surface_view v;
+    ca_surface_view v = box_view();
     ca_candidate_options o;
     ca_context_desc_init(&d);
     d.struct_size = 4; /* smaller than the first published size */
@@ -154,11 +134,6 @@ static void test_sizes_refused(void) {
     d.struct_size = (uint32_t)sizeof d + 8; /* a later ABI than this library */
     CHECK(ca_context_create(&d, &ctx) == CA_ERROR_STRUCT_SIZE && ctx == NULL);
     CHECK(ca_context_create(NULL, &ctx) == CA_OK);
-    ca_surface_view_init(&v);
-    v.positions = box_v;
-    v.vertex_count = 8;
-    v.triangles = box_f;
-    v.triangle_count = 12;
     ca_candidate_options_init(&o);
     o.struct_size = 8;
     CHECK(ca_candidates(ctx, &v, &o, &set) == CA_ERROR_STRUCT_SIZE && set == NULL);
