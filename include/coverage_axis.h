@@ -20,7 +20,8 @@
  *   ca_context_last_error() gives a one-line explanation.
  * - Results are opaque, immutable, and freed with their ca_*_destroy function (never free()).
  *   Zero-copy getters return pointers valid until destroy; results may be read from several
- *   threads at once.
+ *   threads at once. Results outlive their context; a selection keeps its candidate set alive;
+ *   a skeleton holds nothing (docs/abi.md: ownership and lifetimes).
  * - A context must be used by one thread at a time. ca_context_request_cancel() may be called from
  *   any thread. Callbacks run on the calling thread only.
  * - Every struct starts with uint32_t struct_size (the ABI can grow; docs/abi.md):
@@ -197,6 +198,8 @@ CA_API ca_status ca_candidates_from_arrays(ca_context* ctx,
                                            const double* radii, size_t radius_stride,
                                            size_t ball_count, double reference_length,
                                            ca_candidate_set** out);
+/* Releases the caller's handle. Selections made from the set keep it alive (it is freed with the
+   last of them); the handle itself must not be used again. See docs/abi.md. */
 CA_API void ca_candidate_set_destroy(ca_candidate_set* set);
 
 /* Zero-copy getters: x y z per item; valid until destroy. */
