@@ -100,6 +100,21 @@ private:
 namespace detail {
 // The medial-axis route's raw edges and faces (medial_route.cpp); `out.balls` is already set.
 Status connect_medial(const CandidateSet& set, const Selection& sel, int threads, const Monitor& monitor, Skeleton& out);
+// The power-diagram route's raw edges and faces (power_route.cpp); `out.balls` is already set.
+Status connect_power(const CandidateSet& set, const Selection& sel, const Monitor& monitor, Skeleton& out);
+
+// ---- the shared repairs (repairs.cpp), in the order connect_balls applies them ----
+// Removes the triangles, then the edges (with their triangles), that fail the inside test.
+// `failed` gets the faces that failed it themselves (sorted). False if cancelled.
+bool remove_outside(const InsideTest& test, double h, double tol, bool collapse, int threads, const Monitor& monitor,
+                    Skeleton& s, std::vector<Tri>& failed);
+// Fills holes bounded by 3 or 4 edges that pass the inside test. False if cancelled.
+bool fill_small_holes(const InsideTest& test, double h, double tol, int threads, const Monitor& monitor,
+                      const std::vector<Tri>& failed, Skeleton& s);
+// Joins components by the shortest inside segments between their balls.
+void reconnect(const InsideTest& test, double h, double tol, Skeleton& s);
+// Medial route: undoes hole filling that spans one of the loops left after removal.
+void keep_loops(const Skeleton& before, long target, Skeleton& s);
 }  // namespace detail
 
 }  // namespace ca

@@ -1,6 +1,6 @@
 // setcover.cpp: minimum set cover of the samples by the candidate balls (see setcover.h): input
 // checks and the solve driver. The reduction is in reduction.cpp, building blocks in
-// setcover_problem.cpp, the exact machinery in setcover_exact.cpp (setcover_internal.h).
+// setcover_problem.cpp, the exact machinery in lagrangian.cpp, lp_cbc.cpp and row_generation.cpp (setcover_internal.h).
 //
 // Pipeline: input checks -> reduction to a fixpoint (forced balls, degree-1 samples, dominated
 // samples, dominated balls, empty balls; after one complete pass of each dominance test only

@@ -1,7 +1,8 @@
 // setcover_internal.h: what the set-cover files share; not part of the library's interface.
 // The compact problem (rows = samples x columns = balls, stored both ways) with its heuristics
-// and bounds (setcover_problem.cpp), the exact machinery (setcover_exact.cpp: Lagrangian bound,
-// CBC behind the process-wide mutex, row generation), the local search (local_search.cpp),
+// and bounds (setcover_problem.cpp), the exact machinery (lagrangian.cpp: the Lagrangian bound;
+// lp_cbc.cpp: the LP and CBC behind the process-wide mutex; row_generation.cpp), the local
+// search (local_search.cpp),
 // and the reduction of the input and of compact problems (reduction.cpp; the solve driver
 // is setcover.cpp).
 #pragma once
@@ -45,7 +46,7 @@ void fill_rows(Problem& Q);
 Problem restrict_rows(const Problem& K, const std::vector<uint32_t>& rows);
 void add_spread_rows(const Problem& K, std::vector<uint32_t> cand, size_t cap, std::vector<uint32_t>& rows);
 
-// ---- setcover_exact.cpp ----
+// ---- lagrangian.cpp ----
 // ---------------------------------------------------------------------------------------------
 // Lagrangian relaxation of the covering rows (multipliers u >= 0):
 //   L(u) = sum_i u_i + sum_j min(0, c_j(u)),  c_j(u) = 1 - sum_{i in j} u_i,
@@ -70,6 +71,7 @@ Lagrange lagrangian(const Problem& P, std::vector<uint32_t> incumbent, int max_i
 // once ceil(bound) >= |best|; the reduced-cost greedy runs every 8 steps.
 Lagrange volume_ascent(const Problem& P, std::vector<uint32_t> incumbent, int max_iter, Clock::time_point deadline);
 
+// ---- lp_cbc.cpp ----
 // The LP relaxation min 1'x, Ax >= 1, 0 <= x <= 1, solved by Clp's dual simplex (behind the same
 // mutex as CBC). Returns its row duals clamped to >= 0 (empty if Clp failed or ran out of time).
 // The LP optimum equals the best Lagrangian bound; the bound itself is then recomputed from these
@@ -131,6 +133,7 @@ constexpr int kCoreCbcNodes = 30;
 std::vector<uint32_t> core_cover(const Problem& P, const std::vector<double>& cost, size_t incumbent,
                                  double time_limit_s, int threads, const Monitor& monitor);
 
+// ---- row_generation.cpp ----
 // Row generation (lazy covering constraints) on a reduced component K, looking for covers
 // smaller than `target` (the incumbent's size; `best` below, lowered as better covers appear).
 // Loop: take the sub-problem on a row subset R (start: a maximal set of rows pairwise sharing

@@ -1,0 +1,51 @@
+// candidates_internal.h: what the candidate generators share (candidates.cpp drives them); not part
+// of the library's interface.
+#pragma once
+#include "candidates.h"
+
+#include "distance.h"
+#include "parallel.h"
+#include "winding.h"
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace ca {
+namespace cand {
+
+// Independent streams for the different random choices of one seed.
+inline uint64_t stream_seed(uint64_t seed, uint64_t stream) { return seed * 0x9E3779B97F4A7C15ull + stream * 0xD1B54A32D192ED03ull + stream; }
+
+constexpr double kDuplicateTolerance = 1e-7;   // internal units (1e-7 of the longest bbox side)
+
+inline Status cancelled() { return fail(Code::cancelled, "cancelled"); }
+
+// The surface structures (winding numbers, distances, hole caps) are built beside the sampling
+// and the Delaunay step; `structures.wait()` gives them.
+struct SurfaceStructures {
+    std::shared_ptr<const WindingNumber> winding;
+    std::shared_ptr<const MeshDistance> distance;
+    std::unique_ptr<const MeshDistance> cap_distance;   // null when the mesh has no holes
+};
+
+// voronoi.cpp: circumcentres of the Delaunay tetrahedra of pts, de-duplicated, within the (slightly
+// grown) bounding box. `accept(unique, raw, raw_tets, keep)` sees the candidate centres (raw, one
+// per tetrahedron in raw_tets) and fills keep[k] for raw[unique[k]]. The tetrahedra are left in `tets`.
+using AcceptVertices = std::function<Status(const std::vector<uint32_t>& unique, const std::vector<Ball>& raw,
+                                            const std::vector<Tet>& raw_tets, std::vector<uint8_t>& keep)>;
+Status voronoi_vertices(const std::vector<Vec3>& pts, int threads, const Monitor& monitor, const AcceptVertices& accept,
+                        std::vector<Ball>& balls, std::vector<Tet>& tets);
+// voronoi.cpp: the inner Voronoi vertices of dense surface samples of a mesh.
+Status mesh_voronoi_candidates(const CandidateOptions& opt, const Monitor& monitor, Beside& structures,
+                               const SurfaceStructures& built, int threads, CandidateSet& out);
+// random_candidates.cpp: random inner points of the bounding box, with their distances to the surface.
+Status mesh_random_candidates(const CandidateOptions& opt, const Monitor& monitor, Beside& structures,
+                              const SurfaceStructures& built, int threads, CandidateSet& out);
+// point_cloud.cpp: inner Voronoi vertices of an oriented point cloud, isolated ones dropped.
+Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monitor, int threads, CandidateSet& out);
+
+}  // namespace cand
+}  // namespace ca

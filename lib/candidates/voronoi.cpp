@@ -1,0 +1,105 @@
+// voronoi.cpp: Voronoi candidates: the circumcentres of the Delaunay tetrahedra of dense samples,
+// radii clamped to the nearest sample; for meshes those inside by the winding number.
+#include "candidates_internal.h"
+
+#include "delaunay.h"
+#include "kdtree.h"
+#include "sampling.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ca {
+namespace cand {
+
+namespace {
+
+bool in_box(const Vec3& p, const Vec3& lo, const Vec3& hi) {
+    return (p.array() >= lo.array()).all() && (p.array() <= hi.array()).all();
+}
+
+}  // namespace
+
+Status voronoi_vertices(const std::vector<Vec3>& pts, int threads, const Monitor& monitor, const AcceptVertices& accept,
+                        std::vector<Ball>& balls, std::vector<Tet>& tets) {
+    if (!monitor.report("delaunay", 0)) return cancelled();
+    Status st = delaunay_tetrahedra(pts, tets);
+    if (!st.ok()) return st;
+    if (!monitor.report("delaunay", 1)) return cancelled();
+    auto [lo, hi] = bounding_box(pts);
+    const double margin = 1e-3 * (hi - lo).maxCoeff();
+    lo.array() -= margin;
+    hi.array() += margin;
+    std::vector<Ball> raw;
+    std::vector<Tet> raw_tets;
+    raw.reserve(tets.size());
+    for (const Tet& t : tets) {
+        Vec3 c;
+        if (!circumcenter(pts[t[0]], pts[t[1]], pts[t[2]], pts[t[3]], c) || !in_box(c, lo, hi)) continue;
+        raw.push_back({c, (c - pts[t[0]]).norm()});
+        raw_tets.push_back(t);
+    }
+    // A Voronoi ball is empty: its radius is the distance to the nearest sample. Near-flat
+    // tetrahedra (joggled or co-spherical samples) can give circumradii larger than that, i.e.
+    // balls that stick out of the shape; clamp them.
+    PointTree sample_tree(pts);
+    if (!parallel_for(raw.size(), threads, 8192, monitor, "delaunay", [&](size_t begin, size_t end) {
+            for (size_t i = begin; i < end; ++i) {
+                size_t idx;
+                double d2;
+                if (sample_tree.nearest(raw[i].center, 1, &idx, &d2) == 1)
+                    raw[i].radius = std::min(raw[i].radius, std::sqrt(d2));
+            }
+        }))
+        return cancelled();
+    std::vector<Vec3> centers(raw.size());
+    for (size_t i = 0; i < raw.size(); ++i) centers[i] = raw[i].center;
+    // cospherical sample sets give the same Voronoi vertex several times
+    std::vector<uint32_t> unique = remove_near_duplicates(centers, 1e-9);
+    std::vector<uint8_t> keep(unique.size(), 0);
+    st = accept(unique, raw, raw_tets, keep);
+    if (!st.ok()) return st;
+    for (size_t k = 0; k < unique.size(); ++k)
+        if (keep[k]) balls.push_back(raw[unique[k]]);
+    return Status::success();
+}
+
+Status mesh_voronoi_candidates(const CandidateOptions& opt, const Monitor& monitor, Beside& structures,
+                               const SurfaceStructures& built, int threads, CandidateSet& out) {
+    std::vector<Vec3> samples = sample_surface(out.surface.mesh, opt.voronoi_samples, stream_seed(opt.seed, 2));
+    std::vector<Vec3> unique;
+    for (uint32_t i : remove_near_duplicates(samples, kDuplicateTolerance)) unique.push_back(samples[i]);
+    out.dense_samples = unique;
+    // Every tetrahedron's circumcentre is tested (not only the de-duplicated candidates) so the
+    // connection step gets the inner flags of the whole Voronoi diagram; the candidates keep
+    // exactly the flags they had.
+    std::vector<uint8_t> raw_inner;
+    std::vector<Tet> raw_tets_kept;
+    Status st = voronoi_vertices(unique, threads, monitor,
+        [&](const std::vector<uint32_t>& ids, const std::vector<Ball>& raw, const std::vector<Tet>& raw_tets,
+            std::vector<uint8_t>& keep) {
+            raw_inner.assign(raw.size(), 0);
+            structures.wait();
+            const WindingNumber& winding = *built.winding;
+            const bool done = parallel_for(raw.size(), threads, 8192, monitor, "inside", [&](size_t b, size_t e) {
+                for (size_t k = b; k < e; ++k) raw_inner[k] = winding.inside(raw[k].center);
+            });
+            if (!done) return cancelled();
+            for (size_t k = 0; k < ids.size(); ++k) keep[k] = raw_inner[ids[k]];
+            raw_tets_kept = raw_tets;
+            return Status::success();
+        }, out.balls, out.voronoi_tets);
+    if (!st.ok()) return st;
+    // Tetrahedra without a usable circumcentre (flat, or far outside the box) are outer.
+    out.voronoi_inner.assign(out.voronoi_tets.size(), 0);
+    {
+        size_t r = 0;
+        for (size_t t = 0; t < out.voronoi_tets.size() && r < raw_tets_kept.size(); ++t)
+            if (out.voronoi_tets[t] == raw_tets_kept[r]) out.voronoi_inner[t] = raw_inner[r++];
+    }
+    return Status::success();
+}
+
+
+}  // namespace cand
+}  // namespace ca
