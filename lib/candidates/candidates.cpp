@@ -4,20 +4,12 @@
 #include "candidates_internal.h"
 
 #include "sampling.h"
+#include "timing.h"
 
 #include <chrono>
 #include <memory>
 
 namespace ca {
-
-namespace {
-
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) {
-    return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-}  // namespace
 
 using namespace cand;
 

@@ -3,6 +3,7 @@
 #include "candidates_internal.h"
 
 #include "sampling.h"
+#include "rng.h"
 
 #include <algorithm>
 

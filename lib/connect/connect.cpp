@@ -40,8 +40,8 @@ Status connect_balls(const CandidateSet& set, const Selection& sel, const Connec
         const double h = (sel.delta > 0 ? sel.delta : 0.02) / 4;
         const int threads = resolve_threads(opt.threads);
         // Envelope rule (medial route only): the accepted bulge is the dilation delta. On the power
-        // route it cut a real loop of genus-3's thin handles (b1 3 -> 2), so there only the
-        // centre-line rule applies.
+        // route it can cut a real loop through thin handles, so there only the centre-line rule
+        // applies.
         const double tol = opt.method == ConnectMethod::medial ? (sel.delta > 0 ? sel.delta : 0.02) : -1;
         std::vector<Tri> failed;   // faces that failed the removal test
         const long raw_b1 = opt.method == ConnectMethod::medial && opt.fill_holes ? topology(out).betti1 : 0;

@@ -26,7 +26,7 @@
 //    On the medial route the removals are replayed as elementary collapses: a removed triangle
 //    whose removed edges were all used by earlier removed triangles also loses its longest edge
 //    that is on no kept triangle, so removal adds no loop (the medial mesh has the shape's
-//    topology; genus-3 gave b1 = 4 or 5 on some covers).
+//    topology, so such loops would be spurious).
 //    One failing point removes the element (InsideTest, inside_test.cpp: the rule is evaluated
 //    exactly, but most winding-number and distance queries are skipped by a Lipschitz bound and
 //    by surface-free balls on closed meshes). On the medial route (meshes), removal and hole filling also require the
@@ -40,7 +40,7 @@
 //    those pass the same inside test (the power diagram misses triangles where sample cells
 //    come between the balls; a real tunnel cannot be spanned by inside triangles).
 //    On the medial route filling must not span one of the loops left after removal (a triangle
-//    over a thin handle passes when its own balls cover the hole: fertility lost 2 of 4 loops):
+//    over a thin handle passes when its own balls cover the hole, and the loop would be lost):
 //    added triangles are undone, last first, while b1 is below the smaller of its values
 //    before removal and before filling.
 //  * reconnect: if the skeleton has several components, they are joined Kruskal-style by the

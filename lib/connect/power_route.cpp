@@ -8,6 +8,7 @@
 #include "union_find.h"
 #include "parallel.h"
 #include "winding.h"
+#include "rng.h"
 
 #include <algorithm>
 #include <cmath>
@@ -39,7 +40,7 @@ Status connect_power(const CandidateSet& set, const Selection& sel, const Monito
         weights.push_back(sel.dilated_radii[i] * sel.dilated_radii[i]);
     }
     // Samples on a flat part of the surface are coplanar, a massive degeneracy for the 4-D hull
-    // with "Qt" (desk_table: 2.1 s instead of 0.2 s). A seeded jitter of 1e-6 (internal units,
+    // with "Qt" (it makes the hull many times slower). A seeded jitter of 1e-6 (internal units,
     // i.e. a millionth of the model) of their positions breaks it without changing the result.
     Rng rng(0x5eed);
     for (const Vec3& s : samples) {

@@ -56,7 +56,8 @@ bool remove_outside(const InsideTest& test, double h, double tol, bool collapse,
         // homotopy type): each removed triangle, in order, is collapsed through one of its removed
         // edges that no earlier removed triangle used, or else through its longest edge that is on
         // no kept triangle, which is then removed too. The medial mesh has the shape's topology, so
-        // the loops that removal alone would add are spurious (genus-3 gave b1 = 4 or 5 on some covers).
+        // the loops that removal alone would add (a removed triangle leaving its edges as a
+        // cycle) are spurious.
         std::map<std::array<uint32_t, 2>, int> on_faces;
         for (const Tri& f : faces)   // sorted vertices
             ++on_faces[{f[0], f[1]}], ++on_faces[{f[0], f[2]}], ++on_faces[{f[1], f[2]}];
@@ -163,9 +164,9 @@ bool fill_small_holes(const InsideTest& test, double h, double tol, int threads,
 // Joins components by the shortest inside segments between their balls (Kruskal order). With
 // tol >= 0 (medial route) a first pass takes only segments that also pass the envelope rule,
 // so that a component is joined by a longer segment that stays in the shape rather than by the
-// shortest one whose cone bulges out (two-sided Hausdorff at a 5 s cover: bear 3.50 -> 2.94 %,
-// duck 3.17 -> 2.37 %, vase 3.76 -> 2.83 %); the second pass uses the centre-line rule alone. Both passes accept only edges between components, so the
-// components reached and b1 are those of the centre-line rule alone.
+// shortest one whose cone bulges out (which raises the two-sided Hausdorff error); the second
+// pass uses the centre-line rule alone. Both passes accept only edges between components, so
+// the components reached and b1 are those of the centre-line rule alone.
 void reconnect(const InsideTest& test, double h, double tol, Skeleton& s) {
     const uint32_t n = uint32_t(s.balls.size());
     UnionFind uf(n);
@@ -193,11 +194,11 @@ void reconnect(const InsideTest& test, double h, double tol, Skeleton& s) {
 
 // Medial route: the medial mesh has the shape's loops and the collapsing removal keeps them, so
 // hole filling must not span one (a triangle over a thin handle passes the inside test when its
-// own balls cover the handle's hole; fertility lost 2 of its 4 loops). The triangles filling
+// own balls cover the handle's hole, and the loop would be lost). The triangles filling
 // added are undone, last first, while b1 is below `target` and undoing one raises it; then added
 // chords on no triangle are dropped while b1 is above `target` and dropping one lowers it.
 // `target` is the smaller of b1 before removal and before filling: loops that removal added
-// (duck: one, where a removed edge left a cycle) may still be filled.
+// (where a removed edge left a cycle) may still be filled.
 void keep_loops(const Skeleton& before, long target, Skeleton& s) {
     long b1 = topology(s).betti1;
     if (b1 >= target) return;

@@ -1,6 +1,5 @@
 // common.h: the small vocabulary every pipeline step shares: points, meshes, balls, the
-// status a step returns (the core never throws and never prints), cancellation/progress,
-// and a portable seeded random generator (same numbers on every platform for a seed).
+// status a step returns (the core never throws and never prints), and cancellation/progress.
 #pragma once
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -65,33 +64,6 @@ struct Monitor {
         return true;
     }
     bool cancelled() const { return cancel_flag && cancel_flag->load(std::memory_order_relaxed); }
-};
-
-// splitmix64-seeded xoshiro256**: fixed algorithm, so a seed gives the same stream everywhere
-// (std:: distributions are implementation-defined, so they are not used for results).
-class Rng {
-public:
-    explicit Rng(uint64_t seed) {
-        for (auto& s : s_) {
-            seed += 0x9E3779B97F4A7C15ull;
-            uint64_t z = seed;
-            z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-            z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-            s = z ^ (z >> 31);
-        }
-    }
-    uint64_t next() {
-        const uint64_t result = rotl(s_[1] * 5, 7) * 9;
-        const uint64_t t = s_[1] << 17;
-        s_[2] ^= s_[0]; s_[3] ^= s_[1]; s_[1] ^= s_[2]; s_[0] ^= s_[3];
-        s_[2] ^= t; s_[3] = rotl(s_[3], 45);
-        return result;
-    }
-    double uniform() { return double(next() >> 11) * (1.0 / 9007199254740992.0); }  // [0,1)
-    uint64_t below(uint64_t n) { return n ? next() % n : 0; }
-private:
-    static uint64_t rotl(uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
-    uint64_t s_[4];
 };
 
 }  // namespace ca

@@ -49,10 +49,11 @@ void run_workers(size_t workers, Work&& work) {
         if (e) std::rethrow_exception(e);
 }
 
-// Calls body(begin, end) over [0, n) in batches of `batch` items split across `threads`.
-// Returns false if cancelled.
+// Calls body(begin, end) over [0, n) in batches of `batch` items split across `threads`; after
+// each batch reports progress from + (to - from) * done / n of `stage`. Returns false if cancelled.
 template <class Body>
-bool parallel_for(size_t n, int threads, size_t batch, const Monitor& monitor, const char* stage, Body&& body) {
+bool parallel_for(size_t n, int threads, size_t batch, const Monitor& monitor, const char* stage, double from,
+                  double to, Body&& body) {
     threads = std::max(1, threads);
     batch = std::max<size_t>(batch, 1);
     for (size_t start = 0; start < n; start += batch) {
@@ -68,9 +69,15 @@ bool parallel_for(size_t n, int threads, size_t batch, const Monitor& monitor, c
                 if (b < e) body(b, e);
             });
         }
-        if (!monitor.report(stage, double(stop) / double(n))) return false;
+        if (!monitor.report(stage, from + (to - from) * (double(stop) / double(n)))) return false;
     }
     return true;
+}
+
+// The same, reporting the whole of `stage` (0 to 1).
+template <class Body>
+bool parallel_for(size_t n, int threads, size_t batch, const Monitor& monitor, const char* stage, Body&& body) {
+    return parallel_for(n, threads, batch, monitor, stage, 0.0, 1.0, std::forward<Body>(body));
 }
 
 // Runs a task on another thread while the caller goes on; wait() joins it and passes on its

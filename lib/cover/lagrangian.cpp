@@ -90,7 +90,7 @@ std::vector<double> first_multipliers(const Problem& P) {
 }  // namespace
 
 // `incumbent`: a cover of P (ascending). Stops early once ceil(bound) >= |best|.
-Lagrange lagrangian(const Problem& P, std::vector<uint32_t> incumbent, int max_iter, Clock::time_point deadline,
+Lagrange lagrangian(const Problem& P, std::vector<uint32_t> incumbent, int max_iter, const Deadline& deadline,
                     const std::vector<double>* start, double step) {
     Lagrange L;
     L.best = std::move(incumbent);
@@ -126,7 +126,7 @@ Lagrange lagrangian(const Problem& P, std::vector<uint32_t> incumbent, int max_i
             if (h.size() < L.best.size()) L.best.swap(h);
             if (std::ceil(L.bound - 1e-6) >= double(L.best.size())) break;
         }
-        if ((it & 15) == 15 && Clock::now() > deadline) break;
+        if ((it & 15) == 15 && deadline.expired()) break;
         // subgradient g_i = 1 - #selected columns covering i (from the few selected columns)
         std::fill(g.begin(), g.end(), 1.0);
         for (uint32_t c = 0; c < P.C; ++c)
@@ -150,7 +150,7 @@ Lagrange lagrangian(const Problem& P, std::vector<uint32_t> incumbent, int max_i
 // solution; v = 1 - A xbar), the step factor grows after improving steps whose new subgradient
 // agrees with the direction and shrinks after runs without improvement, and the averaging
 // weight's upper limit halves whenever 100 steps raise the bound by less than 1 %.
-Lagrange volume_ascent(const Problem& P, std::vector<uint32_t> incumbent, int max_iter, Clock::time_point deadline) {
+Lagrange volume_ascent(const Problem& P, std::vector<uint32_t> incumbent, int max_iter, const Deadline& deadline) {
     Lagrange L;
     L.best = std::move(incumbent);
     std::vector<double> ubar = first_multipliers(P), u(P.R), cost(P.C), xbar(P.C), v(P.R), w(P.R), g(P.R);
@@ -182,7 +182,7 @@ Lagrange volume_ascent(const Problem& P, std::vector<uint32_t> incumbent, int ma
     int red = 0;  // steps since the last improvement
     for (int it = 0; it < max_iter; ++it) {
         if (std::ceil(L.bound - 1e-6) >= double(L.best.size())) break;
-        if ((it & 15) == 15 && Clock::now() > deadline) break;
+        if ((it & 15) == 15 && deadline.expired()) break;
         double norm = 0;
         for (uint32_t r = 0; r < P.R; ++r) {
             g[r] = (v[r] < 0 && ubar[r] <= 0) ? 0.0 : v[r];  // projected: u stays >= 0

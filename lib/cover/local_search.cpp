@@ -3,10 +3,12 @@
 // for covers one column smaller: drop a column, then swap columns (remove the one whose loss of
 // weighted coverage is smallest, add the best column for a random uncovered row), raising the
 // weight of rows that stay uncovered so that the search leaves local minima. Stops at a step
-// limit, at the lower bound, or when it stalls. Deterministic for a seed (own RNG arithmetic;
+// limit, at the lower bound, or when it stalls. Deterministic for a seed (rng.h's portable splitmix64;
 // the deadline is only a safety stop). SearchRuns: several seeded runs as a pool that threads
 // work through.
 #include "setcover_internal.h"
+
+#include "rng.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -15,32 +17,18 @@ namespace ca {
 namespace sc {
 
 namespace {
-// splitmix64: portable, deterministic
-struct SplitMix {
-    uint64_t s;
-    uint64_t next() {
-        uint64_t z = (s += 0x9e3779b97f4a7c15ull);
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-        return z ^ (z >> 31);
-    }
-};
 // Stall rule: stop once the steps since the last improvement exceed as many steps as the last
 // improvement needed plus a patience proportional to the problem, kStallPerElement swaps per
-// row and column but at least kStallMin (on the paper models' kernels the latest improvement
-// of a single run came ~10 (R + C) swaps past twice the step of the previous one, most come
-// much sooner; the old fixed 100000 swaps cost 0.3-0.5 s on small kernels that cannot
-// improve). 5 since four seeded runs share the work: 10 and 5 gave the same covers on the 24
-// paper models at the defaults (1591 balls in all) and, at a 1 s limit, on bench_select's rows
-// with Voronoi and with 10 000 random candidates (5 one ball better on bear, whose search the
-// limit cut); 3 and 2 lost a ball on bear and desk_table. (20 and 10 had given the same covers
-// on the ten hardest paper kernels.)
+// row and column but at least kStallMin. Improvements come sooner the longer a run has gone,
+// so the patience grows with the problem and with the run's own progress rather than being a
+// fixed count that small kernels would spend in full; several seeded runs share the work, so
+// each can be short. Smaller factors lose balls.
 constexpr uint64_t kStallPerElement = 5;
 constexpr uint64_t kStallMin = 2000;
 }  // namespace
 
 std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start, size_t lower_bound,
-                                   uint64_t max_steps, uint64_t seed, Clock::time_point deadline,
+                                   uint64_t max_steps, uint64_t seed, const Deadline& deadline,
                                    uint64_t* steps, const std::atomic<size_t>* known_bound, SearchRace* race,
                                    uint64_t* found_step) {
     if (steps) *steps = 0;
@@ -80,7 +68,7 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
     std::vector<uint32_t> owner_xor(R, 0);
     std::vector<uint32_t> sel;  // current columns (unordered)
     std::vector<uint32_t> spos(C, UINT32_MAX);
-    SplitMix rng{seed};
+    SplitMix64 rng{seed};
 
     auto uncover = [&](uint32_t r) { upos[r] = uint32_t(uncovered.size()); uncovered.push_back(r); };
     auto recover = [&](uint32_t r) {
@@ -190,7 +178,7 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
         if ((step & 255) == 0) {
             if (known_bound && best.size() <= known_bound->load(std::memory_order_relaxed)) return finish(last_improved);
             if (race && step > race->optimal_step.load(std::memory_order_relaxed)) break;  // cannot win
-            if (Clock::now() > deadline) break;
+            if (deadline.expired()) break;
         }
         if (step > 2 * last_improved + patience) break;  // no progress for a long while
         // swap: drop one, add the best column (configuration allowed) for a random uncovered row
@@ -227,7 +215,7 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
 }
 
 SearchRuns::SearchRuns(const Problem& P, const std::vector<uint32_t>& start, size_t lower_bound, uint64_t max_steps,
-                       uint64_t seed, int starts, Clock::time_point deadline, const std::atomic<size_t>* known_bound)
+                       uint64_t seed, int starts, const Deadline& deadline, const std::atomic<size_t>* known_bound)
     : P_(P), start_(start), lower_bound_(lower_bound), max_steps_(max_steps), seed_(seed), deadline_(deadline),
       known_bound_(known_bound), found_(size_t(std::max(1, starts))), found_at_(found_.size(), 0) {}
 

@@ -108,9 +108,8 @@ std::vector<double> lp_duals_core(const Problem& P, const std::vector<double>& c
     std::lock_guard<std::mutex> lock(coin_mutex());
     const ClpModel model = load_cover_lp(P.R, colstart, rowidx, time_limit_s);
     ClpSimplex* m = model.get();
-    // Primal simplex from the slack basis: on the |S| 30 000 kernels (7 800 rows) the dual
-    // simplex had not finished its first solve after 10 s where the primal took 2.7 s; on the
-    // 1500-sample kernels the primal was as fast or slightly faster.
+    // Primal simplex from the slack basis: on large covering LPs the dual simplex is several
+    // times slower, on small ones the primal is at least as fast.
     m->primal(0);
     std::vector<double> u(P.R);
     // Every round adds at least one column, so at most P.C rounds; in practice 2-5.
@@ -298,9 +297,8 @@ bool no_cover_within(const Problem& K, size_t size, int max_branches, const std:
     });
     if (candidates.size() > size_t(std::max(0, max_branches))) candidates.resize(size_t(std::max(0, max_branches)));
     // The children together get at most as many simplex iterations as the root took (a
-    // deterministic limit): where branching proved, they took 0.23-0.67 of the root's (Ant-12,
-    // fish, bird_dove); on a degenerate kernel (dolphin) single children that proved nothing
-    // took up to 1.2 times the root's, 0.2 s each.
+    // deterministic limit): children that prove take a fraction of the root's, while on
+    // degenerate kernels children that prove nothing can take more than the root.
     int budget = std::max(kMinBranchIterations, root->numberIterations());
     for (uint32_t j : candidates) {
         bool both = true;
@@ -323,13 +321,16 @@ bool no_cover_within(const Problem& K, size_t size, int max_branches, const std:
 }
 
 // Solves the kernel with CBC, looking only for covers smaller than `incumbent` (the best known
-// cover): the cutoff incumbent - 1 + kCutoffSlack prunes at least as much as a MIP start would. A MIP start (Cbc_setMIPStartI) is deliberately not used: in CBC 2.10 its
-// processing ("Reduced search") ignored the time limit and took over a minute on a dense
-// 1500 x 2000 kernel where the cutoff alone gives the same result in seconds.
+// cover): the cutoff incumbent - 1 + kCutoffSlack prunes at least as much as a MIP start would.
+// A MIP start (Cbc_setMIPStartI) is deliberately not used: in CBC 2.10 its processing ("Reduced
+// search") ignores the time limit and can take far longer than the cutoff alone.
 // With `first_solution`, CBC stops at the first cover below the cutoff (not proven optimal).
 namespace {
-CbcOutcome run_cbc_unguarded(const Problem& P, size_t incumbent, double time_limit_s, int threads,
-                             bool first_solution, bool heuristics, int max_nodes, bool lean, bool strong_branching) {
+CbcOutcome run_cbc_unguarded(const Problem& P, size_t incumbent, const CbcSettings& settings) {
+    const double time_limit_s = settings.time_limit_s;
+    const int threads = settings.threads, max_nodes = settings.max_nodes;
+    const bool first_solution = settings.first_solution, heuristics = settings.heuristics, lean = settings.lean,
+               strong_branching = settings.strong_branching;
     CbcOutcome out;
     std::vector<CoinBigIndex> colstart(P.C + 1);
     std::vector<int> rowidx(P.crow.begin(), P.crow.end());
@@ -363,8 +364,8 @@ CbcOutcome run_cbc_unguarded(const Problem& P, size_t incumbent, double time_lim
     // kernels and rarely beat a local-search incumbent.
     if (!heuristics) Cbc_setParameter(m, "heuristicsOnOff", "off");
     if (first_solution) Cbc_setParameter(m, "maxSolutions", "1");
-    // On Ant-12's 228 x 208 kernel (a one-ball gap) CBC took 60 ms with its preprocessing and
-    // cuts, 30 ms without the cuts and 15 ms without either, with the same outcome.
+    // On small kernels with a one-ball gap, preprocessing and cuts cost more than they save and
+    // do not change the outcome.
     if (lean) {
         Cbc_setParameter(m, "preprocess", "off");
         Cbc_setParameter(m, "cuts", "off");
@@ -392,8 +393,8 @@ CbcOutcome run_cbc_unguarded(const Problem& P, size_t incumbent, double time_lim
     }
     // CBC 2.10 reports "finished, linear relaxation infeasible or worse than the cutoff"
     // (status 0, secondary status 1) also when its time limit interrupts the root LP, with the
-    // interrupted LP value (below the cutoff) as bound: seen on a 333 x 605 row-generation
-    // sub-problem with 36 ms left, where it falsely "proved" a 62-ball cover optimal. When CBC
+    // interrupted LP value (below the cutoff) as bound, which would falsely "prove" the
+    // incumbent optimal on a sub-problem with little time left. When CBC
     // used half its time limit or more, such a claim is trusted only with a bound at or above
     // the cutoff (a genuine one can come from preprocessing with a lower LP bound), and its
     // bound is not used.
@@ -413,11 +414,9 @@ CbcOutcome run_cbc_unguarded(const Problem& P, size_t incumbent, double time_lim
 
 // Any exception from CBC other than bad_alloc is a failed solve (ok = false): the callers keep
 // their incumbent.
-CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int threads, bool first_solution,
-                   bool heuristics, int max_nodes, bool lean, bool strong_branching) {
+CbcOutcome run_cbc(const Problem& P, size_t incumbent, const CbcSettings& settings) {
     try {
-        return run_cbc_unguarded(P, incumbent, time_limit_s, threads, first_solution, heuristics, max_nodes, lean,
-                                 strong_branching);
+        return run_cbc_unguarded(P, incumbent, settings);
     } catch (const std::bad_alloc&) {
         throw;
     } catch (...) {
@@ -426,13 +425,11 @@ CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int 
 }
 
 
-// On dolphin's kernel (694 x 1400, LP 32.47) the local search's covers have 34 columns, two or
-// three of them with reduced costs 0.07-1 at the LP duals, while the optimum (33, found by CBC
-// in 6 s) uses only columns of reduced cost 0. Restricted to those (509 x 683 after reduction),
-// CBC without strong branching found 33 within 20 nodes (0.28 s); with strong branching it took
-// 1.8-2.7 s, and on the whole kernel 100 nodes without strong branching found nothing. On the
-// other paper kernels left unproven by the local search and the LP, 30 nodes found nothing, in
-// 0.1-0.8 s each.
+// Why: the local search's covers can contain a few columns of positive reduced cost at the LP
+// duals while an optimum uses only columns of reduced cost 0 (the LP optimal face). Restricted
+// to those, CBC without strong branching finds such a cover within a few nodes, where the whole
+// kernel or strong branching would take far longer; a small node limit keeps the attempt cheap
+// when there is none.
 std::vector<uint32_t> core_cover(const Problem& P, const std::vector<double>& cost, size_t incumbent,
                                  double time_limit_s, int threads, const Monitor& monitor) {
     std::vector<uint32_t> all_rows(P.R);
@@ -446,8 +443,14 @@ std::vector<uint32_t> core_cover(const Problem& P, const std::vector<double>& co
     for (uint32_t c : forced) sel.push_back(Q.col_id[c]);
     if (K.R > 0) {
         if (forced.size() + 1 >= incumbent) return {};  // K needs a column too
-        const CbcOutcome cbc = run_cbc(K, incumbent - forced.size(), time_limit_s, threads, false, false,
-                                       kCoreCbcNodes, true, false);
+        CbcSettings cs;
+        cs.time_limit_s = time_limit_s;
+        cs.threads = threads;
+        cs.heuristics = false;
+        cs.max_nodes = kCoreCbcNodes;
+        cs.lean = true;
+        cs.strong_branching = false;
+        const CbcOutcome cbc = run_cbc(K, incumbent - forced.size(), cs);
         if (!cbc.ok || !cbc.has_solution) return {};
         for (uint32_t c : cbc.solution) sel.push_back(Q.col_id[K.col_id[c]]);
     }

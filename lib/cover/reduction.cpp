@@ -21,7 +21,7 @@
 //    kept balls of its sample with the fewest kept balls; elements are bitsets of their
 //    members (24 words for 1500 samples), so a subset test is a few word operations. A sample's
 //    bit is its label, given in order of first appearance in that pass: a ball's samples then
-//    fall in few words (bear: 6 of 24 instead of 18), which every later bitset test profits from
+//    fall in few words rather than spread over all of them, which every later bitset test profits from
 //    (only the tie between equal samples and the kernel's lists use sample indices);
 //    likewise the kept balls' slots are numbered by their smallest label, which brings the
 //    balls of a sample into few words;

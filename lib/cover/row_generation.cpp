@@ -14,7 +14,7 @@ namespace sc {
 
 constexpr size_t kRowsPerRound = 64;
 
-RowGenOutcome row_generation(const Problem& K, size_t target, Clock::time_point deadline, bool has_deadline,
+RowGenOutcome row_generation(const Problem& K, size_t target, const Deadline& deadline,
                              int threads, const Monitor& monitor) {
     RowGenOutcome out;
     size_t best = target;
@@ -25,11 +25,8 @@ RowGenOutcome row_generation(const Problem& K, size_t target, Clock::time_point 
     std::vector<uint8_t> covered(K.R);
     while (!monitor.cancelled()) {
         if (out.lb >= double(best)) { out.proven = true; break; }
-        double remaining = 0;
-        if (has_deadline) {
-            remaining = std::chrono::duration<double>(deadline - Clock::now()).count();
-            if (remaining <= 0) break;
-        }
+        const double remaining = deadline.limit_s();  // 0 = no limit
+        if (deadline.limited() && remaining <= 0) break;
         ++out.rounds;
         const Problem S = restrict_rows(K, rows);
         std::vector<uint32_t> sforced;  // S-local
@@ -49,7 +46,11 @@ RowGenOutcome row_generation(const Problem& K, size_t target, Clock::time_point 
             if (L.best.size() + sforced.size() < best) {
                 sub = L.best;
             } else {
-                const CbcOutcome cbc = run_cbc(SK, best - sforced.size(), has_deadline ? remaining : 0.0, threads, true);
+                CbcSettings cs;
+                cs.time_limit_s = remaining;
+                cs.threads = threads;
+                cs.first_solution = true;
+                const CbcOutcome cbc = run_cbc(SK, best - sforced.size(), cs);
                 if (!cbc.ok) break;
                 if (std::isfinite(cbc.bound))
                     out.lb = std::max(out.lb, std::min(double(best), double(sforced.size()) + std::ceil(cbc.bound - 1e-6)));

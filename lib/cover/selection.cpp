@@ -2,6 +2,7 @@
 // the plain solve, divide and conquer over spatial parts of the samples, and the bisection on
 // the dilation for a target size.
 #include "selection.h"
+#include "timing.h"
 
 #include <algorithm>
 #include <chrono>
@@ -13,17 +14,7 @@ namespace ca {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-
 double dilate_with(double radius, Dilation d, double value) { return d == Dilation::offset ? radius + value : radius * value; }
-
-// Same inclusion test as build_coverage (distance <= r', with its relative 1e-12 widening).
-bool covered(const Vec3& c, double r, const Vec3& s) {
-    double r2 = r * r * (1.0 + 1e-12);
-    r2 = std::nextafter(r2, std::numeric_limits<double>::infinity());
-    return (c - s).squaredNorm() < r2;
-}
 
 // The coverage for smaller radii, filtered from one built for larger (or equal) radii.
 Coverage shrink_coverage(const Coverage& big, const std::vector<Vec3>& samples, const std::vector<Vec3>& centers,
@@ -35,7 +26,7 @@ Coverage shrink_coverage(const Coverage& big, const std::vector<Vec3>& samples, 
     c.ball_samples.reserve(big.ball_samples.size());
     for (size_t i = 0; i < c.n_balls; ++i) {
         for (uint32_t k = big.ball_ptr[i]; k < big.ball_ptr[i + 1]; ++k)
-            if (covered(centers[i], radii[i], samples[big.ball_samples[k]])) c.ball_samples.push_back(big.ball_samples[k]);
+            if (covers(centers[i], radii[i], samples[big.ball_samples[k]])) c.ball_samples.push_back(big.ball_samples[k]);
         c.ball_ptr[i + 1] = uint32_t(c.ball_samples.size());
     }
     c.build_transpose();
@@ -108,7 +99,6 @@ Status solve_parts(const Coverage& cov, const std::vector<Vec3>& samples, const 
     std::vector<uint32_t> selected, local_of(m, UINT32_MAX), ball_local(n, UINT32_MAX);
     std::vector<Vec3> sub_centers;
     std::vector<double> sub_radii;
-    bool all_proven = true;
     for (const auto& part : parts) {
         if (monitor.cancelled()) return fail(Code::cancelled, "set cover: cancelled");
         // The part's sub-problem: its samples, every ball covering one of them.
@@ -161,9 +151,7 @@ Status solve_parts(const Coverage& cov, const std::vector<Vec3>& samples, const 
         res.forced += pr.forced;
         res.components += pr.components;
         res.cbc_components += pr.cbc_components;
-        all_proven = all_proven && pr.proven_optimal;
     }
-    (void)all_proven;  // parts proven optimal do not make the union optimal
     for (uint32_t a = 0; a < n; ++a)
         if (locked[a]) selected.push_back(a);
     remove_redundant_balls(cov, required, locked, selected);

@@ -174,9 +174,8 @@ bool rules_out(const Problem& P, const Lagrange& D, size_t size, const Monitor& 
 
 // Whether the fast effort's branching step (rules_out) is tried on component P, whose LP bound
 // is lp (ceil: lp_bound): always on small components, and on larger ones when the LP lies
-// within kFastBranchShortfall of lp_bound. Branching on one column raised the LP by 0.07-0.11
-// where it proved (Ant-12, fish, bird_dove); where the LP was 0.5-1 short (chair, cup,
-// desk_table, dolphin, duck) no column did, at 0.27-1.9 s each on kernels of 550-1060 rows.
+// within kFastBranchShortfall of lp_bound: branching on one column raises the LP by a tenth
+// or so, so it can close only a small shortfall, and on large kernels a failed attempt is costly.
 bool worth_branching(const Problem& P, double lp, size_t lp_bound) {
     return P.R <= kFastCbcMaxRows || double(lp_bound) - lp <= kFastBranchShortfall;
 }
@@ -196,15 +195,13 @@ struct ComponentResult {
 // its seed.
 constexpr uint64_t kLocalSearchSteps = 1000000;
 constexpr uint64_t kLocalSearchSeed = 3;
-// Independent local-search runs (seeds kLocalSearchSeed, +1, ...): single runs with seeds 1-11
-// differed by 1-2 balls on cup, desk_table and bird_penguin.
+// Independent local-search runs (seeds kLocalSearchSeed, +1, ...): a single run's result
+// depends on its seed by a ball or two, the best of several much less.
 constexpr int kLocalSearchStarts = 4;
-// Components of at most kSmallSearchRows rows get kSmallSearchStarts runs: on such kernels two
-// runs gave the same cover sizes and proofs as four (bench_select at a 1 s limit, all 57 rows;
-// other covers of the same size on plane, spider and dog_sub_fox) for half the search time
-// (Ant-12: 327 rows, its selection ~10 ms faster). Components too large for CBC (below) get
-// kSmallSearchStarts runs too: a run takes 2-8 s there, and on the |S| 30 000 kernels of bunny
-// and fertility the first two of four runs already gave the best covers (92 and 85 balls).
+// Components of at most kSmallSearchRows rows get kSmallSearchStarts runs: on small kernels two
+// runs find covers as small as four for half the search time. Components too large for CBC
+// (below) get kSmallSearchStarts runs too: there a run is long, and the first runs already give
+// the best covers.
 constexpr uint32_t kSmallSearchRows = 400;
 constexpr int kSmallSearchStarts = 2;
 
@@ -218,7 +215,7 @@ constexpr int kSubgradientWarmup = 150;
 // Volume steps before the LP on larger components.
 constexpr int kVolumeSteps = 1000;
 
-ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bool has_deadline, int threads,
+ComponentResult solve_component(const Problem& P, const Deadline& deadline, int threads,
                                 bool row_gen, Effort effort, int search_threads, const Monitor& monitor) {
     ComponentResult out;
     out.sel = greedy_cover(P);
@@ -230,15 +227,12 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
     };
     if (done()) return out;
     // The subgradient phase gets at most a quarter of what is left of the budget.
-    Clock::time_point lag_deadline = deadline;
-    if (has_deadline) lag_deadline = Clock::now() + (deadline - Clock::now()) / 4;
-    // Before the LP only a warm-up (its covers and reduced costs seed the core LP and the local
-    // search: 1000 steps cost 0.1-0.3 s more and changed no result on the paper models once the
-    // local search runs from several seeds; 50 steps gave a poorer core, a slower LP and cup one
-    // ball more). Components too large for CBC get the volume ascent instead: its bound may have
-    // to stand alone, and its sparse multipliers start the LP by row generation. (On the
-    // 1500-sample kernels the volume start gave other search starts, bunny one ball more, and
-    // no faster LP beside the search.)
+    const Deadline lag_deadline = deadline.share(0.25);
+    // Before the LP only a warm-up: its covers and reduced costs seed the core LP and the local
+    // search, and the LP gives the bound; more steps cost time without changing results once the
+    // local search runs from several seeds, far fewer give a poorer core. Components too large
+    // for CBC get the volume ascent instead: its bound may have to stand alone, and its sparse
+    // multipliers start the LP by row generation.
     const bool large = P.R > kWholeCbcMaxRows;
     Lagrange L = large ? volume_ascent(P, out.sel, kVolumeSteps, lag_deadline)
                        : lagrangian(P, out.sel, kSubgradientWarmup, lag_deadline);
@@ -251,10 +245,8 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
     // run side by side. Neither depends on the other's result, so the outcome is the same on one
     // thread or several; the LP's bound, once known, only lets the search stop earlier, and the
     // runs do not depend on which thread takes them or when (SearchRuns).
-    double lp_limit = 0;
-    if (has_deadline) lp_limit = std::max(1e-3, std::chrono::duration<double>(deadline - Clock::now()).count() / 4);
-    Clock::time_point ls_deadline = deadline;
-    if (has_deadline) ls_deadline = Clock::now() + (deadline - Clock::now()) / 4;
+    const double lp_limit = deadline.limited() ? std::max(1e-3, deadline.remaining() / 4) : 0.0;
+    const Deadline ls_deadline = deadline.share(0.25);
     std::atomic<size_t> known_bound{size_t(out.lb)};
     Lagrange D;
     bool have_duals = false;
@@ -267,16 +259,15 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
             large ? lp_duals_rows(P, L.u, L.cost, lp_limit) : lp_duals_core(P, L.cost, lp_limit);
         if (duals.empty()) return;
         // bound and costs at the duals, then a few small steps around them for the reduced-cost
-        // greedy (10 steps instead of 200 gave the same covers on the 24 paper models and the same
-        // sizes and proofs on bench_select's 1500-sample rows; bear's 200 steps took 37 ms)
+        // greedy (near the LP optimum more steps find no better covers)
         D = lagrangian(P, L.best, kDualSteps, deadline, &duals, 0.05);
         have_duals = true;
         const size_t lp_bound = size_t(std::max(0.0, std::ceil(D.bound - 1e-6)));
         known_bound.store(std::max(known_bound.load(), lp_bound));
         // Both efforts (see worth_branching): try to show that no cover has lp_bound columns (one
         // more ball of bound, often the proof the search's cover needs, without CBC; in the prove
-        // effort it keeps the bound when CBC's own stays below it: bird_dove 60, not CBC's 59 after
-        // 5 s). It gives up once a search run finds a cover that small, which would make it fail
+        // effort it keeps the bound when CBC's own stays below it). It gives up once a search run
+        // finds a cover that small, which would make it fail
         // anyway, so the outcome does not depend on timing.
         if (worth_branching(P, D.bound, lp_bound) && lp_bound < start.size() &&
             rules_out(P, D, lp_bound, monitor, [&]() { return runs.reached_bound(); })) {
@@ -287,9 +278,8 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
     const int search_workers = std::min(resolve_threads(search_threads), starts);
     if (search_workers > 1) {
         // One search run per thread, and the LP's thread takes the runs still waiting once its
-        // LP is solved (when every run had its own thread beside the LP, the LP got less than
-        // half a core on two: bear's LP took 145 ms instead of ~70). Without a thread for the
-        // LP it runs here first: the same result.
+        // LP is solved, so the LP keeps a core of its own. Without a thread for the LP it runs
+        // here first: the same result.
         Beside lp([&]() {
             lp_phase();
             runs.work();
@@ -313,13 +303,12 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
     out.sel = searched.size() <= L.best.size() ? searched : L.best;
     out.lb = std::max({out.lb, std::ceil(L.bound - 1e-6), double(branched_bound)});
     if (done() || monitor.cancelled()) return out;
-    // Prove effort: a short search on the LP optimal face first (core_cover), for a smaller
-    // incumbent (dolphin: 38 -> 37, the LP bound: proven in 0.5-0.9 s instead of not within 5 s).
-    // Not in the fast effort: 0.1-0.8 s on each of the other unproven paper kernels, for nothing.
+    // Prove effort: a short search on the LP optimal face first (core_cover): a smaller incumbent
+    // there often equals the LP bound, which proves it at once. Not in the fast effort: on most
+    // kernels it finds nothing, and its time would be spent for nothing.
     if (effort == Effort::prove && lp_ok && !large) {
-        double limit = 0;
-        if (has_deadline) limit = std::chrono::duration<double>(deadline - Clock::now()).count() / 4;
-        if (!has_deadline || limit > 0) {
+        const double limit = deadline.limit_s() / 4;
+        if (!deadline.limited() || limit > 0) {
             std::vector<uint32_t> smaller = core_cover(P, L.cost, out.sel.size(), limit, threads, monitor);
             if (!smaller.empty()) out.sel = std::move(smaller);
             if (done() || monitor.cancelled()) return out;
@@ -348,11 +337,8 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
     // Fast effort: CBC only for a one-ball gap on a small kernel, with a node limit.
     const bool fast = effort == Effort::fast;
     if (fast && (double(inc) - out.lb > 1.0 || K.R > kFastCbcMaxRows)) return out;
-    double remaining = 0;
-    if (has_deadline) {
-        remaining = std::chrono::duration<double>(deadline - Clock::now()).count();
-        if (remaining <= 0) return out;
-    }
+    double remaining = deadline.limit_s();  // 0 = no limit
+    if (deadline.limited() && remaining <= 0) return out;
     out.used_cbc = true;
     // Covers of K smaller than kbest are sought; klb is a lower bound on K's optimum.
     size_t kbest = inc - qforced.size();
@@ -364,6 +350,13 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
         std::sort(out.sel.begin(), out.sel.end());
         kbest = ksol.size();
     };
+    // Every cover below the old incumbent lies in K (+ forced): the optimum is at least
+    // min(|sel|, forced + klb).
+    auto finish = [&]() {
+        out.lb = std::max(out.lb, std::min(double(out.sel.size()), double(qforced.size()) + klb));
+        done();
+        return out;
+    };
     // CBC's root LP ignores its time limit; on a component whose LP Clp could not solve within
     // its share, or one with more than kWholeCbcMaxRows rows, CBC never gets the whole of it:
     // row generation (small sub-problems) keeps the budget.
@@ -371,49 +364,32 @@ ComponentResult solve_component(const Problem& P, Clock::time_point deadline, bo
     if (!fast && (row_gen || !whole_cbc)) {
         // Row generation first, with part of the budget; if it does not finish, one CBC solve
         // of the whole of K takes over with its incumbent.
-        Clock::time_point rg_deadline = deadline;
-        if (has_deadline && whole_cbc)
-            rg_deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>((deadline - Clock::now()) * kRowGenShare);
-        const RowGenOutcome rg = row_generation(K, kbest, rg_deadline, has_deadline, threads, monitor);
+        const Deadline rg_deadline = whole_cbc ? deadline.share(kRowGenShare) : deadline;
+        const RowGenOutcome rg = row_generation(K, kbest, rg_deadline, threads, monitor);
         out.rowgen_rounds = rg.rounds;
         if (!rg.sel.empty()) take(rg.sel);
         klb = rg.lb;
         if (rg.proven) klb = double(kbest);
-        if (klb >= double(kbest) || monitor.cancelled()) {
-            // every cover below the old incumbent lies in K (+ forced)
-            out.lb = std::max(out.lb, std::min(double(out.sel.size()), double(qforced.size()) + klb));
-            done();
-            return out;
-        }
-        if (!whole_cbc) {
-            out.lb = std::max(out.lb, std::min(double(out.sel.size()), double(qforced.size()) + klb));
-            done();
-            return out;
-        }
-        if (has_deadline) {
-            remaining = std::chrono::duration<double>(deadline - Clock::now()).count();
-            if (remaining <= 0) {
-                out.lb = std::max(out.lb, std::min(double(out.sel.size()), double(qforced.size()) + klb));
-                done();
-                return out;
-            }
-        }
+        if (klb >= double(kbest) || monitor.cancelled() || !whole_cbc) return finish();
+        remaining = deadline.limit_s();
+        if (deadline.limited() && remaining <= 0) return finish();
     }
     // not ok: CBC failed, the incumbent stays
-    const CbcOutcome cbc =
-        run_cbc(K, kbest, has_deadline ? remaining : 0.0, threads, false, false, fast ? kFastCbcNodes : 0, fast);
+    CbcSettings cs;
+    cs.time_limit_s = remaining;
+    cs.threads = threads;
+    cs.heuristics = false;
+    cs.max_nodes = fast ? kFastCbcNodes : 0;
+    cs.lean = fast;
+    const CbcOutcome cbc = run_cbc(K, kbest, cs);
     if (cbc.ok && cbc.has_solution) take(cbc.solution);
-    const double obj = double(out.sel.size());
     if (cbc.ok && cbc.proven) {
-        out.lb = obj;
+        out.lb = double(out.sel.size());
         out.proven = true;
-    } else {
-        if (cbc.ok && std::isfinite(cbc.bound)) klb = std::max(klb, std::ceil(cbc.bound - 1e-6));
-        // every cover below the old incumbent lies in K (+ forced): optimum >= min(obj, forced + klb)
-        out.lb = std::max(out.lb, std::min(obj, double(qforced.size()) + klb));
+        return out;
     }
-    done();
-    return out;
+    if (cbc.ok && std::isfinite(cbc.bound)) klb = std::max(klb, std::ceil(cbc.bound - 1e-6));
+    return finish();
 }
 
 Status solve_impl(const Coverage& cov, const CoverOptions& opt, bool skip_uncoverable, const Monitor& monitor,
@@ -430,7 +406,7 @@ Status solve_impl(const Coverage& cov, const CoverOptions& opt, bool skip_uncove
             return fail(Code::invalid_argument, "set cover: the capp solver needs centers and radii for every ball");
         for (size_t a = 0; a < n; ++a) {
             const Vec3& c = (*opt.centers)[a];
-            if (!std::isfinite(c.x()) || !std::isfinite(c.y()) || !std::isfinite(c.z()) ||
+            if (!c.allFinite() ||
                 !std::isfinite((*opt.radii)[a]))
                 return fail(Code::invalid_input, "set cover: non-finite ball centre or radius");
         }
@@ -463,16 +439,13 @@ Status solve_impl(const Coverage& cov, const CoverOptions& opt, bool skip_uncove
         remove_redundant(P.cptr, P.crow, P.R, nullptr, nullptr, ksel);
     } else {
         if (opt.solver == Solver::exact) {
-            const bool has_deadline = opt.time_limit_s > 0 && std::isfinite(opt.time_limit_s);
-            const auto deadline = has_deadline ? t0 + std::chrono::duration_cast<Clock::duration>(
-                                                          std::chrono::duration<double>(opt.time_limit_s))
-                                               : Clock::time_point::max();
+            const Deadline deadline = Deadline::after(opt.time_limit_s, t0);
             proven = true;
             klb = 0;
             for (const Problem& Q : split_components(P)) {
                 if (monitor.cancelled()) return fail(Code::cancelled, "set cover: cancelled");
                 const ComponentResult cr =
-                    solve_component(Q, deadline, has_deadline, opt.threads, opt.row_generation, opt.effort,
+                    solve_component(Q, deadline, opt.threads, opt.row_generation, opt.effort,
                                     opt.search_threads, monitor);
                 for (uint32_t c : cr.sel) ksel.push_back(Q.col_id[c]);
                 klb += cr.lb;

@@ -7,6 +7,7 @@
 // is setcover.cpp).
 #pragma once
 #include "setcover.h"
+#include "timing.h"
 
 #include <atomic>
 #include <chrono>
@@ -15,10 +16,6 @@
 namespace ca {
 namespace sc {
 
-using Clock = std::chrono::steady_clock;
-inline double seconds_since(Clock::time_point t0) {
-    return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 // A compact set-cover problem: R rows (samples) x C columns (balls), every row coverable.
 struct Problem {
@@ -60,16 +57,15 @@ struct Lagrange {
 };
 // `start`: initial multipliers (size R), or null for the usual 1/(max column size) start;
 // `step`: the initial step factor (halved on stalls).
-Lagrange lagrangian(const Problem& P, std::vector<uint32_t> incumbent, int max_iter, Clock::time_point deadline,
+Lagrange lagrangian(const Problem& P, std::vector<uint32_t> incumbent, int max_iter, const Deadline& deadline,
                     const std::vector<double>* start = nullptr, double step = 2.0);
 
 // The volume algorithm (Barahona & Anbil 2000) for the same bound: subgradient steps along the
 // subgradient of a running average of the Lagrangian solutions. Its multipliers come much closer
-// to the LP's than the subgradient method's, which stalls, and most of them are 0: on
-// fertility's |S| 30 000 kernel (11 284 rows) 1000 steps reached 79.27 with 2158 rows positive,
-// against 75.27 for 1000 subgradient steps and the LP's 80.56. Stops after max_iter steps, at the deadline, or
-// once ceil(bound) >= |best|; the reduced-cost greedy runs every 8 steps.
-Lagrange volume_ascent(const Problem& P, std::vector<uint32_t> incumbent, int max_iter, Clock::time_point deadline);
+// to the LP's than the subgradient method's, which stalls, and most of them are 0 (a sparse
+// start for the LP by row generation). Stops after max_iter steps, at the deadline, or once
+// ceil(bound) >= |best|; the reduced-cost greedy runs every 8 steps.
+Lagrange volume_ascent(const Problem& P, std::vector<uint32_t> incumbent, int max_iter, const Deadline& deadline);
 
 // ---- lp_cbc.cpp ----
 // The LP relaxation min 1'x, Ax >= 1, 0 <= x <= 1, solved by Clp's dual simplex (behind the same
@@ -81,17 +77,15 @@ std::vector<double> lp_duals(const Problem& P, double time_limit_s);
 // subgradient's multipliers, a few per row at least): the core LP is solved, every other
 // column is priced at its duals and those with a negative reduced cost join it (primal simplex
 // from the current basis) until none is left, so the duals are optimal for the whole of P.
-// 1.3-3x faster than the whole LP on the paper kernels (Clp time, five of them). Empty on failure, like lp_duals.
+// Faster than the whole LP, since most columns never enter. Empty on failure, like lp_duals.
 std::vector<double> lp_duals_core(const Problem& P, const std::vector<double>& cost, double time_limit_s);
 
 // The same LP by row and column generation, for near-optimal multipliers u0 with most rows at 0
 // (volume_ascent's) and their reduced costs: the LP starts with the rows of positive u0 and a
 // core of cheap columns; columns that its duals price below zero join (primal simplex), then
 // rows that its solution leaves uncovered (dual simplex), until neither is left, so the duals
-// are optimal for the whole of P. In the solver, beside the local search on 2 cores, it solved
-// the LPs of the |S| 30 000 kernels of bunny (7798 rows) and fertility (11 284) in 1.1-1.4 s and
-// 7.7-9.1 s; lp_duals_core from the subgradient's costs took 7.0-7.6 s on bunny and had not
-// solved fertility's after 14 s. Empty on failure, like lp_duals.
+// are optimal for the whole of P. For large kernels, where most rows never bind and the whole
+// LP (even by column generation) is too slow. Empty on failure, like lp_duals.
 std::vector<double> lp_duals_rows(const Problem& P, const std::vector<double>& u0, const std::vector<double>& cost,
                                   double time_limit_s);
 
@@ -100,8 +94,8 @@ std::vector<double> lp_duals_rows(const Problem& P, const std::vector<double>& u
 // column in); proven when the root's bound or both branches' bounds exceed `size`. Every bound is
 // L(u) recomputed from Clp's duals on the branch's own problem, so a claim is valid whatever the
 // LP's tolerances. Gives up (false) as soon as `stop()` is true, or once the branches have
-// taken as many simplex iterations as the root LP (a deterministic limit). On Ant-12's 228 x 208 kernel the first
-// column proved it in 9 ms (standalone), where the node-limited CBC took 14 ms.
+// taken as many simplex iterations as the root LP (a deterministic limit). Cheaper than a
+// node-limited CBC search for a one-ball gap on a small kernel.
 bool no_cover_within(const Problem& K, size_t size, int max_branches, const std::function<bool()>& stop = {});
 
 struct CbcOutcome {
@@ -111,17 +105,24 @@ struct CbcOutcome {
     double bound = -std::numeric_limits<double>::infinity();  // valid for solutions below the cutoff
     std::vector<uint32_t> solution;  // columns, ascending
 };
-// Looks for covers smaller than `incumbent` (cutoff incumbent - 1 + kCutoffSlack); with
-// `first_solution` stops at the first one; `heuristics` = CBC's own primal heuristics.
-constexpr double kCutoffSlack = 1e-3;
-// `max_nodes` > 0: CBC's branch-and-bound node limit (deterministic, unlike the time limit).
-// `lean`: no preprocessing and no cut generation, for short node-limited proofs on small
-// kernels, where they cost more than the branching they save.
-// `strong_branching` false: no strong branching and no pseudo-cost trust (CBC's "strong 0",
-// "trust 0"), for a quick search for covers rather than a proof.
+// How CBC searches (run_cbc).
+struct CbcSettings {
+    double time_limit_s = 0;      // wall-clock limit; 0 = none
+    int threads = 1;
+    bool first_solution = false;  // stop at the first cover below the cutoff (not proven optimal)
+    bool heuristics = true;       // CBC's own primal heuristics
+    int max_nodes = 0;            // > 0: branch-and-bound node limit (deterministic, unlike the time limit)
+    // No preprocessing and no cut generation, for short node-limited proofs on small kernels,
+    // where they cost more than the branching they save.
+    bool lean = false;
+    // false: no strong branching and no pseudo-cost trust (CBC's "strong 0", "trust 0"), for a
+    // quick search for covers rather than a proof.
+    bool strong_branching = true;
+};
+// Looks for covers smaller than `incumbent` (cutoff incumbent - 1 + kCutoffSlack).
 // Exceptions from CBC other than std::bad_alloc give ok = false.
-CbcOutcome run_cbc(const Problem& P, size_t incumbent, double time_limit_s, int threads, bool first_solution = false,
-                   bool heuristics = true, int max_nodes = 0, bool lean = false, bool strong_branching = true);
+constexpr double kCutoffSlack = 1e-3;
+CbcOutcome run_cbc(const Problem& P, size_t incumbent, const CbcSettings& settings);
 
 // A cover of P smaller than `incumbent` among the columns of P's LP optimal face: those whose
 // reduced cost at the LP duals (`cost`) is below kCoreMaxCost, and each row's cheapest column.
@@ -154,7 +155,7 @@ struct RowGenOutcome {
 };
 // Share of the remaining budget given to row generation before CBC takes the whole component.
 constexpr double kRowGenShare = 0.25;
-RowGenOutcome row_generation(const Problem& K, size_t target, Clock::time_point deadline, bool has_deadline,
+RowGenOutcome row_generation(const Problem& K, size_t target, const Deadline& deadline,
                              int threads, const Monitor& monitor);
 
 // ---- local_search.cpp ----
@@ -177,7 +178,7 @@ struct SearchRace {
     std::atomic<uint64_t> optimal_step{UINT64_MAX};
 };
 std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start, size_t lower_bound,
-                                   uint64_t max_steps, uint64_t seed, Clock::time_point deadline,
+                                   uint64_t max_steps, uint64_t seed, const Deadline& deadline,
                                    uint64_t* steps = nullptr, const std::atomic<size_t>* known_bound = nullptr,
                                    SearchRace* race = nullptr, uint64_t* found_step = nullptr);
 
@@ -191,7 +192,7 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
 class SearchRuns {
 public:
     SearchRuns(const Problem& P, const std::vector<uint32_t>& start, size_t lower_bound, uint64_t max_steps,
-               uint64_t seed, int starts, Clock::time_point deadline, const std::atomic<size_t>* known_bound);
+               uint64_t seed, int starts, const Deadline& deadline, const std::atomic<size_t>* known_bound);
     void work();
     std::vector<uint32_t> best() const;
     // A run has reached the lower bound or the known bound (a cover that small exists).
@@ -202,7 +203,7 @@ private:
     const std::vector<uint32_t>& start_;
     size_t lower_bound_;
     uint64_t max_steps_, seed_;
-    Clock::time_point deadline_;
+    Deadline deadline_;
     const std::atomic<size_t>* known_bound_;
     SearchRace race_;
     std::atomic<size_t> next_{0};

@@ -3,6 +3,7 @@
 // drawn from (envelope.cpp); shared by the evaluation files, not part of the library's interface.
 #pragma once
 #include "evaluate.h"
+#include "rng.h"
 
 #include <cmath>
 #include <limits>

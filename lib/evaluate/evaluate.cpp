@@ -5,18 +5,19 @@
 #include "envelope.h"
 
 #include "distance.h"
+#include "kdtree.h"
+#include "parallel.h"
+#include "rng.h"
+#include "sampling.h"
 
 #include <Eigen/Geometry>
-#include <nanoflann.hpp>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <exception>
 #include <limits>
 #include <memory>
 #include <new>
-#include <thread>
 
 namespace ca {
 
@@ -24,97 +25,8 @@ using namespace eval;
 
 namespace {
 
-// ---------------------------------------------------------------------------------------------
-// Deterministic parallel loop: chunks are handed out dynamically, but every index writes only
-// its own output, so results do not depend on the scheduling. The caller's thread reports
-// progress between its chunks (Monitor::report must run on the caller's thread).
-// ---------------------------------------------------------------------------------------------
-
-template <class Fn>
-bool parallel_for(size_t n, int32_t threads, const Monitor& monitor, double f0, double f1, Fn&& fn,
-                  bool& failed) {
-    const size_t chunk = 512;
-    const size_t nchunks = (n + chunk - 1) / chunk;
-    std::atomic<size_t> next{0}, done{0};
-    std::atomic<bool> stop{false}, error{false};
-    auto run_chunk = [&](size_t c) {
-        const size_t b = c * chunk, e = std::min(n, b + chunk);
-        try {
-            for (size_t i = b; i < e; ++i) fn(i);
-        } catch (...) {
-            error = true;
-            stop = true;
-        }
-        ++done;
-    };
-    auto worker = [&] {
-        while (!stop.load(std::memory_order_relaxed)) {
-            if (monitor.cancelled()) { stop = true; break; }
-            const size_t c = next++;
-            if (c >= nchunks) break;
-            run_chunk(c);
-        }
-    };
-    unsigned hw = std::thread::hardware_concurrency();
-    size_t nthreads = threads > 0 ? size_t(threads) : std::min<size_t>(hw == 0 ? 1 : hw, 8);
-    nthreads = std::min(nthreads, std::max<size_t>(nchunks, 1));
-    std::vector<std::thread> pool;
-    for (size_t t = 1; t < nthreads; ++t) {
-        try {
-            pool.emplace_back(worker);
-        } catch (...) {
-            break;   // fewer threads: still correct
-        }
-    }
-    bool cancelled = false;
-    while (!stop.load(std::memory_order_relaxed)) {
-        const size_t c = next++;
-        if (c >= nchunks) break;
-        run_chunk(c);
-        const double frac = nchunks ? double(done.load()) / double(nchunks) : 1.0;
-        if (!monitor.report("evaluate", f0 + (f1 - f0) * frac)) {
-            cancelled = true;
-            stop = true;
-        }
-    }
-    for (auto& t : pool) t.join();
-    if (error) failed = true;
-    if (monitor.cancelled()) cancelled = true;
-    return !cancelled && !error;
-}
-
-// ---------------------------------------------------------------------------------------------
-// Nearest point queries (nanoflann)
-// ---------------------------------------------------------------------------------------------
-
-struct PointsAdaptor {
-    const std::vector<Vec3>* pts;
-    size_t kdtree_get_point_count() const { return pts->size(); }
-    double kdtree_get_pt(size_t i, size_t d) const { return (*pts)[i][int(d)]; }
-    template <class BBox>
-    bool kdtree_get_bbox(BBox&) const { return false; }
-};
-
-class NearestPoint {
-public:
-    explicit NearestPoint(const std::vector<Vec3>& pts)
-        : adaptor_{&pts}, tree_(3, adaptor_, nanoflann::KDTreeSingleIndexAdaptorParams(10)) {}
-    double distance(const Vec3& p) const {
-        uint32_t idx = 0;
-        double d2 = kInf;
-        const double q[3] = {p.x(), p.y(), p.z()};
-        tree_.knnSearch(q, 1, &idx, &d2);
-        return std::sqrt(d2);
-    }
-
-private:
-    using Tree = nanoflann::KDTreeSingleIndexAdaptor<
-        nanoflann::L2_Simple_Adaptor<double, PointsAdaptor>, PointsAdaptor, 3, uint32_t>;
-    PointsAdaptor adaptor_;
-    Tree tree_;
-};
-
-bool finite(const Vec3& v) { return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z()); }
+// Every index writes only its own output, so the results do not depend on the thread count.
+constexpr size_t kBatch = 4096;
 
 Status evaluate_impl(const Mesh& surface, const Skeleton& skeleton_in, const EvaluateOptions& opt,
                      const Monitor& monitor, EvaluateResult& out) {
@@ -125,12 +37,12 @@ Status evaluate_impl(const Mesh& surface, const Skeleton& skeleton_in, const Eva
         return fail(Code::invalid_argument, "evaluate: envelope_samples must be positive");
     const size_t nv = surface.vertices.size();
     for (const Vec3& v : surface.vertices)
-        if (!finite(v)) return fail(Code::invalid_input, "evaluate: non-finite surface vertex");
+        if (!v.allFinite()) return fail(Code::invalid_input, "evaluate: non-finite surface vertex");
     for (const Tri& t : surface.triangles)
         if (t[0] >= nv || t[1] >= nv || t[2] >= nv)
             return fail(Code::invalid_input, "evaluate: triangle index out of range");
     for (const Ball& b : skeleton_in.balls)
-        if (!finite(b.center) || !std::isfinite(b.radius) || b.radius < 0)
+        if (!b.center.allFinite() || !std::isfinite(b.radius) || b.radius < 0)
             return fail(Code::invalid_input, "evaluate: invalid ball (non-finite or negative radius)");
     Skeleton sk = skeleton_in;
     canonicalize(sk);
@@ -149,12 +61,9 @@ Status evaluate_impl(const Mesh& surface, const Skeleton& skeleton_in, const Eva
     if (!(diag > 0)) return fail(Code::degenerate_input, "evaluate: surface has zero extent");
     const double tol = 1e-9 * diag;
     const auto& balls = sk.balls;
-    bool failed = false;
-    auto cancelled_or_failed = [&] {
-        return failed ? fail(Code::internal, "evaluate: a worker failed")
-                      : fail(Code::cancelled, "evaluate: cancelled");
-    };
-    if (!monitor.report("evaluate", 0.0)) return cancelled_or_failed();
+    const int threads = resolve_threads(opt.threads);
+    auto cancelled = [] { return fail(Code::cancelled, "evaluate: cancelled"); };
+    if (!monitor.report("evaluate", 0.0)) return cancelled();
 
     // ---- primitives of F: every face as a slab, every edge in no face as a cone, every ball
     // on no edge as a sphere (a slab's distance already is the minimum over its edge cones and
@@ -208,9 +117,10 @@ Status evaluate_impl(const Mesh& surface, const Skeleton& skeleton_in, const Eva
             generated += cand.size();
             std::vector<char> keep(cand.size(), 0);
             const double f0 = 0.3 * round / 8.0, f1 = 0.3 * (round + 1) / 8.0;
-            if (!parallel_for(cand.size(), opt.threads, monitor, f0, f1,
-                              [&](size_t i) { keep[i] = env.F(cand[i], -tol) > -tol; }, failed))
-                return cancelled_or_failed();
+            if (!parallel_for(cand.size(), threads, kBatch, monitor, "evaluate", f0, f1, [&](size_t b, size_t e) {
+                    for (size_t i = b; i < e; ++i) keep[i] = env.F(cand[i], -tol) > -tol;
+                }))
+                return cancelled();
             for (size_t i = 0; i < cand.size(); ++i)
                 if (keep[i]) boundary.push_back(cand[i]);
         }
@@ -218,32 +128,12 @@ Status evaluate_impl(const Mesh& surface, const Skeleton& skeleton_in, const Eva
     if (boundary.empty()) {   // zero-area envelope (all radii zero): use the centres
         for (const Ball& b : balls) boundary.push_back(b.center);
     }
-    if (!monitor.report("evaluate", 0.3)) return cancelled_or_failed();
+    if (!monitor.report("evaluate", 0.3)) return cancelled();
 
     // ---- surface samples: area-uniform points on the triangles plus the input vertices ----
     std::vector<Vec3> samples;
     const auto& V = surface.vertices;
-    if (!surface.triangles.empty()) {
-        std::vector<double> cdf(surface.triangles.size());
-        double acc = 0;
-        for (size_t t = 0; t < surface.triangles.size(); ++t) {
-            const Tri& tr = surface.triangles[t];
-            acc += 0.5 * (V[tr[1]] - V[tr[0]]).cross(V[tr[2]] - V[tr[0]]).norm();
-            cdf[t] = acc;
-        }
-        if (acc > 0) {
-            Rng rng(opt.seed ^ 0xBB67AE8584CAA73Bull);
-            samples.reserve(opt.surface_samples + nv);
-            for (uint32_t k = 0; k < opt.surface_samples; ++k) {
-                const double x = rng.uniform() * acc;
-                size_t t = size_t(std::upper_bound(cdf.begin(), cdf.end(), x) - cdf.begin());
-                t = std::min(t, cdf.size() - 1);
-                const Tri& tr = surface.triangles[t];
-                const double su = std::sqrt(rng.uniform()), v = rng.uniform();
-                samples.push_back((1 - su) * V[tr[0]] + su * (1 - v) * V[tr[1]] + su * v * V[tr[2]]);
-            }
-        }
-    }
+    if (!surface.triangles.empty()) samples = sample_surface(surface, opt.surface_samples, opt.seed ^ 0xBB67AE8584CAA73Bull);
     samples.insert(samples.end(), V.begin(), V.end());
 
     // ---- h(S -> E): F where F >= 0 (exact); inside E the distance to the nearest boundary
@@ -252,7 +142,7 @@ Status evaluate_impl(const Mesh& surface, const Skeleton& skeleton_in, const Eva
     // the value stays an upper bound of the true distance, and -F a lower bound. ----
     std::vector<double> d_se(samples.size());
     {
-        const NearestPoint nearest_boundary(boundary);
+        const PointTree nearest_boundary(boundary);
         std::vector<Vec3> pcs;
         std::vector<double> prs;
         for (const Piece& pc : pieces) {
@@ -270,28 +160,30 @@ Status evaluate_impl(const Mesh& surface, const Skeleton& skeleton_in, const Eva
                 return env.F(x, -tol) > -tol ? d : kInf;
             });
         };
-        if (!parallel_for(samples.size(), opt.threads, monitor, 0.3, 0.5,
-                          [&](size_t i) {
-                              const double f = env.F(samples[i]);
-                              // on or outside E (up to rounding): F is the exact distance
-                              d_se[i] = f > -tol ? std::max(f, 0.0) : inside_distance(samples[i]);
-                          },
-                          failed))
-            return cancelled_or_failed();
+        if (!parallel_for(samples.size(), threads, kBatch, monitor, "evaluate", 0.3, 0.5, [&](size_t b, size_t e) {
+                for (size_t i = b; i < e; ++i) {
+                    const double f = env.F(samples[i]);
+                    // on or outside E (up to rounding): F is the exact distance
+                    d_se[i] = f > -tol ? std::max(f, 0.0) : inside_distance(samples[i]);
+                }
+            }))
+            return cancelled();
     }
 
     // ---- h(E -> S) ----
     std::vector<double> d_es(boundary.size());
     if (!surface.triangles.empty()) {
         const MeshDistance md(surface);
-        if (!parallel_for(boundary.size(), opt.threads, monitor, 0.5, 1.0,
-                          [&](size_t i) { d_es[i] = md.distance(boundary[i]); }, failed))
-            return cancelled_or_failed();
+        if (!parallel_for(boundary.size(), threads, kBatch, monitor, "evaluate", 0.5, 1.0, [&](size_t b, size_t e) {
+                for (size_t i = b; i < e; ++i) d_es[i] = md.distance(boundary[i]);
+            }))
+            return cancelled();
     } else {
-        const NearestPoint nearest_input(V);
-        if (!parallel_for(boundary.size(), opt.threads, monitor, 0.5, 1.0,
-                          [&](size_t i) { d_es[i] = nearest_input.distance(boundary[i]); }, failed))
-            return cancelled_or_failed();
+        const PointTree nearest_input(V);
+        if (!parallel_for(boundary.size(), threads, kBatch, monitor, "evaluate", 0.5, 1.0, [&](size_t b, size_t e) {
+                for (size_t i = b; i < e; ++i) d_es[i] = nearest_input.distance(boundary[i]);
+            }))
+            return cancelled();
     }
 
     // ---- results (serial reductions: deterministic) ----

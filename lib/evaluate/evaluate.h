@@ -1,4 +1,4 @@
-// evaluate.h: how far a medial skeleton is from the shape (EVALUATION.md). The reconstruction
+// evaluate.h: how far a medial skeleton is from the shape (docs/evaluation.md). The reconstruction
 // E is the union of the skeleton's spheres, medial cones (edges) and medial slabs (faces).
 // Exact signed distances to each primitive, F(x) = min over primitives (BVH over primitive
 // bounding spheres), samples of the boundary of E, and one- and two-sided Hausdorff distances
@@ -19,7 +19,7 @@ struct EvaluateOptions {
     uint32_t surface_samples = 30000;    // plus the input vertices
     uint32_t envelope_samples = 100000;  // at least; boundary samples of E
     uint64_t seed = 1;
-    int32_t threads = 0;                 // worker threads (0 = all cores, at most 8; 1 = serial)
+    int32_t threads = 0;                 // worker threads (0 = all cores; 1 = serial)
 };
 
 struct EvaluateResult {

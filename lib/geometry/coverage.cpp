@@ -2,9 +2,8 @@
 // radius query per ball over a k-d tree of the samples; both directions stored as sorted
 // compressed lists (put in order by two transposes, not by sorting). Never dense.
 #include "coverage.h"
+#include "kdtree.h"
 #include "parallel.h"
-
-#include <nanoflann.hpp>
 
 #include <algorithm>
 #include <atomic>
@@ -27,23 +26,6 @@ void Coverage::build_transpose() {
             sample_balls[next[ball_samples[k]]++] = uint32_t(i);
 }
 
-namespace {
-
-struct PointsAdaptor {
-    const std::vector<Vec3>& pts;
-    size_t kdtree_get_point_count() const { return pts.size(); }
-    double kdtree_get_pt(size_t idx, size_t dim) const { return pts[idx][int(dim)]; }
-    template <class BBox>
-    bool kdtree_get_bbox(BBox&) const { return false; }
-};
-
-using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PointsAdaptor>,
-                                                 PointsAdaptor, 3, size_t>;
-
-bool finite3(const Vec3& p) { return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()); }
-
-}  // namespace
-
 Status build_coverage(const std::vector<Vec3>& samples, const std::vector<Vec3>& centers,
                       const std::vector<double>& dilated_radii, const Monitor& monitor, Coverage& out, int threads) {
     if (centers.size() != dilated_radii.size())
@@ -52,9 +34,9 @@ Status build_coverage(const std::vector<Vec3>& samples, const std::vector<Vec3>&
         centers.size() >= size_t(std::numeric_limits<uint32_t>::max()))
         return fail(Code::invalid_argument, "build_coverage: too many samples or balls");
     for (const Vec3& p : samples)
-        if (!finite3(p)) return fail(Code::invalid_input, "build_coverage: non-finite sample");
+        if (!p.allFinite()) return fail(Code::invalid_input, "build_coverage: non-finite sample");
     for (size_t i = 0; i < centers.size(); ++i) {
-        if (!finite3(centers[i])) return fail(Code::invalid_input, "build_coverage: non-finite ball centre");
+        if (!centers[i].allFinite()) return fail(Code::invalid_input, "build_coverage: non-finite ball centre");
         if (!std::isfinite(dilated_radii[i]) || dilated_radii[i] < 0)
             return fail(Code::invalid_input, "build_coverage: radius must be finite and >= 0");
     }
@@ -64,9 +46,7 @@ Status build_coverage(const std::vector<Vec3>& samples, const std::vector<Vec3>&
         cov.n_balls = centers.size();
         cov.ball_ptr.assign(cov.n_balls + 1, 0);
         if (!samples.empty() && !centers.empty()) {
-            PointsAdaptor adaptor{samples};
-            Tree tree(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-            tree.buildIndex();
+            const PointTree tree(samples);
             // Balls are independent: in batches of kBatch balls, each thread queries a contiguous
             // range into its own list, and the lists are appended in ball order after the batch
             // (the same arrays for any thread count; at most one batch held twice in memory).
@@ -86,16 +66,9 @@ Status build_coverage(const std::vector<Vec3>& samples, const std::vector<Vec3>&
                         rg.end = std::min(stop, rg.begin + chunk);
                         std::vector<std::pair<size_t, double>> hits;
                         for (size_t i = rg.begin; i < rg.end; ++i) {
-                            const double r = dilated_radii[i];
-                            // nanoflann keeps d^2 < r^2 (strict, squared): widen by a relative
-                            // 1e-12 (and one ulp, for r = 0) so a sample exactly at distance r'
-                            // counts as covered.
-                            double r2 = r * r * (1.0 + 1e-12);
-                            r2 = std::nextafter(r2, std::numeric_limits<double>::infinity());
-                            const double q[3] = {centers[i].x(), centers[i].y(), centers[i].z()};
-                            hits.clear();
-                            // unsorted hits: the lists are put in ascending order once, at the end
-                            tree.radiusSearch(q, r2, hits, nanoflann::SearchParams(32, 0.0f, false));
+                            // the covers rule (coverage.h); unsorted hits: the lists are put in
+                            // ascending order once, at the end
+                            tree.within_squared(centers[i], covered_radius2(dilated_radii[i]), hits);
                             for (const auto& h : hits) rg.samples.push_back(uint32_t(h.first));
                             rg.sizes.push_back(uint32_t(hits.size()));
                         }

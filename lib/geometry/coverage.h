@@ -5,7 +5,18 @@
 #pragma once
 #include "common.h"
 
+#include <cmath>
+#include <limits>
+
 namespace ca {
+
+// The rule "ball (c, r') covers sample s": |c - s| <= r'. Compared squared, with r'^2 widened by
+// a relative 1e-12 and one ulp (for r' = 0) so that a sample exactly at distance r' counts as
+// covered whatever the rounding; the k-d tree query (strict d^2 < bound) uses the same bound.
+inline double covered_radius2(double r) {
+    return std::nextafter(r * r * (1.0 + 1e-12), std::numeric_limits<double>::infinity());
+}
+inline bool covers(const Vec3& c, double r, const Vec3& s) { return (c - s).squaredNorm() < covered_radius2(r); }
 
 struct Coverage {
     size_t n_samples = 0;

@@ -118,8 +118,8 @@ Status delaunay_tetrahedra(const std::vector<Vec3>& pts, std::vector<Tet>& tets)
     coords.reserve(pts.size() * 3);
     for (const Vec3& p : pts) coords.insert(coords.end(), {p.x(), p.y(), p.z()});
     // Joggle first: surface samples on flat parts are massively co-spherical and "Qt" spends
-    // seconds merging them (wall model: 1.44 s with Qt, 0.37 s with QJ for 4000 samples; on
-    // curved models the two are within 25 %). Joggling is deterministic (fixed seed).
+    // long merging them, while joggling costs little on curved models. Joggling is
+    // deterministic (fixed seed).
     static const char* const commands[] = {"qhull d QJ Qbb", "qhull d Qbb Qt", "qhull d Qbb Qt Qz"};
     return run_qhull(3, std::move(coords), commands, 3, "the Delaunay tetrahedralisation", [&](qhT* qh) {
         tets.clear();

@@ -5,6 +5,9 @@
 
 #include <nanoflann.hpp>
 
+#include <cmath>
+#include <limits>
+
 namespace ca {
 
 struct PointSetAdaptor {
@@ -20,12 +23,23 @@ public:
         : adaptor_{&pts}, tree_(3, adaptor_, nanoflann::KDTreeSingleIndexAdaptorParams(16)) {}
     // (index, squared distance) of the points within `radius` of q.
     void within(const Vec3& q, double radius, std::vector<std::pair<size_t, double>>& hits) const {
+        within_squared(q, radius * radius, hits);
+    }
+    // (index, squared distance) of the points with squared distance below radius2 (unsorted).
+    void within_squared(const Vec3& q, double radius2, std::vector<std::pair<size_t, double>>& hits) const {
         hits.clear();
-        tree_.radiusSearch(q.data(), radius * radius, hits, nanoflann::SearchParams(32, 0, false));
+        tree_.radiusSearch(q.data(), radius2, hits, nanoflann::SearchParams(32, 0, false));
     }
     // k nearest points; returns how many were found.
     size_t nearest(const Vec3& q, size_t k, size_t* idx, double* dist2) const {
         return tree_.knnSearch(q.data(), k, idx, dist2);
+    }
+    // Distance to the nearest point (+infinity for an empty set).
+    double distance(const Vec3& q) const {
+        size_t idx = 0;
+        double d2 = std::numeric_limits<double>::infinity();
+        if (adaptor_.pts->empty() || nearest(q, 1, &idx, &d2) == 0) return std::numeric_limits<double>::infinity();
+        return std::sqrt(d2);
     }
 private:
     PointSetAdaptor adaptor_;

@@ -2,6 +2,7 @@
 #include "sampling.h"
 
 #include "kdtree.h"
+#include "rng.h"
 
 #include <algorithm>
 #include <cmath>

@@ -16,6 +16,7 @@
 #include "support/shapes.h"
 #include "union_find.h"
 #include "winding.h"
+#include "rng.h"
 
 #include <atomic>
 #include <cmath>

@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 
 #include "selection.h"
+#include "rng.h"
 
 #include <algorithm>
 #include <chrono>

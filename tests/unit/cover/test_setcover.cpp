@@ -7,6 +7,7 @@
 #include "parallel.h"
 #include "setcover.h"
 #include "setcover_internal.h"
+#include "rng.h"
 
 #include <algorithm>
 #include <atomic>
@@ -604,7 +605,7 @@ TEST_CASE("set cover: an unknown effort is refused") {
 }
 
 TEST_CASE("set cover: the core LP (column generation) has the whole LP's optimum") {
-    const auto far = sc::Clock::now() + std::chrono::hours(1);
+    const Deadline far = Deadline::after(3600);
     const auto insts = small_instances(4321, 120);
     Rng rng(11);
     for (size_t t = 0; t < insts.size(); ++t) {
@@ -646,7 +647,7 @@ std::vector<uint32_t> all_columns(const sc::Problem& P) {
 }  // namespace
 
 TEST_CASE("set cover: the LP by row and column generation has the whole LP's optimum") {
-    const auto far = sc::Clock::now() + std::chrono::hours(1);
+    const Deadline far = Deadline::after(3600);
     std::vector<sc::Problem> problems = medium_problems(2024, 24);
     for (const Instance& in : small_instances(4321, 60)) problems.push_back(to_problem(in.cov));
     Rng rng(12);
@@ -674,7 +675,7 @@ TEST_CASE("set cover: the LP by row and column generation has the whole LP's opt
 }
 
 TEST_CASE("set cover: branching on the LP never rules out the brute-force minimum, and often rules out one ball less") {
-    const auto far = sc::Clock::now() + std::chrono::hours(1);
+    const Deadline far = Deadline::after(3600);
     int beyond_lp = 0, below = 0;
     Rng rng(2468);
     for (int t = 0; t < 200; ++t) {
@@ -725,7 +726,7 @@ TEST_CASE("set cover: branching on the LP never rules out the brute-force minimu
 }
 
 TEST_CASE("set cover: the search on the LP optimal face returns only smaller covers from its core, and often finds one") {
-    const auto far = sc::Clock::now() + std::chrono::hours(1);
+    const Deadline far = Deadline::after(3600);
     Rng rng(8642);
     int found = 0, through_cbc = 0;
     for (int t = 0; t < 150; ++t) {
@@ -789,7 +790,7 @@ TEST_CASE("set cover: the search on the LP optimal face returns only smaller cov
 }
 
 TEST_CASE("set cover: the volume ascent gives a valid bound near the LP optimum") {
-    const auto far = sc::Clock::now() + std::chrono::hours(1);
+    const Deadline far = Deadline::after(3600);
     SUBCASE("small instances: below the brute-force minimum and the LP, at its own multipliers") {
         for (const Instance& in : small_instances(515, 120)) {
             const sc::Problem P = to_problem(in.cov);
@@ -824,7 +825,7 @@ TEST_CASE("set cover: the volume ascent gives a valid bound near the LP optimum"
 }
 
 TEST_CASE("set cover: the bound at the LP duals equals the LP optimum and bounds the brute-force minimum") {
-    const auto far = sc::Clock::now() + std::chrono::hours(1);
+    const Deadline far = Deadline::after(3600);
     SUBCASE("odd cycle: LP 5/2, integer optimum 3") {
         Coverage c;
         c.n_samples = 5;
@@ -886,7 +887,7 @@ TEST_CASE("set cover: the local search returns valid covers, never worse than it
     // Random instances with a brute-force optimum: the local search from the greedy cover must
     // return a cover of the instance, no larger than the start and no smaller than the optimum,
     // the same one for the same seed, and (these are easy for it) the optimum on nearly all.
-    const auto far = sc::Clock::now() + std::chrono::hours(1);
+    const Deadline far = Deadline::after(3600);
     Rng rng(2024);
     int optimal = 0, improved = 0, total = 0;
     for (int t = 0; t < 80; ++t) {
@@ -927,7 +928,7 @@ std::vector<uint32_t> greedy_start(const sc::Problem& P) {
 // with `threads` 1.
 std::vector<uint32_t> local_search_multi(const sc::Problem& P, const std::vector<uint32_t>& start, size_t lower_bound,
                                          uint64_t max_steps, uint64_t seed, int starts, int threads,
-                                         sc::Clock::time_point deadline) {
+                                         const Deadline& deadline) {
     sc::SearchRuns runs(P, start, lower_bound, max_steps, seed, starts, deadline, nullptr);
     run_workers(threads > 1 ? size_t(starts) : 1, [&](size_t) { runs.work(); });
     return runs.best();
@@ -938,7 +939,7 @@ std::vector<uint32_t> local_search_multi(const sc::Problem& P, const std::vector
 std::vector<uint32_t> best_single_run(const sc::Problem& P, const std::vector<uint32_t>& g, size_t lower_bound,
                                       uint64_t steps, uint64_t seed, int starts, std::set<size_t>* sizes = nullptr,
                                       std::set<uint64_t>* found_steps = nullptr) {
-    const auto far = sc::Clock::now() + std::chrono::hours(1);
+    const Deadline far = Deadline::after(3600);
     std::vector<uint32_t> expect;
     uint64_t expect_at = 0;
     for (int k = 0; k < starts; ++k) {
@@ -958,7 +959,7 @@ std::vector<uint32_t> best_single_run(const sc::Problem& P, const std::vector<ui
 TEST_CASE("set cover: independent local-search runs give the best run, whatever the thread count") {
     // Larger random instances and short runs (where seeds differ): the multi-start result is the smallest of the
     // single runs (ties to the earliest found, then the lowest seed) for 1, 2 and 3 threads.
-    const auto far = sc::Clock::now() + std::chrono::hours(1);
+    const Deadline far = Deadline::after(3600);
     Rng rng(31337);
     int differ = 0;
     for (int t = 0; t < 12; ++t) {
@@ -978,7 +979,7 @@ TEST_CASE("set cover: independent local-search runs give the best run, whatever 
 TEST_CASE("set cover: runs that stop each other at a known bound still give the best single run") {
     // With a lower bound the runs can reach, the first to reach it makes the others stop (SearchRace); the result
     // is still the single runs' best by (size, swap found, seed), for 1, 2 and 3 threads and repeated runs.
-    const auto far = sc::Clock::now() + std::chrono::hours(1);
+    const Deadline far = Deadline::after(3600);
     Rng rng(4242);
     int raced = 0;
     for (int t = 0; t < 10; ++t) {
@@ -1001,7 +1002,7 @@ TEST_CASE("set cover: runs that stop each other at a known bound still give the 
 TEST_CASE("set cover: search runs taken by threads that join late, with a bound that arrives late, give the best single run") {
     // SearchRuns as the exact solver uses it: some threads take runs at once, another joins after a delay (the LP's
     // thread, once its LP is solved), and the bound the runs may stop at is published during the search.
-    const auto far = sc::Clock::now() + std::chrono::hours(1);
+    const Deadline far = Deadline::after(3600);
     Rng rng(777);
     int checked = 0;
     for (int t = 0; t < 6; ++t) {
@@ -1042,10 +1043,10 @@ TEST_CASE("set cover: the local search with no steps or an expired deadline keep
     const sc::Problem P = to_problem(c);
     std::vector<uint32_t> g = sc::greedy_cover(P);
     sc::remove_redundant(P.cptr, P.crow, P.R, nullptr, nullptr, g);
-    const std::vector<uint32_t> z = sc::local_search(P, g, 0, 0, 1, sc::Clock::now() + std::chrono::hours(1));
+    const std::vector<uint32_t> z = sc::local_search(P, g, 0, 0, 1, Deadline::after(3600));
     CHECK(valid_cover(c, z));
     CHECK(z.size() <= g.size());
-    const std::vector<uint32_t> e = sc::local_search(P, g, 0, 1000000, 1, sc::Clock::now() - std::chrono::seconds(1));
+    const std::vector<uint32_t> e = sc::local_search(P, g, 0, 1000000, 1, Deadline::after(1, Clock::now() - std::chrono::seconds(2)));
     CHECK(valid_cover(c, e));
     CHECK(e.size() <= g.size());
 }
@@ -1066,7 +1067,7 @@ TEST_CASE("set cover: the local search's patience is proportional to the problem
     const sc::Problem P = to_problem(c);
     std::vector<uint32_t> start;
     for (uint32_t g = 0; g < 200; ++g) start.push_back(2 * g);
-    const auto far = sc::Clock::now() + std::chrono::hours(1);
+    const Deadline far = Deadline::after(3600);
     uint64_t steps = 0;
     const std::vector<uint32_t> s = sc::local_search(P, start, 0, 1000000, 3, far, &steps);
     CHECK(s.size() == 200);
@@ -1330,7 +1331,7 @@ TEST_CASE("set cover: on components over 400 rows the fast effort branches only 
     // LP (so that the fast effort does not run CBC), the bound beyond ceil(LP) can only come from
     // the branching step: it must not appear where the LP is further than kFastBranchShortfall
     // from the next integer, and it should where it is close.
-    const auto far = sc::Clock::now() + std::chrono::hours(1);
+    const Deadline far = Deadline::after(3600);
     Rng rng(1357);
     int close = 0, raised = 0, far_from = 0;
     for (int t = 0; t < 30; ++t) {
@@ -1374,7 +1375,7 @@ TEST_CASE("set cover: the prove effort keeps the bound of the branching step") {
         const sc::Problem P = to_problem(c);
         const std::vector<double> y = sc::lp_duals(P, 0);
         REQUIRE(y.size() == P.R);
-        const double lp = sc::lagrangian(P, all_columns(P), 1, sc::Clock::now() + std::chrono::hours(1), &y).bound;
+        const double lp = sc::lagrangian(P, all_columns(P), 1, Deadline::after(3600), &y).bound;
         const double ceil_lp = std::ceil(lp - 1e-6);
         CoverOptions fast;
         CoverResult a;

@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include "evaluate.h"
+#include "rng.h"
 
 #include <Eigen/Geometry>
 

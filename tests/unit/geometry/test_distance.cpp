@@ -2,6 +2,7 @@
 // (degenerate triangles included), the AABB tree against the brute-force minimum, and
 // distance_below against the exact distance.
 #include "distance.h"
+#include "rng.h"
 #include <doctest/doctest.h>
 #include <cmath>
 #include <limits>

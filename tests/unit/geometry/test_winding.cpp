@@ -3,6 +3,7 @@
 // inverted orientation, signed volume, degenerate and empty input.
 #include "distance.h"
 #include "winding.h"
+#include "rng.h"
 #include <doctest/doctest.h>
 #include <Eigen/Geometry>
 #include <cmath>
