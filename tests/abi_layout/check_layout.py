@@ -1,8 +1,8 @@
 """check_layout.py: checks the ABI layout printer against the header and the Python binding.
-usage: check_layout.py ABI_LAYOUT_EXE HEADER   (CA_LIBRARY and PYTHONPATH point at the binding)
+usage: check_layout.py ABI_LAYOUT_EXE HEADER   (PYTHONPATH points at bindings/python)
 1. every struct of the header, and every field in declaration order, is printed (the printer is
    complete); offsets grow and fields do not overlap;
-2. each ctypes Structure of bindings/python/coverage_axis.py has the printed size and, field by
+2. each ctypes Structure of bindings/python/coverage_axis/_structs.py has the printed size and, field by
    field, the printed names, offsets and sizes."""
 import ctypes
 import re
@@ -55,10 +55,10 @@ def main():
         if name in layout and end > layout[name]["size"]:
             errors.append("%s: fields end past sizeof" % name)
 
-    import coverage_axis
-    checked = 0
-    for attr in dir(coverage_axis):
-        cls = getattr(coverage_axis, attr)
+    from coverage_axis import _structs
+    checked, compared = 0, set()
+    for attr in dir(_structs):
+        cls = getattr(_structs, attr)
         if not (isinstance(cls, type) and issubclass(cls, ctypes.Structure) and attr.startswith("_")):
             continue
         cname = "ca" + re.sub(r"([A-Z])", lambda m: "_" + m.group(1).lower(), attr[1:])
@@ -71,6 +71,10 @@ def main():
             errors.append("Python %s (%d bytes) %s differs from %s (%d bytes) %s" %
                           (attr, ctypes.sizeof(cls), got, cname, want["size"], want["fields"]))
         checked += 1
+        compared.add(cname)
+    for name in layout:
+        if name not in compared:
+            errors.append("%s: no Python ctypes mirror in coverage_axis/_structs.py" % name)
     for e in errors:
         print("layout: " + e)
     print("abi_layout: %d structs printed, %d Python structs compared, %d errors" % (len(layout), checked, len(errors)))

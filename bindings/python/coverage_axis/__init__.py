@@ -1,0 +1,26 @@
+"""coverage_axis: Python binding of the coverage-axis library (Coverage Axis skeletonization,
+Dou et al., EG 2022) over its C ABI with ctypes. numpy arrays in and out when numpy is installed
+(lists of tuples otherwise).
+
+    import coverage_axis as ca
+    sk = ca.skeletonize(vertices, triangles, delta=0.02)   # vertices (n, 3), triangles (m, 3)
+    sk.centers, sk.radii, sk.edges, sk.faces, sk.stats
+    ca.evaluate(vertices, triangles, sk)                   # Hausdorff distances, % of the bbox diagonal
+
+Steps one by one: candidates() -> select() -> connect(); a Context gives threads, progress, log
+and a cancel() any thread may call. Errors raise CoverageAxisError (.status, .message)."""
+from ._arrays import HAVE_NUMPY
+from ._context import Context
+from ._library import (ABI_VERSION, STATUS_NAMES, CoverageAxisError, LibraryNotFoundError, lib as _lib,
+                       load_library)
+from ._library import (CA_OK, CA_ERROR_INVALID_ARGUMENT, CA_ERROR_NULL_POINTER, CA_ERROR_STRUCT_SIZE,  # noqa: F401
+                       CA_ERROR_INVALID_INPUT, CA_ERROR_DEGENERATE_INPUT, CA_ERROR_UNCOVERABLE, CA_ERROR_GEOMETRY,
+                       CA_ERROR_SOLVER, CA_ERROR_CANCELLED, CA_ERROR_OUT_OF_MEMORY, CA_ERROR_BUFFER_TOO_SMALL,
+                       CA_ERROR_INTERNAL, CA_ERROR_NO_CANDIDATES)
+from ._steps import CandidateSet, Selection, Skeleton, candidates, connect, defaults, evaluate, select, skeletonize
+
+
+def version():
+    """The linked library's version, "major.minor.patch"."""
+    v = _lib().ca_version()
+    return "%d.%d.%d" % (v // 10000, v // 100 % 100, v % 100)

@@ -1,0 +1,167 @@
+"""_library.py: finds and loads the shared library libcoverage_axis, declares the signature of
+every ca_* function the binding calls, checks the ABI version, and turns statuses into
+CoverageAxisError.
+
+The library is looked for, first found wins:
+  1. the path given to load_library(path) (an application's own setting, e.g. a preference);
+  2. $CA_LIBRARY;
+  3. a libcoverage_axis.so* bundled in this package's folder;
+  4. the path `make install` wrote into _install_path.py;
+  5. ctypes.util.find_library("coverage_axis") (the system's search path).
+It is loaded on first use, so `import coverage_axis` works without it."""
+import ctypes
+import ctypes.util
+import glob
+import os
+import threading
+from ctypes import POINTER, CFUNCTYPE, c_char_p, c_double, c_int32, c_size_t, c_uint32, c_void_p
+
+from ._structs import (_CandidateOptions, _ConnectOptions, _ContextDesc, _EvaluateOptions, _Evaluation,
+                       _SelectOptions, _SelectStats, _SkeletonStats, _SkeletonView, _SurfaceView)
+
+ABI_VERSION = 2
+
+# pinned status codes of the header (CA_OK = 0 ... CA_ERROR_NO_CANDIDATES = 13)
+STATUS_NAMES = {
+    0: "CA_OK", 1: "CA_ERROR_INVALID_ARGUMENT", 2: "CA_ERROR_NULL_POINTER", 3: "CA_ERROR_STRUCT_SIZE",
+    4: "CA_ERROR_INVALID_INPUT", 5: "CA_ERROR_DEGENERATE_INPUT", 6: "CA_ERROR_UNCOVERABLE", 7: "CA_ERROR_GEOMETRY",
+    8: "CA_ERROR_SOLVER", 9: "CA_ERROR_CANCELLED", 10: "CA_ERROR_OUT_OF_MEMORY", 11: "CA_ERROR_BUFFER_TOO_SMALL",
+    12: "CA_ERROR_INTERNAL", 13: "CA_ERROR_NO_CANDIDATES",
+}
+globals().update({name: code for code, name in STATUS_NAMES.items()})
+
+LOG_FN = CFUNCTYPE(None, c_void_p, c_int32, c_char_p)
+PROGRESS_FN = CFUNCTYPE(c_int32, c_void_p, c_char_p, c_double)
+
+
+class CoverageAxisError(Exception):
+    """A call failed: .status is the ca_status code (CA_ERROR_*), .message the explanation."""
+
+    def __init__(self, status, message):
+        super().__init__("%s: %s" % (STATUS_NAMES.get(status, status), message))
+        self.status = status
+        self.message = message
+
+
+class LibraryNotFoundError(ImportError):
+    """libcoverage_axis could not be found or loaded; the message lists every place tried."""
+
+
+P = c_void_p
+_SIGNATURES = {
+    "ca_version": (c_uint32, []), "ca_abi_version": (c_uint32, []), "ca_status_string": (c_char_p, [c_int32]),
+    "ca_context_desc_defaults": (c_int32, [POINTER(_ContextDesc), c_uint32]),
+    "ca_context_create": (c_int32, [POINTER(_ContextDesc), POINTER(P)]), "ca_context_destroy": (None, [P]),
+    "ca_context_request_cancel": (None, [P]), "ca_context_clear_cancel": (None, [P]),
+    "ca_context_last_error": (c_char_p, [P]),
+    "ca_surface_view_defaults": (c_int32, [POINTER(_SurfaceView), c_uint32]),
+    "ca_candidate_options_defaults": (c_int32, [POINTER(_CandidateOptions), c_uint32]),
+    "ca_candidates": (c_int32, [P, POINTER(_SurfaceView), POINTER(_CandidateOptions), POINTER(P)]),
+    "ca_candidate_set_destroy": (None, [P]), "ca_candidate_set_count": (c_size_t, [P]),
+    "ca_candidate_set_centers": (P, [P]), "ca_candidate_set_radii": (P, [P]),
+    "ca_candidate_set_sample_count": (c_size_t, [P]), "ca_candidate_set_samples": (P, [P]),
+    "ca_candidate_set_reference_length": (c_double, [P]), "ca_candidate_set_flipped": (c_int32, [P]),
+    "ca_select_options_defaults": (c_int32, [POINTER(_SelectOptions), c_uint32]),
+    "ca_select": (c_int32, [P, P, POINTER(_SelectOptions), POINTER(P)]),
+    "ca_selection_destroy": (None, [P]), "ca_selection_count": (c_size_t, [P]),
+    "ca_selection_indices": (P, [P]), "ca_selection_centers": (P, [P]), "ca_selection_radii": (P, [P]),
+    "ca_selection_dilated_radii": (P, [P]), "ca_selection_uncovered_count": (c_size_t, [P]),
+    "ca_selection_uncovered": (P, [P]), "ca_selection_stats": (c_int32, [P, POINTER(_SelectStats)]),
+    "ca_connect_options_defaults": (c_int32, [POINTER(_ConnectOptions), c_uint32]),
+    "ca_connect": (c_int32, [P, P, P, POINTER(_ConnectOptions), POINTER(P)]),
+    "ca_skeleton_destroy": (None, [P]), "ca_skeleton_vertex_count": (c_size_t, [P]),
+    "ca_skeleton_centers": (P, [P]), "ca_skeleton_radii": (P, [P]),
+    "ca_skeleton_edge_count": (c_size_t, [P]), "ca_skeleton_edges": (P, [P]),
+    "ca_skeleton_face_count": (c_size_t, [P]), "ca_skeleton_faces": (P, [P]),
+    "ca_skeleton_stats_get": (c_int32, [P, POINTER(_SkeletonStats)]),
+    "ca_skeleton_view_defaults": (c_int32, [POINTER(_SkeletonView), c_uint32]),
+    "ca_evaluate_options_defaults": (c_int32, [POINTER(_EvaluateOptions), c_uint32]),
+    "ca_evaluate": (c_int32, [P, POINTER(_SurfaceView), POINTER(_SkeletonView), POINTER(_EvaluateOptions),
+                              POINTER(_Evaluation)]),
+}
+
+_lock = threading.Lock()
+_loaded = None
+
+
+def _candidates(path):
+    if path:
+        yield "load_library()", path
+    if os.environ.get("CA_LIBRARY"):
+        yield "$CA_LIBRARY", os.environ["CA_LIBRARY"]
+    here = os.path.dirname(os.path.abspath(__file__))
+    for bundled in sorted(glob.glob(os.path.join(here, "libcoverage_axis.so*")) +
+                          glob.glob(os.path.join(here, "libcoverage_axis*.dylib")) +
+                          glob.glob(os.path.join(here, "coverage_axis*.dll"))):
+        yield "bundled", bundled
+    try:
+        from ._install_path import LIBRARY
+        yield "installed", LIBRARY
+    except ImportError:
+        pass
+    found = ctypes.util.find_library("coverage_axis")
+    if found:
+        yield "find_library", found
+
+
+def _open(path):
+    tried = []
+    for where, candidate in _candidates(path):
+        try:
+            lib = ctypes.CDLL(candidate)
+        except OSError as e:
+            tried.append("%s %s: %s" % (where, candidate, e))
+            continue
+        for name, (res, args) in _SIGNATURES.items():
+            f = getattr(lib, name)
+            f.restype, f.argtypes = res, args
+        if lib.ca_abi_version() != ABI_VERSION:
+            tried.append("%s %s: ABI version %d, this binding needs %d" %
+                         (where, candidate, lib.ca_abi_version(), ABI_VERSION))
+            continue
+        return lib, candidate
+    raise LibraryNotFoundError(
+        "libcoverage_axis not found; set CA_LIBRARY=/path/to/libcoverage_axis.so, call "
+        "coverage_axis.load_library(path), or run `make install`. Tried: " +
+        ("; ".join(tried) if tried else "nothing (no $CA_LIBRARY, no bundled copy, no installed path, "
+                                         "find_library found none)"))
+
+
+def load_library(path=None):
+    """Loads the library now (from `path` if given, else the search order above) and returns
+    the path it was loaded from. Raises LibraryNotFoundError with every place tried."""
+    global _loaded
+    with _lock:
+        if _loaded is None:
+            _loaded = _open(path)
+        elif path and os.path.realpath(path) != os.path.realpath(_loaded[1]):
+            # objects made by the loaded copy must be destroyed by it: one library per process
+            raise RuntimeError("libcoverage_axis is already loaded from %s" % _loaded[1])
+        return _loaded[1]
+
+
+def lib():
+    """The loaded library (loading it on first use)."""
+    if _loaded is None:
+        load_library()
+    return _loaded[0]
+
+
+def fill_defaults(defaults_name, struct_type):
+    """A struct_type filled by the library's ca_*_defaults for this binding's layout (its ctypes size)."""
+    s = struct_type()
+    status = getattr(lib(), defaults_name)(ctypes.byref(s), ctypes.sizeof(s))
+    if status:
+        raise CoverageAxisError(status, "%s: the library does not accept struct_size %d" %
+                                (struct_type.__name__, ctypes.sizeof(s)))
+    return s
+
+
+def output_struct(struct_type):
+    """An output struct with struct_size set (the library writes only that many bytes)."""
+    return struct_type(struct_size=ctypes.sizeof(struct_type))
+
+
+def struct_dict(s):
+    """The fields of a ctypes struct as a dict, without struct_size."""
+    return {name: getattr(s, name) for name, _ in s._fields_ if name != "struct_size"}

@@ -1,0 +1,271 @@
+"""_steps.py: the pipeline's steps over the C ABI - candidates(), select(), connect(), evaluate() -
+their results, and skeletonize(), the three steps in one call.
+
+Options are keyword arguments named as the fields of the C option structs (ca_candidate_options,
+ca_select_options, ca_connect_options, ca_evaluate_options); an option not given (or None) keeps
+the library's default, read from its ca_*_defaults function (defaults() lists them). Enumerations
+take their names ("exact", "prove", "medial", ...) or the C values."""
+import ctypes
+
+from . import _arrays
+from ._context import Context
+from ._library import (CA_ERROR_INVALID_ARGUMENT, CoverageAxisError, _CandidateOptions, _ConnectOptions,
+                       _EvaluateOptions, _Evaluation, _SelectOptions, _SelectStats, _SkeletonStats,
+                       _SkeletonView, _SurfaceView, fill_defaults, lib, output_struct, struct_dict)
+from ._structs import _ContextDesc
+
+# the header's #define values, by name
+ENUMS = {
+    "generator": {"voronoi": 0, "random": 1},
+    "dilation": {"offset": 0, "scale": 1},
+    "solver": {"exact": 0, "greedy": 1, "capp": 2},
+    "effort": {"fast": 0, "prove": 1},
+    "method": {"power": 0, "medial": 1, "auto": 2},
+}
+_MASKS = ("ignorable_samples", "forced_in", "forced_out")
+_STEPS = {
+    "context": ("ca_context_desc_defaults", _ContextDesc),
+    "candidates": ("ca_candidate_options_defaults", _CandidateOptions),
+    "select": ("ca_select_options_defaults", _SelectOptions),
+    "connect": ("ca_connect_options_defaults", _ConnectOptions),
+    "evaluate": ("ca_evaluate_options_defaults", _EvaluateOptions),
+}
+_NOT_OPTIONS = {"struct_size", "alloc", "free", "alloc_user", "log", "log_user", "progress", "progress_user"}
+
+
+def _option_names(step):
+    return [name for name, _ in _STEPS[step][1]._fields_ if name not in _NOT_OPTIONS and name not in _MASKS]
+
+
+def _named(name, value):
+    for key, code in ENUMS.get(name, {}).items():
+        if code == value:
+            return key
+    return value
+
+
+def defaults(step):
+    """The library's defaults of a step's options ("context", "candidates", "select", "connect",
+    "evaluate") as a dict, enumerations by name."""
+    s = fill_defaults(*_STEPS[step])
+    return {name: _named(name, getattr(s, name)) for name in _option_names(step)}
+
+
+def _options(step, given):
+    """The step's option struct: the library's defaults, then the given options (None = default)."""
+    s = fill_defaults(*_STEPS[step])
+    names = _option_names(step)
+    for name, value in given.items():
+        if name not in names:
+            raise TypeError("%s() got an unknown option %r (options: %s)" % (step, name, ", ".join(names)))
+        if value is None:
+            continue
+        if name in ENUMS and isinstance(value, str):
+            if value not in ENUMS[name]:
+                raise CoverageAxisError(CA_ERROR_INVALID_ARGUMENT, "%s: %r is not one of %s" %
+                                        (name, value, ", ".join(ENUMS[name])))
+            value = ENUMS[name][value]
+        try:
+            setattr(s, name, int(value) if isinstance(value, bool) else value)
+        except TypeError as e:
+            raise CoverageAxisError(CA_ERROR_INVALID_ARGUMENT, "%s: %s" % (name, e))
+    return s
+
+
+def _run(context, function, *args):
+    if context is not None:
+        return context.run(function, *args)
+    with Context() as ctx:
+        return ctx.run(function, *args)
+
+
+def _surface(vertices, triangles, normals):
+    """A ca_surface_view over the caller's arrays, and the buffers it borrows."""
+    pos = _arrays.points(vertices, "vertices")
+    tri = _arrays.indices(triangles, "triangles", 3)
+    view = fill_defaults("ca_surface_view_defaults", _SurfaceView)
+    view.positions, view.vertex_count, view.position_stride = pos.address, pos.count, pos.stride
+    view.triangles, view.triangle_count, view.triangle_stride = tri.address, tri.count, tri.stride
+    keep = [pos, tri]
+    if normals is not None:
+        nrm = _arrays.points(normals, "normals")
+        view.normals, view.normal_stride = nrm.address, nrm.stride
+        keep.append(nrm)
+    return view, keep
+
+
+class _Handle:
+    """Owns one library object and destroys it when the last Python reference goes."""
+    _destroy = None
+
+    def __init__(self, ptr):
+        self._lib, self._ptr = lib(), ptr
+
+    def __del__(self):
+        if getattr(self, "_ptr", None):
+            getattr(self._lib, self._destroy)(self._ptr)
+            self._ptr = None
+
+    def _get(self, name):
+        return getattr(self._lib, name)(self._ptr)
+
+    def _view(self, getter, count, width, ctype=ctypes.c_double):
+        return _arrays.view(self._get(getter), count, width, ctype, self)
+
+
+class CandidateSet(_Handle):
+    """Step 1's result: surface samples and inner candidate balls (read-only arrays, no copies)."""
+    _destroy = "ca_candidate_set_destroy"
+
+    def __init__(self, ptr):
+        super().__init__(ptr)
+        self.count = self._get("ca_candidate_set_count")
+        self.sample_count = self._get("ca_candidate_set_sample_count")
+        self.reference_length = self._get("ca_candidate_set_reference_length")  # the length delta is a fraction of
+        self.flipped = bool(self._get("ca_candidate_set_flipped"))  # the mesh faced inward and was flipped
+        self.centers = self._view("ca_candidate_set_centers", self.count, 3)
+        self.radii = self._view("ca_candidate_set_radii", self.count, 1)
+        self.samples = self._view("ca_candidate_set_samples", self.sample_count, 3)
+
+
+class Selection(_Handle):
+    """Step 2's result: the selected balls (indices into the candidate set), their undilated and
+    dilated radii, the uncovered samples (skip_uncoverable) and the solver's statistics."""
+    _destroy = "ca_selection_destroy"
+
+    def __init__(self, ptr, candidate_set):
+        super().__init__(ptr)
+        self.candidate_set = candidate_set
+        self.count = self._get("ca_selection_count")
+        self.indices = self._view("ca_selection_indices", self.count, 1, ctypes.c_uint32)
+        self.centers = self._view("ca_selection_centers", self.count, 3)
+        self.radii = self._view("ca_selection_radii", self.count, 1)
+        self.dilated_radii = self._view("ca_selection_dilated_radii", self.count, 1)
+        self.uncovered = self._view("ca_selection_uncovered", self._get("ca_selection_uncovered_count"), 1,
+                                    ctypes.c_uint32)
+        stats = output_struct(_SelectStats)
+        status = self._lib.ca_selection_stats(self._ptr, ctypes.byref(stats))
+        if status:
+            raise CoverageAxisError(status, "ca_selection_stats failed")
+        self.stats = {name: _named(name, v) for name, v in struct_dict(stats).items()}
+        self.stats["proven_optimal"] = bool(stats.proven_optimal)
+
+
+class _SkeletonHandle(_Handle):
+    _destroy = "ca_skeleton_destroy"
+
+
+class Skeleton:
+    """Medial balls (centers (n, 3), radii (n,)), edges (m, 2) and faces (k, 3) into the balls, in
+    the input's units, and statistics. Results of connect() view the library's memory; a Skeleton
+    may also be built from the caller's own arrays (for evaluate())."""
+
+    def __init__(self, centers, radii, edges=(), faces=(), stats=None):
+        self.centers, self.radii, self.edges, self.faces = centers, radii, edges, faces
+        self.stats = dict(stats or {})
+
+    def __len__(self):
+        return len(self.radii)
+
+    @classmethod
+    def _from_handle(cls, ptr):
+        h = _SkeletonHandle(ptr)
+        n = h._get("ca_skeleton_vertex_count")
+        stats = output_struct(_SkeletonStats)
+        status = h._lib.ca_skeleton_stats_get(h._ptr, ctypes.byref(stats))
+        if status:
+            raise CoverageAxisError(status, "ca_skeleton_stats_get failed")
+        return cls(h._view("ca_skeleton_centers", n, 3), h._view("ca_skeleton_radii", n, 1),
+                   h._view("ca_skeleton_edges", h._get("ca_skeleton_edge_count"), 2, ctypes.c_uint32),
+                   h._view("ca_skeleton_faces", h._get("ca_skeleton_face_count"), 3, ctypes.c_uint32),
+                   {name: _named(name, v) for name, v in struct_dict(stats).items()})
+
+
+def candidates(vertices, triangles=None, normals=None, *, context=None, **options):
+    """Step 1: samples of the surface and inner candidate balls. A mesh (vertices (n, 3), triangles
+    (m, 3)) or an oriented point cloud (no triangles; normals (n, 3), outward).
+    Options: generator, cover_samples, voronoi_samples, random_candidates, seed, connect_samples."""
+    view, keep = _surface(vertices, triangles, normals)
+    opts = _options("candidates", options)
+    out = ctypes.c_void_p()
+    _run(context, lib().ca_candidates, ctypes.byref(view), ctypes.byref(opts), ctypes.byref(out))
+    del keep
+    return CandidateSet(out)
+
+
+def select(candidate_set, *, context=None, ignorable_samples=None, forced_in=None, forced_out=None, **options):
+    """Step 2: the fewest dilated candidate balls covering every sample.
+    Options: dilation ("offset" | "scale"; scale=S alone selects "scale"), delta, scale, solver,
+    time_limit_s, skip_uncoverable, target_count, target_tolerance, divide_threshold, effort.
+    Masks (one flag per sample or ball, truthy = set): ignorable_samples, forced_in, forced_out."""
+    if options.get("scale") is not None and options.get("dilation") is None:
+        options["dilation"] = "scale"
+    opts = _options("select", options)
+    masks = [_arrays.mask(ignorable_samples, "ignorable_samples", candidate_set.sample_count),
+             _arrays.mask(forced_in, "forced_in", candidate_set.count),
+             _arrays.mask(forced_out, "forced_out", candidate_set.count)]
+    for name, m in zip(_MASKS, masks):
+        setattr(opts, name, ctypes.addressof(m) if m is not None and len(m) else None)
+    out = ctypes.c_void_p()
+    _run(context, lib().ca_select, candidate_set._ptr, ctypes.byref(opts), ctypes.byref(out))
+    del masks
+    return Selection(out, candidate_set)
+
+
+def connect(selection, *, context=None, **options):
+    """Step 3: edges and triangles between the selected balls.
+    Options: method ("auto" | "medial" | "power"), remove_outside, fill_holes, reconnect."""
+    opts = _options("connect", options)
+    out = ctypes.c_void_p()
+    _run(context, lib().ca_connect, selection.candidate_set._ptr, selection._ptr, ctypes.byref(opts),
+         ctypes.byref(out))
+    return Skeleton._from_handle(out)
+
+
+def evaluate(vertices, triangles, skeleton, *, context=None, **options):
+    """Hausdorff distances between the surface and the skeleton's reconstruction (union of balls,
+    cones and slabs), in % of the bounding-box diagonal, as a dict.
+    Options: surface_samples, envelope_samples, seed."""
+    view, keep = _surface(vertices, triangles, None)
+    c = _arrays.points(skeleton.centers, "skeleton.centers")
+    r = _arrays.points(_column(skeleton.radii), "skeleton.radii", 1)
+    e = _arrays.indices(skeleton.edges, "skeleton.edges", 2)
+    f = _arrays.indices(skeleton.faces, "skeleton.faces", 3)
+    if r.count != c.count:
+        raise CoverageAxisError(CA_ERROR_INVALID_ARGUMENT, "skeleton: %d centers, %d radii" % (c.count, r.count))
+    if c.count and c.stride not in (0, 24):
+        c = _arrays.points(_arrays.np.ascontiguousarray(c.keep), "skeleton.centers")  # the view has no stride
+    sv = fill_defaults("ca_skeleton_view_defaults", _SkeletonView)
+    sv.centers, sv.radii, sv.vertex_count = c.address, r.address, c.count
+    sv.edges, sv.edge_count, sv.faces, sv.face_count = e.address, e.count, f.address, f.count
+    opts = _options("evaluate", options)
+    out = output_struct(_Evaluation)
+    _run(context, lib().ca_evaluate, ctypes.byref(view), ctypes.byref(sv), ctypes.byref(opts), ctypes.byref(out))
+    del keep
+    return struct_dict(out)
+
+
+def _column(values):
+    """(n,) radii as (n, 1) rows, for points()."""
+    if _arrays.np is not None:
+        return _arrays.np.asarray(values).reshape(-1, 1)
+    return [(v,) for v in values]
+
+
+def skeletonize(vertices, triangles=None, normals=None, *, context=None, connect=None, **options):
+    """candidates() -> select() -> connect() in one call; options of all three steps (connect= is
+    method=). The skeleton's stats hold the selection's and the skeleton's statistics (the
+    skeleton's where both have a name, e.g. components) and the candidate count."""
+    steps = {step: {} for step in ("candidates", "select", "connect")}
+    if connect is not None:
+        options.setdefault("method", connect)
+    for name, value in options.items():
+        step = next((s for s in steps if name in _option_names(s) or (s == "select" and name in _MASKS)), None)
+        if step is None:
+            raise TypeError("skeletonize() got an unknown option %r" % name)
+        steps[step][name] = value
+    cset = candidates(vertices, triangles, normals, context=context, **steps["candidates"])
+    sel = select(cset, context=context, **steps["select"])
+    sk = globals()["connect"](sel, context=context, **steps["connect"])
+    sk.stats = dict(sel.stats, **sk.stats, candidates=cset.count)
+    return sk

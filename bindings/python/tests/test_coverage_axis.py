@@ -1,0 +1,350 @@
+"""test_coverage_axis.py: tests of the Python binding (unittest). CTest runs it with CA_LIBRARY (the
+built library), CA_CLI (the coverage-axis tool) and CA_TEST_DATA (tests/data) set:
+    python3 -m unittest test_coverage_axis
+It runs once with numpy (which must be installed: scripts/install-deps.sh) and, from
+test_runs_without_numpy, once more in a subprocess with numpy hidden (CA_TEST_HIDE_NUMPY=1 makes
+`import numpy` fail), where inputs are lists and results lists of tuples."""
+import inspect
+import math
+import os
+import re
+import subprocess
+import sys
+import threading
+import unittest
+
+if os.environ.get("CA_TEST_HIDE_NUMPY"):
+    sys.modules["numpy"] = None  # `import numpy` now raises ImportError
+
+import coverage_axis as ca
+from coverage_axis import _steps
+
+if ca.HAVE_NUMPY:
+    import numpy as np
+
+BOX_V = [(0, 0, 0), (2, 0, 0), (2, 1, 0), (0, 1, 0), (0, 0, 1), (2, 0, 1), (2, 1, 1), (0, 1, 1)]
+BOX_F = [(0, 2, 1), (0, 3, 2), (4, 5, 6), (4, 6, 7), (0, 1, 5), (0, 5, 4),
+         (1, 2, 6), (1, 6, 5), (2, 3, 7), (2, 7, 6), (3, 0, 4), (3, 4, 7)]
+SMALL = dict(cover_samples=400, voronoi_samples=800)
+DATA = os.environ.get("CA_TEST_DATA", os.path.join(os.path.dirname(__file__), "..", "..", "..", "tests", "data"))
+
+
+def rows(a):
+    """Nested lists of a numpy array or a list of tuples."""
+    return [list(r) if isinstance(r, (tuple, list)) or hasattr(r, "__len__") else r for r in
+            (a.tolist() if hasattr(a, "tolist") else a)]
+
+
+def read_obj(path):
+    v, f = [], []
+    with open(path) as lines:
+        text = lines.read().splitlines()
+    for line in text:
+        p = line.split()
+        if p and p[0] == "v":
+            v.append(tuple(float(x) for x in p[1:4]))
+        elif p and p[0] == "f":
+            idx = [int(x.split("/")[0]) - 1 for x in p[1:]]
+            f += [(idx[0], idx[k], idx[k + 1]) for k in range(1, len(idx) - 1)]
+    return v, f
+
+
+def read_ma(path):
+    """Balls (x, y, z, r), edge and face counts of a .ma file."""
+    balls, edges, faces = [], 0, 0
+    with open(path) as lines:
+        text = lines.read().splitlines()
+    for line in text:
+        p = line.split()
+        if p and p[0] == "v":
+            balls.append(tuple(float(x) for x in p[1:5]))
+        elif p and p[0] == "e":
+            edges += 1
+        elif p and p[0] == "f":
+            faces += 1
+    return balls, edges, faces
+
+
+class CommonTest(unittest.TestCase):
+    """Runs with and without numpy."""
+
+    def test_version_and_library(self):
+        self.assertRegex(ca.version(), r"^\d+\.\d+\.\d+$")
+        self.assertTrue(os.path.exists(ca.load_library()))
+
+    def test_box_skeleton_is_on_the_medial_axis(self):
+        sk = ca.skeletonize(BOX_V, BOX_F, **SMALL)
+        self.assertGreaterEqual(len(sk.radii), 2)
+        self.assertTrue(sk.stats["proven_optimal"])
+        for (x, y, z), r in zip(rows(sk.centers), rows(sk.radii)):
+            nearest_face = min(x, 2 - x, y, 1 - y, z, 1 - z)
+            self.assertGreater(nearest_face, 0)
+            self.assertGreaterEqual(r, nearest_face - 1e-9)
+            self.assertLessEqual(r, nearest_face + 0.1)
+        for i, j in rows(sk.edges):
+            self.assertLess(max(i, j), len(sk.radii))
+
+    def test_defaults_come_from_the_library(self):
+        # the binding states no option default itself: its functions default every option to None
+        for fn in (ca.candidates, ca.select, ca.connect, ca.evaluate, ca.skeletonize, ca.Context):
+            for p in inspect.signature(fn).parameters.values():
+                self.assertIn(p.default, (inspect.Parameter.empty, None), (fn.__name__, p.name))
+        # the library's defaults, as the CLI's usage text (made from the same functions) prints them
+        usage = subprocess.run([os.environ["CA_CLI"], "--help"], capture_output=True, text=True).stdout
+        printed = {flag: re.search(r"%s \S+ .*\(default (\S+?)[ )]" % flag, usage).group(1)
+                   for flag in ("--delta", "--samples", "--voronoi-samples", "--seed", "--time-limit")}
+        d = dict(ca.defaults("candidates"), **ca.defaults("select"))
+        self.assertEqual(printed, {"--delta": repr(d["delta"]), "--samples": str(d["cover_samples"]),
+                                   "--voronoi-samples": str(d["voronoi_samples"]), "--seed": str(d["seed"]),
+                                   "--time-limit": "%g" % d["time_limit_s"]})
+        self.assertEqual((d["solver"], d["effort"], ca.defaults("connect")["method"]), ("exact", "fast", "auto"))
+        # options not given keep those defaults: skeletonize() equals passing them all explicitly
+        explicit = dict(ca.defaults("candidates"), **ca.defaults("select"), **ca.defaults("connect"))
+        explicit.update(SMALL)
+        a, b = ca.skeletonize(BOX_V, BOX_F, **SMALL), ca.skeletonize(BOX_V, BOX_F, **explicit)
+        self.assertEqual(rows(a.centers), rows(b.centers))
+
+    def test_steps_equal_skeletonize(self):
+        one = ca.skeletonize(BOX_V, BOX_F, delta=0.03, method="power", **SMALL)
+        cset = ca.candidates(BOX_V, BOX_F, **SMALL)
+        sel = ca.select(cset, delta=0.03)
+        sk = ca.connect(sel, method="power")
+        self.assertEqual(rows(sk.centers), rows(one.centers))
+        self.assertEqual(rows(sk.radii), rows(one.radii))
+        self.assertEqual(rows(sk.edges), rows(one.edges))
+        self.assertEqual(rows(sk.faces), rows(one.faces))
+        self.assertEqual(rows(sel.centers), rows(one.centers))
+        self.assertEqual(sel.stats["objective"], one.stats["objective"])
+        self.assertEqual(cset.count, one.stats["candidates"])
+        centers = rows(cset.centers)
+        self.assertEqual([centers[i] for i in rows(sel.indices)], rows(sel.centers))
+        for r, d in zip(rows(sel.radii), rows(sel.dilated_radii)):
+            self.assertAlmostEqual(d, r + 0.03 * cset.reference_length, delta=1e-12)
+        self.assertEqual(sk.stats["method"], "power")
+
+    def test_results_outlive_their_inputs_and_context(self):
+        with ca.Context() as ctx:
+            cset = ca.candidates(BOX_V, BOX_F, context=ctx, **SMALL)
+        sel = ca.select(cset)
+        centers = sel.centers
+        del cset, sel  # the arrays keep their selection (and it its candidate set) alive
+        sk = ca.connect(ca.select(ca.candidates(BOX_V, BOX_F, **SMALL)))
+        self.assertEqual(rows(centers), rows(sk.centers))
+
+    def test_target_count_and_routes(self):
+        full = ca.skeletonize(BOX_V, BOX_F, **SMALL)
+        k = max(1, len(full.radii) - 2)
+        small = ca.skeletonize(BOX_V, BOX_F, target_count=k, **SMALL)
+        self.assertLessEqual(len(small.radii), k)
+        self.assertGreater(small.stats["delta_absolute"], full.stats["delta_absolute"])
+        for route in ("power", "medial"):
+            self.assertEqual(ca.skeletonize(BOX_V, BOX_F, connect=route, **SMALL).stats["components"], 1)
+
+    def test_masks(self):
+        cset = ca.candidates(BOX_V, BOX_F, **SMALL)
+        free = ca.select(cset)
+        out = [i in set(rows(free.indices)) for i in range(cset.count)]
+        sel = ca.select(cset, forced_out=out)
+        self.assertFalse(set(rows(sel.indices)) & set(rows(free.indices)))
+        with self.assertRaises(ca.CoverageAxisError) as cm:
+            ca.select(cset, forced_in=[0, 1])
+        self.assertEqual(cm.exception.status, ca.CA_ERROR_INVALID_ARGUMENT)
+
+    def test_results_in_caller_units(self):
+        a = ca.skeletonize(BOX_V, BOX_F, **SMALL)
+        b = ca.skeletonize([(1000 * x, 1000 * y, 1000 * z) for x, y, z in BOX_V], BOX_F, **SMALL)
+        self.assertEqual(len(a.radii), len(b.radii))
+        for ra, rb in zip(rows(a.radii), rows(b.radii)):
+            self.assertAlmostEqual(1000 * ra, rb, delta=1e-6 * rb)
+
+    def test_errors_carry_status_and_message(self):
+        bad = list(BOX_V)
+        bad[2] = (2, float("nan"), 0)
+        with self.assertRaises(ca.CoverageAxisError) as cm:
+            ca.skeletonize(bad, BOX_F)
+        self.assertEqual(cm.exception.status, ca.CA_ERROR_INVALID_INPUT)
+        self.assertIn("vertex 2", cm.exception.message)
+        with self.assertRaises(ca.CoverageAxisError) as cm:
+            ca.skeletonize(BOX_V, [(0, 1, 99)])
+        self.assertEqual(cm.exception.status, ca.CA_ERROR_INVALID_INPUT)
+        with self.assertRaises(ca.CoverageAxisError) as cm:
+            ca.skeletonize(BOX_V, [(0, 1, -1)])
+        self.assertEqual(cm.exception.status, ca.CA_ERROR_INVALID_INPUT)
+        with self.assertRaises(ca.CoverageAxisError) as cm:
+            ca.skeletonize(BOX_V[:4], [(0, 1, 2), (0, 2, 3)])
+        self.assertEqual(cm.exception.status, ca.CA_ERROR_DEGENERATE_INPUT)
+        with self.assertRaises(ca.CoverageAxisError) as cm:
+            ca.skeletonize(BOX_V, BOX_F, delta=-1)
+        self.assertEqual(cm.exception.status, ca.CA_ERROR_INVALID_ARGUMENT)
+        self.assertTrue(cm.exception.message)
+        with self.assertRaises(ca.CoverageAxisError) as cm:
+            ca.skeletonize(BOX_V, BOX_F, solver="fastest")
+        self.assertEqual(cm.exception.status, ca.CA_ERROR_INVALID_ARGUMENT)
+        with self.assertRaises(ca.CoverageAxisError) as cm:
+            ca.Context(threads=-1)
+        self.assertEqual(cm.exception.status, ca.CA_ERROR_INVALID_ARGUMENT)
+        with self.assertRaises(TypeError):
+            ca.skeletonize(BOX_V, BOX_F, deltaa=0.1)
+
+    def test_progress_is_called_and_cancel_from_it_stops_the_step(self):
+        calls = []
+        ctx = ca.Context(progress=lambda stage, f: calls.append((stage, f)) or True)
+        with self.assertRaises(ca.CoverageAxisError) as cm:
+            ca.skeletonize(BOX_V, BOX_F, context=ctx, **SMALL)
+        self.assertEqual(cm.exception.status, ca.CA_ERROR_CANCELLED)
+        self.assertEqual(len(calls), 1)
+        calls.clear()
+        ctx = ca.Context(progress=lambda stage, f: calls.append((stage, f)) and False)
+        ca.skeletonize(BOX_V, BOX_F, context=ctx, **SMALL)
+        stages = [s for s, _ in calls]
+        for stage in ("sampling", "delaunay", "inside", "coverage", "selection", "connect"):
+            self.assertIn(stage, stages)
+        self.assertTrue(all(0 <= f <= 1 for _, f in calls))
+
+    def test_cancel_from_another_thread(self):
+        calls = []
+
+        def progress(stage, fraction):
+            calls.append(stage)
+            if len(calls) == 1:  # the first update: another thread cancels, this one waits for it
+                t = threading.Thread(target=ctx.cancel)
+                t.start()
+                t.join()
+            return False
+
+        ctx = ca.Context(progress=progress)
+        with self.assertRaises(ca.CoverageAxisError) as cm:
+            ca.candidates(BOX_V, BOX_F, context=ctx, **SMALL)
+        self.assertEqual(cm.exception.status, ca.CA_ERROR_CANCELLED)
+        self.assertEqual(len(calls), 1)
+        with self.assertRaises(ca.CoverageAxisError):  # the request stays until cleared
+            ca.candidates(BOX_V, BOX_F, context=ctx, **SMALL)
+        ctx.clear_cancel()
+        self.assertGreater(ca.candidates(BOX_V, BOX_F, context=ctx, **SMALL).count, 0)
+
+    def test_callback_exception_cancels_and_is_raised(self):
+        def progress(stage, fraction):
+            raise KeyError("from the callback")
+
+        ctx = ca.Context(progress=progress)
+        with self.assertRaises(KeyError):
+            ca.candidates(BOX_V, BOX_F, context=ctx, **SMALL)
+
+    def test_log_and_threads(self):
+        messages = []
+        ctx = ca.Context(threads=1, log=lambda level, m: messages.append((level, m)))
+        self.assertEqual(ctx.threads, 1)
+        serial = ca.skeletonize(BOX_V, BOX_F, context=ctx, **SMALL)
+        self.assertTrue(any("surface samples" in m for _, m in messages))
+        parallel = ca.skeletonize(BOX_V, BOX_F, context=ca.Context(threads=4), **SMALL)
+        self.assertEqual(rows(serial.centers), rows(parallel.centers))
+
+    def test_evaluate_one_ball(self):
+        sk = ca.Skeleton([(1, 0.5, 0.5)], [0.5])
+        e = ca.evaluate(BOX_V, BOX_F, sk, surface_samples=5000, envelope_samples=20000)
+        diag = math.sqrt(6)
+        self.assertAlmostEqual(e["diagonal"], diag, delta=1e-12)
+        self.assertAlmostEqual(e["hd_surface_to_recon"], 100 * (math.sqrt(1.5) - 0.5) / diag, delta=0.01)
+        self.assertLessEqual(e["hd_recon_to_surface"], 100 * 0.5 / diag + 1e-9)
+
+    def test_fox_equals_the_cli(self):
+        import tempfile
+        fox = os.path.join(DATA, "fox.obj")
+        with tempfile.TemporaryDirectory() as tmp:
+            ma = os.path.join(tmp, "fox.ma")
+            subprocess.run([os.environ["CA_CLI"], fox, "-o", ma, "--quiet"], check=True)
+            balls, edges, faces = read_ma(ma)
+        v, f = read_obj(fox)
+        sk = ca.skeletonize(v, f)
+        lo = [min(p[k] for p in v) for k in range(3)]
+        hi = [max(p[k] for p in v) for k in range(3)]
+        tol = 1e-6 * math.dist(lo, hi)  # the .ma file prints 9 significant digits
+        self.assertEqual(len(sk), len(balls))
+        self.assertEqual((len(sk.edges), len(sk.faces)), (edges, faces))
+        for (x, y, z), r, ball in zip(rows(sk.centers), rows(sk.radii), balls):
+            self.assertLessEqual(math.dist((x, y, z), ball[:3]), tol)
+            self.assertAlmostEqual(r, ball[3], delta=tol)
+
+
+class NumpyTest(unittest.TestCase):
+    """numpy in and out; runs where numpy is installed, which this run requires."""
+
+    def setUp(self):
+        self.assertTrue(ca.HAVE_NUMPY, "numpy is not installed for %s (scripts/install-deps.sh)" % sys.executable)
+        self.v, self.f = np.array(BOX_V, dtype=np.float64), np.array(BOX_F, dtype=np.uint32)
+
+    def test_numpy_out(self):
+        sk = ca.skeletonize(self.v, self.f, **SMALL)
+        n = len(sk)
+        for a, dtype, shape in ((sk.centers, np.float64, (n, 3)), (sk.radii, np.float64, (n,)),
+                                (sk.edges, np.uint32, (len(sk.edges), 2)), (sk.faces, np.uint32, (len(sk.faces), 3))):
+            self.assertIsInstance(a, np.ndarray)
+            self.assertEqual((a.dtype, a.shape), (dtype, shape))
+            self.assertFalse(a.flags.writeable)
+        cset = ca.candidates(self.v, self.f, **SMALL)
+        self.assertEqual(cset.samples.shape, (cset.sample_count, 3))
+        self.assertEqual(cset.sample_count, SMALL["cover_samples"])
+
+    def test_triangle_arrays_are_not_truth_tested(self):
+        # a numpy triangle array used to raise "The truth value of an array ... is ambiguous"
+        sk = ca.skeletonize(self.v, self.f, **SMALL)
+        self.assertEqual(sk.stats["method"], "medial")  # a mesh, not a point cloud
+        self.assertEqual(ca.skeletonize(BOX_V, BOX_F, **SMALL).centers.tolist(), sk.centers.tolist())
+
+    def test_dtype_conversions(self):
+        want = ca.skeletonize(self.v, self.f, **SMALL).centers.tolist()
+        for vd in (np.float32, np.int64, np.int32):
+            for fd in (np.int64, np.int32, np.uint16, np.uint64, np.float64):
+                sk = ca.skeletonize(self.v.astype(vd), self.f.astype(fd), **SMALL)
+                self.assertEqual(sk.centers.tolist(), want, (vd, fd))
+        for bad in (self.f.astype(np.float64) + 0.5, self.f.astype(np.int64) - 1, self.f[:, :2]):
+            with self.assertRaises(ca.CoverageAxisError) as cm:
+                ca.skeletonize(self.v, bad)
+            self.assertEqual(cm.exception.status, ca.CA_ERROR_INVALID_INPUT)
+        with self.assertRaises(ca.CoverageAxisError):
+            ca.skeletonize(self.v.astype(str), self.f)
+
+    def test_no_copy_of_contiguous_float64_and_uint32(self):
+        view, keep = _steps._surface(self.v, self.f, None)
+        self.assertEqual(view.positions, self.v.ctypes.data)
+        self.assertEqual(view.triangles, self.f.ctypes.data)
+        wide = np.hstack([self.v, np.ones((len(self.v), 2))])  # rows of 5 doubles: a strided view
+        view, keep = _steps._surface(wide[:, :3], self.f, None)
+        self.assertEqual((view.positions, view.position_stride), (wide.ctypes.data, 40))
+        view, keep = _steps._surface(self.v.astype(np.float32), self.f.astype(np.int64), None)
+        self.assertNotEqual(view.positions, self.v.ctypes.data)
+        self.assertEqual(ca.skeletonize(wide[:, :3], self.f, **SMALL).centers.tolist(),
+                         ca.skeletonize(self.v, self.f, **SMALL).centers.tolist())
+
+    def test_results_view_the_library_memory(self):
+        sk = ca.connect(ca.select(ca.candidates(self.v, self.f, **SMALL)))
+        again = ca.evaluate(self.v, self.f, sk, surface_samples=2000, envelope_samples=5000)
+        listed = ca.Skeleton(sk.centers.tolist(), sk.radii.tolist(), sk.edges.tolist(), sk.faces.tolist())
+        self.assertEqual(again, dict(ca.evaluate(self.v, self.f, listed, surface_samples=2000, envelope_samples=5000),
+                                     time_s=again["time_s"]))
+
+    def test_runs_without_numpy(self):
+        env = dict(os.environ, CA_TEST_HIDE_NUMPY="1")
+        r = subprocess.run([sys.executable, "-m", "unittest", "test_coverage_axis"], env=env,
+                           cwd=os.path.dirname(os.path.abspath(__file__)), capture_output=True, text=True)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("OK", r.stderr)
+        r = subprocess.run([sys.executable, "-c", "import sys; sys.modules['numpy'] = None\n"
+                            "import coverage_axis as ca; print(ca.HAVE_NUMPY)\n"
+                            "sk = ca.skeletonize(%r, %r, cover_samples=400, voronoi_samples=800)\n"
+                            "print(type(sk.centers).__name__, type(sk.centers[0]).__name__, sk.centers)"
+                            % (BOX_V, BOX_F)], env=env, capture_output=True, text=True)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        have, kind, item, centers = r.stdout.split(maxsplit=3)
+        self.assertEqual((have, kind, item), ("False", "list", "tuple"))
+        self.assertEqual(eval(centers), [tuple(c) for c in ca.skeletonize(self.v, self.f, **SMALL).centers.tolist()])
+
+
+def load_tests(loader, tests, pattern):
+    """With numpy hidden, the common tests only; else all, and NumpyTest requires numpy."""
+    classes = [CommonTest] if os.environ.get("CA_TEST_HIDE_NUMPY") else [CommonTest, NumpyTest]
+    return unittest.TestSuite(loader.loadTestsFromTestCase(c) for c in classes)
+
+
+if __name__ == "__main__":
+    unittest.main()
