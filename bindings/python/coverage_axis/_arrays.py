@@ -30,8 +30,9 @@ def _is_empty(x):
     return x is None or (len(x) == 0 if np is None or not isinstance(x, np.ndarray) else x.size == 0)
 
 
-def points(x, name, width=3):
-    """(n, width) coordinates as packed doubles per row. Floats and integers of any dtype."""
+def points(x, name, width=3, packed=False):
+    """(n, width) coordinates as packed doubles per row (packed: and rows one after the other).
+    Floats and integers of any dtype."""
     if np is not None:
         a = np.asarray(x)
         if a.size == 0:
@@ -40,7 +41,7 @@ def points(x, name, width=3):
             raise CoverageAxisError(CA_ERROR_INVALID_INPUT, "%s: expected shape (n, %d), got %s" % (name, width, a.shape))
         if a.dtype.kind not in "fiu":
             raise CoverageAxisError(CA_ERROR_INVALID_INPUT, "%s: expected numbers, got dtype %s" % (name, a.dtype))
-        if a.dtype != np.float64 or a.strides[1] != 8 or a.strides[0] < 8 * width:
+        if a.dtype != np.float64 or a.strides[1] != 8 or a.strides[0] < 8 * width or (packed and a.strides[0] != 8 * width):
             a = np.ascontiguousarray(a, dtype=np.float64)
         return Buffer(a.ctypes.data if a.size else None, a.shape[0], a.strides[0] if a.size else 0, a)
     rows = [tuple(r) for r in (x or [])]

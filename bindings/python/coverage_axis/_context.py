@@ -66,6 +66,8 @@ class Context:
 
     def run(self, function, *args):
         """Calls a ca_* step with this context first; raises CoverageAxisError on failure."""
+        if not self._ptr:
+            raise RuntimeError("the context is closed")
         if self._runner == threading.get_ident():
             raise RuntimeError("a callback of this context called a step on the same context")
         with self._busy:

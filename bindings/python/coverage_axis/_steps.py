@@ -95,64 +95,57 @@ def _surface(vertices, triangles, normals):
 
 
 class _Handle:
-    """Owns one library object and destroys it when the last Python reference goes."""
-    _destroy = None
+    """Owns one library object and destroys it when the last reference goes. The arrays viewing
+    the object's memory reference the handle (not the result object holding them: no cycle)."""
 
-    def __init__(self, ptr):
-        self._lib, self._ptr = lib(), ptr
+    def __init__(self, ptr, destroy):
+        self._lib, self._ptr, self._destroy = lib(), ptr, destroy
 
     def __del__(self):
         if getattr(self, "_ptr", None):
             getattr(self._lib, self._destroy)(self._ptr)
             self._ptr = None
 
-    def _get(self, name):
+    def get(self, name):
         return getattr(self._lib, name)(self._ptr)
 
-    def _view(self, getter, count, width, ctype=ctypes.c_double):
-        return _arrays.view(self._get(getter), count, width, ctype, self)
+    def view(self, getter, count, width, ctype=ctypes.c_double):
+        return _arrays.view(self.get(getter), count, width, ctype, self)
 
 
-class CandidateSet(_Handle):
+class CandidateSet:
     """Step 1's result: surface samples and inner candidate balls (read-only arrays, no copies)."""
-    _destroy = "ca_candidate_set_destroy"
 
     def __init__(self, ptr):
-        super().__init__(ptr)
-        self.count = self._get("ca_candidate_set_count")
-        self.sample_count = self._get("ca_candidate_set_sample_count")
-        self.reference_length = self._get("ca_candidate_set_reference_length")  # the length delta is a fraction of
-        self.flipped = bool(self._get("ca_candidate_set_flipped"))  # the mesh faced inward and was flipped
-        self.centers = self._view("ca_candidate_set_centers", self.count, 3)
-        self.radii = self._view("ca_candidate_set_radii", self.count, 1)
-        self.samples = self._view("ca_candidate_set_samples", self.sample_count, 3)
+        h = self._handle = _Handle(ptr, "ca_candidate_set_destroy")
+        self.count = h.get("ca_candidate_set_count")
+        self.sample_count = h.get("ca_candidate_set_sample_count")
+        self.reference_length = h.get("ca_candidate_set_reference_length")  # the length delta is a fraction of
+        self.flipped = bool(h.get("ca_candidate_set_flipped"))  # the mesh faced inward and was flipped
+        self.centers = h.view("ca_candidate_set_centers", self.count, 3)
+        self.radii = h.view("ca_candidate_set_radii", self.count, 1)
+        self.samples = h.view("ca_candidate_set_samples", self.sample_count, 3)
 
 
-class Selection(_Handle):
+class Selection:
     """Step 2's result: the selected balls (indices into the candidate set), their undilated and
     dilated radii, the uncovered samples (skip_uncoverable) and the solver's statistics."""
-    _destroy = "ca_selection_destroy"
 
     def __init__(self, ptr, candidate_set):
-        super().__init__(ptr)
+        h = self._handle = _Handle(ptr, "ca_selection_destroy")
         self.candidate_set = candidate_set
-        self.count = self._get("ca_selection_count")
-        self.indices = self._view("ca_selection_indices", self.count, 1, ctypes.c_uint32)
-        self.centers = self._view("ca_selection_centers", self.count, 3)
-        self.radii = self._view("ca_selection_radii", self.count, 1)
-        self.dilated_radii = self._view("ca_selection_dilated_radii", self.count, 1)
-        self.uncovered = self._view("ca_selection_uncovered", self._get("ca_selection_uncovered_count"), 1,
-                                    ctypes.c_uint32)
+        self.count = h.get("ca_selection_count")
+        self.indices = h.view("ca_selection_indices", self.count, 1, ctypes.c_uint32)
+        self.centers = h.view("ca_selection_centers", self.count, 3)
+        self.radii = h.view("ca_selection_radii", self.count, 1)
+        self.dilated_radii = h.view("ca_selection_dilated_radii", self.count, 1)
+        self.uncovered = h.view("ca_selection_uncovered", h.get("ca_selection_uncovered_count"), 1, ctypes.c_uint32)
         stats = output_struct(_SelectStats)
-        status = self._lib.ca_selection_stats(self._ptr, ctypes.byref(stats))
+        status = h._lib.ca_selection_stats(h._ptr, ctypes.byref(stats))
         if status:
             raise CoverageAxisError(status, "ca_selection_stats failed")
         self.stats = {name: _named(name, v) for name, v in struct_dict(stats).items()}
         self.stats["proven_optimal"] = bool(stats.proven_optimal)
-
-
-class _SkeletonHandle(_Handle):
-    _destroy = "ca_skeleton_destroy"
 
 
 class Skeleton:
@@ -169,15 +162,15 @@ class Skeleton:
 
     @classmethod
     def _from_handle(cls, ptr):
-        h = _SkeletonHandle(ptr)
-        n = h._get("ca_skeleton_vertex_count")
+        h = _Handle(ptr, "ca_skeleton_destroy")
+        n = h.get("ca_skeleton_vertex_count")
         stats = output_struct(_SkeletonStats)
         status = h._lib.ca_skeleton_stats_get(h._ptr, ctypes.byref(stats))
         if status:
             raise CoverageAxisError(status, "ca_skeleton_stats_get failed")
-        return cls(h._view("ca_skeleton_centers", n, 3), h._view("ca_skeleton_radii", n, 1),
-                   h._view("ca_skeleton_edges", h._get("ca_skeleton_edge_count"), 2, ctypes.c_uint32),
-                   h._view("ca_skeleton_faces", h._get("ca_skeleton_face_count"), 3, ctypes.c_uint32),
+        return cls(h.view("ca_skeleton_centers", n, 3), h.view("ca_skeleton_radii", n, 1),
+                   h.view("ca_skeleton_edges", h.get("ca_skeleton_edge_count"), 2, ctypes.c_uint32),
+                   h.view("ca_skeleton_faces", h.get("ca_skeleton_face_count"), 3, ctypes.c_uint32),
                    {name: _named(name, v) for name, v in struct_dict(stats).items()})
 
 
@@ -207,7 +200,7 @@ def select(candidate_set, *, context=None, ignorable_samples=None, forced_in=Non
     for name, m in zip(_MASKS, masks):
         setattr(opts, name, ctypes.addressof(m) if m is not None and len(m) else None)
     out = ctypes.c_void_p()
-    _run(context, lib().ca_select, candidate_set._ptr, ctypes.byref(opts), ctypes.byref(out))
+    _run(context, lib().ca_select, candidate_set._handle._ptr, ctypes.byref(opts), ctypes.byref(out))
     del masks
     return Selection(out, candidate_set)
 
@@ -217,9 +210,12 @@ def connect(selection, *, context=None, **options):
     Options: method ("auto" | "medial" | "power"), remove_outside, fill_holes, reconnect."""
     opts = _options("connect", options)
     out = ctypes.c_void_p()
-    _run(context, lib().ca_connect, selection.candidate_set._ptr, selection._ptr, ctypes.byref(opts),
+    _run(context, lib().ca_connect, selection.candidate_set._handle._ptr, selection._handle._ptr, ctypes.byref(opts),
          ctypes.byref(out))
     return Skeleton._from_handle(out)
+
+
+_connect_step = connect  # skeletonize()'s connect= option hides the function's name
 
 
 def evaluate(vertices, triangles, skeleton, *, context=None, **options):
@@ -227,14 +223,12 @@ def evaluate(vertices, triangles, skeleton, *, context=None, **options):
     cones and slabs), in % of the bounding-box diagonal, as a dict.
     Options: surface_samples, envelope_samples, seed."""
     view, keep = _surface(vertices, triangles, None)
-    c = _arrays.points(skeleton.centers, "skeleton.centers")
-    r = _arrays.points(_column(skeleton.radii), "skeleton.radii", 1)
+    c = _arrays.points(skeleton.centers, "skeleton.centers", packed=True)  # ca_skeleton_view has no strides
+    r = _arrays.points(_column(skeleton.radii), "skeleton.radii", 1, packed=True)
     e = _arrays.indices(skeleton.edges, "skeleton.edges", 2)
     f = _arrays.indices(skeleton.faces, "skeleton.faces", 3)
     if r.count != c.count:
         raise CoverageAxisError(CA_ERROR_INVALID_ARGUMENT, "skeleton: %d centers, %d radii" % (c.count, r.count))
-    if c.count and c.stride not in (0, 24):
-        c = _arrays.points(_arrays.np.ascontiguousarray(c.keep), "skeleton.centers")  # the view has no stride
     sv = fill_defaults("ca_skeleton_view_defaults", _SkeletonView)
     sv.centers, sv.radii, sv.vertex_count = c.address, r.address, c.count
     sv.edges, sv.edge_count, sv.faces, sv.face_count = e.address, e.count, f.address, f.count
@@ -266,6 +260,6 @@ def skeletonize(vertices, triangles=None, normals=None, *, context=None, connect
         steps[step][name] = value
     cset = candidates(vertices, triangles, normals, context=context, **steps["candidates"])
     sel = select(cset, context=context, **steps["select"])
-    sk = globals()["connect"](sel, context=context, **steps["connect"])
+    sk = _connect_step(sel, context=context, **steps["connect"])
     sk.stats = dict(sel.stats, **sk.stats, candidates=cset.count)
     return sk

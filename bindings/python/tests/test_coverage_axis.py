@@ -4,6 +4,7 @@ built library), CA_CLI (the coverage-axis tool) and CA_TEST_DATA (tests/data) se
 It runs once with numpy (which must be installed: scripts/install-deps.sh) and, from
 test_runs_without_numpy, once more in a subprocess with numpy hidden (CA_TEST_HIDE_NUMPY=1 makes
 `import numpy` fail), where inputs are lists and results lists of tuples."""
+import gc
 import inspect
 import math
 import os
@@ -12,6 +13,7 @@ import subprocess
 import sys
 import threading
 import unittest
+import weakref
 
 if os.environ.get("CA_TEST_HIDE_NUMPY"):
     sys.modules["numpy"] = None  # `import numpy` now raises ImportError
@@ -322,6 +324,28 @@ class NumpyTest(unittest.TestCase):
         listed = ca.Skeleton(sk.centers.tolist(), sk.radii.tolist(), sk.edges.tolist(), sk.faces.tolist())
         self.assertEqual(again, dict(ca.evaluate(self.v, self.f, listed, surface_samples=2000, envelope_samples=5000),
                                      time_s=again["time_s"]))
+
+    def test_arrays_keep_their_result_alive_and_nothing_else(self):
+        gc.disable()  # reference counts alone must free a result: the views form no cycle with it
+        try:
+            cset = ca.candidates(self.v, self.f, **SMALL)
+            handle = weakref.ref(cset._handle)
+            centers = cset.centers
+            del cset
+            self.assertIsNotNone(handle())
+            self.assertEqual(centers.shape[1], 3)
+            del centers
+            self.assertIsNone(handle())
+        finally:
+            gc.enable()
+
+    def test_evaluate_packs_strided_arrays(self):
+        sk = ca.skeletonize(self.v, self.f, **SMALL)
+        opts = dict(surface_samples=2000, envelope_samples=5000)
+        want = ca.evaluate(self.v, self.f, sk, **opts)
+        wide = np.hstack([sk.centers, sk.radii[:, None]])  # rows of 4: strided centers and radii
+        got = ca.evaluate(self.v, self.f, ca.Skeleton(wide[:, :3], wide[:, 3], sk.edges, sk.faces), **opts)
+        self.assertEqual(dict(got, time_s=0), dict(want, time_s=0))
 
     def test_runs_without_numpy(self):
         env = dict(os.environ, CA_TEST_HIDE_NUMPY="1")
