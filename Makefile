@@ -5,7 +5,7 @@ CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 DEMO_MODEL ?= tests/data/fox.obj
 DATA ?= ../shared/data
 
-.PHONY: all deps configure build demo test bench install clean fuzz
+.PHONY: all deps configure build demo test bench install clean fuzz blender-addon test-blender
 
 all: build
 
@@ -24,6 +24,15 @@ demo: build
 
 test: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# the Blender add-on as an installable zip, the Python binding and the library bundled inside
+blender-addon: build
+	@bash bindings/blender/pack.sh $(BUILD) $(BUILD)/coverage_axis_blender.zip
+
+# the add-on in headless Blender (installs Debian's blender first)
+test-blender: build
+	@bash scripts/install-deps.sh blender
+	@bash bindings/blender/tests/run_test.sh $(BUILD) .
 
 # every bench program, its output written to docs/benchmarks.md (stamped with date, machine, commit)
 bench: build

@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
 # install-deps.sh: installs the Debian packages the build needs, only those that are missing.
 # Runs apt-get as root (or through sudo when available). Safe to run again.
+# usage: install-deps.sh [EXTRA_PACKAGE...]
 set -euo pipefail
 # python3 and its numpy, setuptools and pip run the Python binding's tests only (with numpy; its
 # pip install); the library itself needs the others.
 packages=(build-essential cmake pkg-config libeigen3-dev libnanoflann-dev coinor-libcbc-dev libqhull-dev doctest-dev python3
           python3-numpy python3-setuptools python3-pip)
+# extra packages a make target needs (make test-blender: blender)
+packages+=("$@")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
