@@ -2,12 +2,11 @@
 every ca_* function the binding calls, checks the ABI version, and turns statuses into
 CoverageAxisError.
 
-The library is looked for, first found wins:
-  1. the path given to load_library(path) (an application's own setting, e.g. a preference);
-  2. $CA_LIBRARY;
-  3. a libcoverage_axis.so* bundled in this package's folder;
-  4. the path `make install` wrote into _install_path.py;
-  5. ctypes.util.find_library("coverage_axis") (the system's search path).
+The library is the path given to load_library(path) (an application's own setting, e.g. a
+preference), else $CA_LIBRARY: either, when given, is the only place tried (a wrong setting is
+reported, not replaced by another copy). Without them, first found wins: a libcoverage_axis.so*
+bundled in this package's folder, the path `make install` wrote into _install_path.py, then
+ctypes.util.find_library("coverage_axis") (the system's search path).
 It is loaded on first use, so `import coverage_axis` works without it."""
 import ctypes
 import ctypes.util
@@ -87,8 +86,10 @@ _loaded = None
 def _candidates(path):
     if path:
         yield "load_library()", path
+        return
     if os.environ.get("CA_LIBRARY"):
         yield "$CA_LIBRARY", os.environ["CA_LIBRARY"]
+        return
     here = os.path.dirname(os.path.abspath(__file__))
     for bundled in sorted(glob.glob(os.path.join(here, "libcoverage_axis.so*")) +
                           glob.glob(os.path.join(here, "libcoverage_axis*.dylib")) +

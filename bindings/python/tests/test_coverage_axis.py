@@ -37,34 +37,25 @@ def rows(a):
             (a.tolist() if hasattr(a, "tolist") else a)]
 
 
+def records(path, kind):
+    """The fields after the keyword of each line of a text file that starts with `kind` (OBJ, .ma)."""
+    with open(path) as f:
+        return [line.split()[1:] for line in f if line.split()[:1] == [kind]]
+
+
 def read_obj(path):
-    v, f = [], []
-    with open(path) as lines:
-        text = lines.read().splitlines()
-    for line in text:
-        p = line.split()
-        if p and p[0] == "v":
-            v.append(tuple(float(x) for x in p[1:4]))
-        elif p and p[0] == "f":
-            idx = [int(x.split("/")[0]) - 1 for x in p[1:]]
-            f += [(idx[0], idx[k], idx[k + 1]) for k in range(1, len(idx) - 1)]
-    return v, f
+    """Vertices and triangles (polygons fanned) of an OBJ file, 0-based."""
+    f = []
+    for face in records(path, "f"):
+        idx = [int(x.split("/")[0]) - 1 for x in face]
+        f += [(idx[0], idx[k], idx[k + 1]) for k in range(1, len(idx) - 1)]
+    return [tuple(float(x) for x in p[:3]) for p in records(path, "v")], f
 
 
 def read_ma(path):
     """Balls (x, y, z, r), edge and face counts of a .ma file."""
-    balls, edges, faces = [], 0, 0
-    with open(path) as lines:
-        text = lines.read().splitlines()
-    for line in text:
-        p = line.split()
-        if p and p[0] == "v":
-            balls.append(tuple(float(x) for x in p[1:5]))
-        elif p and p[0] == "e":
-            edges += 1
-        elif p and p[0] == "f":
-            faces += 1
-    return balls, edges, faces
+    return ([tuple(float(x) for x in p[:4]) for p in records(path, "v")], len(records(path, "e")),
+            len(records(path, "f")))
 
 
 class CommonTest(unittest.TestCase):
@@ -73,6 +64,16 @@ class CommonTest(unittest.TestCase):
     def test_version_and_library(self):
         self.assertRegex(ca.version(), r"^\d+\.\d+\.\d+$")
         self.assertTrue(os.path.exists(ca.load_library()))
+
+    def test_a_library_that_cannot_load_is_reported(self):
+        script = ("import coverage_axis as ca\ntry:\n    ca.load_library(%s)\nexcept ca.LibraryNotFoundError as e:\n"
+                  "    print(isinstance(e, ImportError), e)\n")
+        for arg, env in (("'/nonexistent/libcoverage_axis.so'", {}), ("", {"CA_LIBRARY": "/nonexistent/libcoverage_axis.so"})):
+            r = subprocess.run([sys.executable, "-c", script % arg], env=dict(os.environ, **env),
+                               capture_output=True, text=True)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertTrue(r.stdout.startswith("True libcoverage_axis not found"), r.stdout)
+            self.assertIn("/nonexistent/libcoverage_axis.so", r.stdout)
 
     def test_box_skeleton_is_on_the_medial_axis(self):
         sk = ca.skeletonize(BOX_V, BOX_F, **SMALL)
