@@ -20,14 +20,14 @@ from ._structs import (_CandidateOptions, _ConnectOptions, _ContextDesc, _Evalua
 
 ABI_VERSION = 2
 
-# pinned status codes of the header (CA_OK = 0 ... CA_ERROR_NO_CANDIDATES = 13)
-STATUS_NAMES = {
-    0: "CA_OK", 1: "CA_ERROR_INVALID_ARGUMENT", 2: "CA_ERROR_NULL_POINTER", 3: "CA_ERROR_STRUCT_SIZE",
-    4: "CA_ERROR_INVALID_INPUT", 5: "CA_ERROR_DEGENERATE_INPUT", 6: "CA_ERROR_UNCOVERABLE", 7: "CA_ERROR_GEOMETRY",
-    8: "CA_ERROR_SOLVER", 9: "CA_ERROR_CANCELLED", 10: "CA_ERROR_OUT_OF_MEMORY", 11: "CA_ERROR_BUFFER_TOO_SMALL",
-    12: "CA_ERROR_INTERNAL", 13: "CA_ERROR_NO_CANDIDATES",
-}
-globals().update({name: code for code, name in STATUS_NAMES.items()})
+# the header's pinned status codes, CA_OK = 0 ... CA_ERROR_NO_CANDIDATES = 13
+STATUS_NAMES = ("CA_OK", "CA_ERROR_INVALID_ARGUMENT", "CA_ERROR_NULL_POINTER", "CA_ERROR_STRUCT_SIZE",
+                "CA_ERROR_INVALID_INPUT", "CA_ERROR_DEGENERATE_INPUT", "CA_ERROR_UNCOVERABLE", "CA_ERROR_GEOMETRY",
+                "CA_ERROR_SOLVER", "CA_ERROR_CANCELLED", "CA_ERROR_OUT_OF_MEMORY", "CA_ERROR_BUFFER_TOO_SMALL",
+                "CA_ERROR_INTERNAL", "CA_ERROR_NO_CANDIDATES")
+(CA_OK, CA_ERROR_INVALID_ARGUMENT, CA_ERROR_NULL_POINTER, CA_ERROR_STRUCT_SIZE, CA_ERROR_INVALID_INPUT,
+ CA_ERROR_DEGENERATE_INPUT, CA_ERROR_UNCOVERABLE, CA_ERROR_GEOMETRY, CA_ERROR_SOLVER, CA_ERROR_CANCELLED,
+ CA_ERROR_OUT_OF_MEMORY, CA_ERROR_BUFFER_TOO_SMALL, CA_ERROR_INTERNAL, CA_ERROR_NO_CANDIDATES) = range(14)
 
 LOG_FN = CFUNCTYPE(None, c_void_p, c_int32, c_char_p)
 PROGRESS_FN = CFUNCTYPE(c_int32, c_void_p, c_char_p, c_double)
@@ -37,7 +37,8 @@ class CoverageAxisError(Exception):
     """A call failed: .status is the ca_status code (CA_ERROR_*), .message the explanation."""
 
     def __init__(self, status, message):
-        super().__init__("%s: %s" % (STATUS_NAMES.get(status, status), message))
+        name = STATUS_NAMES[status] if 0 <= status < len(STATUS_NAMES) else "status %d" % status
+        super().__init__("%s: %s" % (name, message))
         self.status = status
         self.message = message
 

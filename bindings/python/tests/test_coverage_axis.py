@@ -65,6 +65,11 @@ class CommonTest(unittest.TestCase):
         self.assertRegex(ca.version(), r"^\d+\.\d+\.\d+$")
         self.assertTrue(os.path.exists(ca.load_library()))
 
+    def test_status_names_are_the_librarys(self):
+        for code, name in enumerate(ca.STATUS_NAMES):
+            self.assertEqual(getattr(ca, name), code)
+            self.assertTrue(ca._lib().ca_status_string(code).decode().startswith(name + ":"), name)
+
     def test_a_library_that_cannot_load_is_reported(self):
         script = ("import coverage_axis as ca\ntry:\n    ca.load_library(%s)\nexcept ca.LibraryNotFoundError as e:\n"
                   "    print(isinstance(e, ImportError), e)\n")
