@@ -91,9 +91,7 @@ std::vector<double> lp_duals_core(const Problem& P, const std::vector<double>& c
     // The core: reduced cost below 0.1, and the 5 cheapest columns of every row.
     constexpr double kCoreCost = 0.1;
     constexpr size_t kCorePerRow = 5;
-    std::vector<uint32_t> all_rows(P.R);
-    std::iota(all_rows.begin(), all_rows.end(), 0u);
-    std::vector<uint8_t> in_core = core_columns(P, cost, kCoreCost, kCorePerRow, all_rows);
+    std::vector<uint8_t> in_core = core_columns(P, cost, kCoreCost, kCorePerRow, all_rows(P));
     // Column-major arrays of the columns to add (all of the core first).
     std::vector<CoinBigIndex> colstart(1, 0);
     std::vector<int> rowidx;
@@ -432,10 +430,8 @@ CbcOutcome run_cbc(const Problem& P, size_t incumbent, const CbcSettings& settin
 // when there is none.
 std::vector<uint32_t> core_cover(const Problem& P, const std::vector<double>& cost, size_t incumbent,
                                  double time_limit_s, int threads, const Monitor& monitor) {
-    std::vector<uint32_t> all_rows(P.R);
-    std::iota(all_rows.begin(), all_rows.end(), 0u);
     // every row keeps a column: its cheapest
-    const Problem Q = restrict_columns(P, core_columns(P, cost, kCoreMaxCost, 1, all_rows));
+    const Problem Q = restrict_columns(P, core_columns(P, cost, kCoreMaxCost, 1, all_rows(P)));
     std::vector<uint32_t> forced;  // Q-local
     Problem K;                     // col_id Q-local
     if (!reduce_problem(Q, monitor, forced, K).ok()) return {};

@@ -18,9 +18,8 @@ RowGenOutcome row_generation(const Problem& K, size_t target, const Deadline& de
                              int threads, const Monitor& monitor) {
     RowGenOutcome out;
     size_t best = target;
-    std::vector<uint32_t> rows, all(K.R);
-    for (uint32_t r = 0; r < K.R; ++r) all[r] = r;
-    add_spread_rows(K, all, K.R, rows);  // a maximal set of rows pairwise sharing no column
+    std::vector<uint32_t> rows;
+    add_spread_rows(K, all_rows(K), K.R, rows);  // a maximal set of rows pairwise sharing no column
     out.lb = double(rows.size());        // each needs its own column
     std::vector<uint8_t> covered(K.R);
     while (!monitor.cancelled()) {

@@ -35,6 +35,8 @@ std::vector<uint32_t> greedy_complete(const Problem& P, const std::vector<uint32
 std::vector<uint32_t> greedy_cover(const Problem& P);
 std::vector<uint32_t> capp_cover(const Problem& P, const std::vector<Vec3>& centers,
                                  const std::vector<double>& radii, const std::vector<uint32_t>& preselected);
+// 0, 1, ..., R-1: every row of P.
+std::vector<uint32_t> all_rows(const Problem& P);
 uint32_t disjoint_bound(const Problem& P);
 bool covers_problem(const Problem& P, const std::vector<uint32_t>& sel);
 std::vector<Problem> split_components(const Problem& P);

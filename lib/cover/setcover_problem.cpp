@@ -149,25 +149,17 @@ std::vector<uint32_t> capp_cover(const Problem& P, const std::vector<Vec3>& cent
     return sel;
 }
 
+std::vector<uint32_t> all_rows(const Problem& P) {
+    std::vector<uint32_t> rows(P.R);
+    std::iota(rows.begin(), rows.end(), 0u);
+    return rows;
+}
+
 // Rows pairwise sharing no column need distinct columns: a valid lower bound.
 uint32_t disjoint_bound(const Problem& P) {
-    std::vector<uint32_t> order(P.R);
-    for (uint32_t r = 0; r < P.R; ++r) order[r] = r;
-    std::sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) {
-        const uint32_t dx = P.rptr[x + 1] - P.rptr[x], dy = P.rptr[y + 1] - P.rptr[y];
-        return dx != dy ? dx < dy : x < y;
-    });
-    std::vector<uint8_t> used(P.C, 0);
-    uint32_t count = 0;
-    for (uint32_t r : order) {
-        bool free = true;
-        for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1] && free; ++q)
-            if (used[P.rcol[q]]) free = false;
-        if (!free) continue;
-        ++count;
-        for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q) used[P.rcol[q]] = 1;
-    }
-    return count;
+    std::vector<uint32_t> rows;
+    add_spread_rows(P, all_rows(P), P.R, rows);
+    return uint32_t(rows.size());
 }
 
 bool covers_problem(const Problem& P, const std::vector<uint32_t>& sel) {
