@@ -3,10 +3,11 @@
 # Runs apt-get as root (or through sudo when available). Safe to run again.
 # usage: install-deps.sh [EXTRA_PACKAGE...]
 set -euo pipefail
-# python3 and its numpy, setuptools and pip run the Python binding's tests only (with numpy; its
-# pip install); the library itself needs the others.
-packages=(build-essential cmake pkg-config libeigen3-dev libnanoflann-dev coinor-libcbc-dev libqhull-dev doctest-dev python3
-          python3-numpy python3-setuptools python3-pip)
+# The library needs the first line. The binding tests add: python3 with numpy, setuptools and pip
+# (Python binding, its pip install, the layout checks), cargo (Rust binding; Debian's cargo brings
+# rustc), mono-mcs, mono-runtime and libmono-system-core4.0-cil (C# binding: compiler, runtime, LINQ).
+packages=(build-essential cmake pkg-config libeigen3-dev libnanoflann-dev coinor-libcbc-dev libqhull-dev doctest-dev
+          python3 python3-numpy python3-setuptools python3-pip cargo mono-mcs mono-runtime libmono-system-core4.0-cil)
 # extra packages a make target needs (make test-blender: blender)
 packages+=("$@")
 missing=()

@@ -1,0 +1,591 @@
+// CoverageAxis.cs: the C# binding of the coverage-axis C ABI (include/coverage_axis.h, ABI 2).
+// Native: P/Invoke declarations and the C structs, field for field (checked against the C layout
+// by tests/TestCoverageAxis.cs). Above it: SafeHandle subclasses that destroy the C objects,
+// CoverageAxisException with the status and message, option classes that start from the
+// library's defaults (ca_*_defaults), a Context with a Progress event and CancellationToken
+// parameters, and result classes whose arrays are copied out of the C objects.
+using System;
+using System.Runtime.InteropServices;
+using System.Threading;
+
+namespace CoverageAxis
+{
+    /// <summary>The pinned status codes of the C ABI.</summary>
+    public enum Status
+    {
+        Ok = 0, InvalidArgument = 1, NullPointer = 2, StructSize = 3, InvalidInput = 4,
+        DegenerateInput = 5, Uncoverable = 6, Geometry = 7, Solver = 8, Cancelled = 9,
+        OutOfMemory = 10, BufferTooSmall = 11, Internal = 12, NoCandidates = 13,
+    }
+
+    public enum Generator { Voronoi = 0, Random = 1 }
+    public enum Dilation { Offset = 0, Scale = 1 }
+    public enum Solver { Exact = 0, Greedy = 1, Capp = 2 }
+    public enum Effort { Fast = 0, Prove = 1 }
+    public enum ConnectMethod { Power = 0, Medial = 1, Auto = 2 }
+
+    /// <summary>P/Invoke declarations; struct and field names are the header's.</summary>
+    public static class Native
+    {
+        const string Lib = "coverage_axis";
+        /// <summary>The ABI version whose layouts these declarations follow.</summary>
+        public const uint AbiVersion = 2;
+
+        [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
+        public delegate void LogFn(IntPtr user, int level, IntPtr message);
+        [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
+        public delegate int ProgressFn(IntPtr user, IntPtr stage, double fraction);
+
+        [StructLayout(LayoutKind.Sequential)]
+        public struct ContextDesc
+        {
+            public uint struct_size;
+            public IntPtr alloc, free, alloc_user, log, log_user, progress, progress_user;
+            public int threads;
+            public double progress_interval_s; // ABI 2
+        }
+
+        [StructLayout(LayoutKind.Sequential)]
+        public struct SurfaceView
+        {
+            public uint struct_size;
+            public IntPtr positions;
+            public UIntPtr vertex_count, position_stride;
+            public IntPtr triangles;
+            public UIntPtr triangle_count, triangle_stride;
+            public IntPtr normals;
+            public UIntPtr normal_stride;
+        }
+
+        [StructLayout(LayoutKind.Sequential)]
+        public struct CandidateOptions
+        {
+            public uint struct_size;
+            public int generator;
+            public uint cover_samples, voronoi_samples, random_candidates;
+            public ulong seed;
+            public uint connect_samples;
+        }
+
+        [StructLayout(LayoutKind.Sequential)]
+        public struct SelectOptions
+        {
+            public uint struct_size;
+            public int dilation;
+            public double delta, scale;
+            public int solver;
+            public double time_limit_s;
+            public int skip_uncoverable;
+            public IntPtr ignorable_samples, forced_in, forced_out;
+            public uint target_count;
+            public double target_tolerance;
+            public uint divide_threshold;
+            public int effort;
+        }
+
+        [StructLayout(LayoutKind.Sequential)]
+        public struct SelectStats
+        {
+            public uint struct_size;
+            public int proven_optimal, solver;
+            public double objective, lower_bound, gap, delta_absolute, time_reduce_s, time_solve_s, time_total_s;
+            public ulong rows_before, cols_before, rows_after, cols_after, forced, components, probes, parts;
+            public double scale_used;
+            public double time_coverage_s;  // ABI 2
+            public ulong cbc_components;    // ABI 2
+            public ulong rowgen_rounds;     // ABI 2
+        }
+
+        [StructLayout(LayoutKind.Sequential)]
+        public struct ConnectOptions
+        {
+            public uint struct_size;
+            public int method, remove_outside, fill_holes, reconnect;
+        }
+
+        [StructLayout(LayoutKind.Sequential)]
+        public struct SkeletonStats
+        {
+            public uint struct_size;
+            public ulong vertices, edges, faces, components, isolated;
+            public long betti1;
+            public double time_s;
+            public int method;
+        }
+
+        [StructLayout(LayoutKind.Sequential)]
+        public struct SkeletonView
+        {
+            public uint struct_size;
+            public IntPtr centers, radii;
+            public UIntPtr vertex_count;
+            public IntPtr edges;
+            public UIntPtr edge_count;
+            public IntPtr faces;
+            public UIntPtr face_count;
+        }
+
+        [StructLayout(LayoutKind.Sequential)]
+        public struct EvaluateOptions
+        {
+            public uint struct_size;
+            public uint surface_samples, envelope_samples;
+            public ulong seed;
+        }
+
+        [StructLayout(LayoutKind.Sequential)]
+        public struct Evaluation
+        {
+            public uint struct_size;
+            public double hd_surface_to_recon, mean_surface_to_recon, hd_recon_to_surface, mean_recon_to_surface;
+            public double hd_two_sided, diagonal;
+            public ulong surface_samples_used, envelope_samples_used;
+            public double time_s;
+        }
+
+        /// <summary>Every struct declared here, in header order (for the layout check).</summary>
+        public static readonly Type[] Structs = {
+            typeof(ContextDesc), typeof(SurfaceView), typeof(CandidateOptions), typeof(SelectOptions),
+            typeof(SelectStats), typeof(ConnectOptions), typeof(SkeletonStats), typeof(SkeletonView),
+            typeof(EvaluateOptions), typeof(Evaluation),
+        };
+
+        [DllImport(Lib)] public static extern uint ca_version();
+        [DllImport(Lib)] public static extern uint ca_abi_version();
+        [DllImport(Lib)] public static extern IntPtr ca_status_string(int status);
+
+        [DllImport(Lib)] public static extern int ca_context_desc_defaults(ref ContextDesc desc, uint size);
+        [DllImport(Lib)] public static extern int ca_context_create(ref ContextDesc desc, out ContextHandle ctx);
+        [DllImport(Lib)] public static extern void ca_context_destroy(IntPtr ctx);
+        [DllImport(Lib)] public static extern void ca_context_request_cancel(ContextHandle ctx);
+        [DllImport(Lib)] public static extern void ca_context_clear_cancel(ContextHandle ctx);
+        [DllImport(Lib)] public static extern IntPtr ca_context_last_error(ContextHandle ctx);
+
+        [DllImport(Lib)] public static extern int ca_surface_view_defaults(ref SurfaceView view, uint size);
+        [DllImport(Lib)] public static extern int ca_candidate_options_defaults(ref CandidateOptions o, uint size);
+        [DllImport(Lib)] public static extern int ca_candidates(ContextHandle ctx, ref SurfaceView surface,
+            ref CandidateOptions options, out CandidateSetHandle set);
+        [DllImport(Lib)] public static extern void ca_candidate_set_destroy(IntPtr set);
+        [DllImport(Lib)] public static extern UIntPtr ca_candidate_set_count(CandidateSetHandle set);
+        [DllImport(Lib)] public static extern IntPtr ca_candidate_set_centers(CandidateSetHandle set);
+        [DllImport(Lib)] public static extern IntPtr ca_candidate_set_radii(CandidateSetHandle set);
+        [DllImport(Lib)] public static extern UIntPtr ca_candidate_set_sample_count(CandidateSetHandle set);
+        [DllImport(Lib)] public static extern IntPtr ca_candidate_set_samples(CandidateSetHandle set);
+        [DllImport(Lib)] public static extern double ca_candidate_set_reference_length(CandidateSetHandle set);
+        [DllImport(Lib)] public static extern int ca_candidate_set_flipped(CandidateSetHandle set);
+
+        [DllImport(Lib)] public static extern int ca_select_options_defaults(ref SelectOptions o, uint size);
+        [DllImport(Lib)] public static extern int ca_select(ContextHandle ctx, CandidateSetHandle set,
+            ref SelectOptions options, out SelectionHandle selection);
+        [DllImport(Lib)] public static extern void ca_selection_destroy(IntPtr selection);
+        [DllImport(Lib)] public static extern UIntPtr ca_selection_count(SelectionHandle s);
+        [DllImport(Lib)] public static extern IntPtr ca_selection_indices(SelectionHandle s);
+        [DllImport(Lib)] public static extern IntPtr ca_selection_centers(SelectionHandle s);
+        [DllImport(Lib)] public static extern IntPtr ca_selection_radii(SelectionHandle s);
+        [DllImport(Lib)] public static extern IntPtr ca_selection_dilated_radii(SelectionHandle s);
+        [DllImport(Lib)] public static extern UIntPtr ca_selection_uncovered_count(SelectionHandle s);
+        [DllImport(Lib)] public static extern IntPtr ca_selection_uncovered(SelectionHandle s);
+        [DllImport(Lib)] public static extern int ca_selection_stats(SelectionHandle s, ref SelectStats stats);
+
+        [DllImport(Lib)] public static extern int ca_connect_options_defaults(ref ConnectOptions o, uint size);
+        [DllImport(Lib)] public static extern int ca_connect(ContextHandle ctx, CandidateSetHandle set,
+            SelectionHandle selection, ref ConnectOptions options, out SkeletonHandle skeleton);
+        [DllImport(Lib)] public static extern void ca_skeleton_destroy(IntPtr skeleton);
+        [DllImport(Lib)] public static extern UIntPtr ca_skeleton_vertex_count(SkeletonHandle s);
+        [DllImport(Lib)] public static extern IntPtr ca_skeleton_centers(SkeletonHandle s);
+        [DllImport(Lib)] public static extern IntPtr ca_skeleton_radii(SkeletonHandle s);
+        [DllImport(Lib)] public static extern UIntPtr ca_skeleton_edge_count(SkeletonHandle s);
+        [DllImport(Lib)] public static extern IntPtr ca_skeleton_edges(SkeletonHandle s);
+        [DllImport(Lib)] public static extern UIntPtr ca_skeleton_face_count(SkeletonHandle s);
+        [DllImport(Lib)] public static extern IntPtr ca_skeleton_faces(SkeletonHandle s);
+        [DllImport(Lib)] public static extern int ca_skeleton_stats_get(SkeletonHandle s, ref SkeletonStats stats);
+
+        [DllImport(Lib)] public static extern int ca_skeleton_view_defaults(ref SkeletonView view, uint size);
+        [DllImport(Lib)] public static extern int ca_skeleton_get_view(SkeletonHandle s, ref SkeletonView view);
+        [DllImport(Lib)] public static extern int ca_evaluate_options_defaults(ref EvaluateOptions o, uint size);
+        [DllImport(Lib)] public static extern int ca_evaluate(ContextHandle ctx, ref SurfaceView surface,
+            ref SkeletonView skeleton, ref EvaluateOptions options, ref Evaluation result);
+
+        public static uint SizeOf<T>() { return (uint)Marshal.SizeOf(typeof(T)); }
+
+        /// <summary>Throws unless the library knows this binding's layout of a struct.</summary>
+        public static void CheckDefaults(int status, string name)
+        {
+            if (status != 0)
+                throw new CoverageAxisException((Status)status, "the linked library does not know this binding's " +
+                    name + " (ABI " + AbiVersion + ")");
+        }
+    }
+
+    public sealed class ContextHandle : SafeHandle
+    {
+        public ContextHandle() : base(IntPtr.Zero, true) { }
+        public override bool IsInvalid { get { return handle == IntPtr.Zero; } }
+        protected override bool ReleaseHandle() { Native.ca_context_destroy(handle); return true; }
+    }
+
+    public sealed class CandidateSetHandle : SafeHandle
+    {
+        public CandidateSetHandle() : base(IntPtr.Zero, true) { }
+        public override bool IsInvalid { get { return handle == IntPtr.Zero; } }
+        protected override bool ReleaseHandle() { Native.ca_candidate_set_destroy(handle); return true; }
+    }
+
+    public sealed class SelectionHandle : SafeHandle
+    {
+        public SelectionHandle() : base(IntPtr.Zero, true) { }
+        public override bool IsInvalid { get { return handle == IntPtr.Zero; } }
+        protected override bool ReleaseHandle() { Native.ca_selection_destroy(handle); return true; }
+    }
+
+    public sealed class SkeletonHandle : SafeHandle
+    {
+        public SkeletonHandle() : base(IntPtr.Zero, true) { }
+        public override bool IsInvalid { get { return handle == IntPtr.Zero; } }
+        protected override bool ReleaseHandle() { Native.ca_skeleton_destroy(handle); return true; }
+    }
+
+    /// <summary>A failed call: the library's status and its message.</summary>
+    public class CoverageAxisException : Exception
+    {
+        public Status Status { get; private set; }
+        public CoverageAxisException(Status status, string message) : base(message) { Status = status; }
+
+        /// <summary>The library's static name of a status.</summary>
+        public static string StatusString(Status status)
+        {
+            return Marshal.PtrToStringAnsi(Native.ca_status_string((int)status));
+        }
+    }
+
+    /// <summary>A surface: a triangle mesh (x y z per vertex, i j k per triangle, 0-based) or an
+    /// oriented point cloud (Triangles null, one outward normal per point). Arrays are read during
+    /// a call only.</summary>
+    public sealed class Surface
+    {
+        public double[] Positions;
+        public uint[] Triangles;
+        public double[] Normals;
+        public static Surface Mesh(double[] positions, uint[] triangles)
+        {
+            return new Surface { Positions = positions, Triangles = triangles };
+        }
+        public static Surface Points(double[] positions, double[] normals)
+        {
+            return new Surface { Positions = positions, Normals = normals };
+        }
+
+        /// <summary>Pins the arrays and calls f with their view.</summary>
+        internal T With<T>(Func<Native.SurfaceView, T> f)
+        {
+            var view = new Native.SurfaceView();
+            Native.CheckDefaults(Native.ca_surface_view_defaults(ref view, Native.SizeOf<Native.SurfaceView>()), "ca_surface_view");
+            var pins = new[] { Pin(Positions), Pin(Triangles), Pin(Normals) };
+            try
+            {
+                view.positions = Address(pins[0]);
+                view.vertex_count = (UIntPtr)(Positions == null ? 0 : Positions.Length / 3);
+                view.triangles = Address(pins[1]);
+                view.triangle_count = (UIntPtr)(Triangles == null ? 0 : Triangles.Length / 3);
+                view.normals = Address(pins[2]);
+                return f(view);
+            }
+            finally
+            {
+                foreach (var p in pins) if (p.IsAllocated) p.Free();
+            }
+        }
+
+        static GCHandle Pin(Array a) { return a == null ? default(GCHandle) : GCHandle.Alloc(a, GCHandleType.Pinned); }
+        static IntPtr Address(GCHandle h) { return h.IsAllocated ? h.AddrOfPinnedObject() : IntPtr.Zero; }
+    }
+
+    /// <summary>Options of Context.Candidates, starting from the library's defaults.</summary>
+    public sealed class CandidateOptions
+    {
+        internal Native.CandidateOptions Raw;
+        public CandidateOptions()
+        {
+            Native.CheckDefaults(Native.ca_candidate_options_defaults(ref Raw, Native.SizeOf<Native.CandidateOptions>()), "ca_candidate_options");
+        }
+        public Generator Generator { get { return (Generator)Raw.generator; } set { Raw.generator = (int)value; } }
+        /// <summary>|S|, the surface samples to cover.</summary>
+        public uint CoverSamples { get { return Raw.cover_samples; } set { Raw.cover_samples = value; } }
+        public uint VoronoiSamples { get { return Raw.voronoi_samples; } set { Raw.voronoi_samples = value; } }
+        public uint RandomCandidates { get { return Raw.random_candidates; } set { Raw.random_candidates = value; } }
+        public ulong Seed { get { return Raw.seed; } set { Raw.seed = value; } }
+        public uint ConnectSamples { get { return Raw.connect_samples; } set { Raw.connect_samples = value; } }
+    }
+
+    /// <summary>Options of Context.Select, starting from the library's defaults.</summary>
+    public sealed class SelectOptions
+    {
+        internal Native.SelectOptions Raw;
+        public SelectOptions()
+        {
+            Native.CheckDefaults(Native.ca_select_options_defaults(ref Raw, Native.SizeOf<Native.SelectOptions>()), "ca_select_options");
+        }
+        public Dilation Dilation { get { return (Dilation)Raw.dilation; } set { Raw.dilation = (int)value; } }
+        /// <summary>Offset, a fraction of the longest bounding-box side.</summary>
+        public double Delta { get { return Raw.delta; } set { Raw.delta = value; } }
+        public double Scale { get { return Raw.scale; } set { Raw.scale = value; } }
+        public Solver Solver { get { return (Solver)Raw.solver; } set { Raw.solver = (int)value; } }
+        public Effort Effort { get { return (Effort)Raw.effort; } set { Raw.effort = (int)value; } }
+        public double TimeLimitSeconds { get { return Raw.time_limit_s; } set { Raw.time_limit_s = value; } }
+        public bool SkipUncoverable { get { return Raw.skip_uncoverable != 0; } set { Raw.skip_uncoverable = value ? 1 : 0; } }
+        public uint TargetCount { get { return Raw.target_count; } set { Raw.target_count = value; } }
+        public double TargetTolerance { get { return Raw.target_tolerance; } set { Raw.target_tolerance = value; } }
+        public uint DivideThreshold { get { return Raw.divide_threshold; } set { Raw.divide_threshold = value; } }
+        /// <summary>Per sample, true: need not be covered (null = none).</summary>
+        public byte[] IgnorableSamples;
+        /// <summary>Per candidate ball, true: must be selected (null = none).</summary>
+        public byte[] ForcedIn;
+        /// <summary>Per candidate ball, true: must not be selected (null = none).</summary>
+        public byte[] ForcedOut;
+    }
+
+    /// <summary>Options of Context.Connect, starting from the library's defaults.</summary>
+    public sealed class ConnectOptions
+    {
+        internal Native.ConnectOptions Raw;
+        public ConnectOptions()
+        {
+            Native.CheckDefaults(Native.ca_connect_options_defaults(ref Raw, Native.SizeOf<Native.ConnectOptions>()), "ca_connect_options");
+        }
+        public ConnectMethod Method { get { return (ConnectMethod)Raw.method; } set { Raw.method = (int)value; } }
+        public bool RemoveOutside { get { return Raw.remove_outside != 0; } set { Raw.remove_outside = value ? 1 : 0; } }
+        public bool FillHoles { get { return Raw.fill_holes != 0; } set { Raw.fill_holes = value ? 1 : 0; } }
+        public bool Reconnect { get { return Raw.reconnect != 0; } set { Raw.reconnect = value ? 1 : 0; } }
+    }
+
+    /// <summary>Options of Context.Evaluate, starting from the library's defaults.</summary>
+    public sealed class EvaluateOptions
+    {
+        internal Native.EvaluateOptions Raw;
+        public EvaluateOptions()
+        {
+            Native.CheckDefaults(Native.ca_evaluate_options_defaults(ref Raw, Native.SizeOf<Native.EvaluateOptions>()), "ca_evaluate_options");
+        }
+        public uint SurfaceSamples { get { return Raw.surface_samples; } set { Raw.surface_samples = value; } }
+        public uint EnvelopeSamples { get { return Raw.envelope_samples; } set { Raw.envelope_samples = value; } }
+        public ulong Seed { get { return Raw.seed; } set { Raw.seed = value; } }
+    }
+
+    public sealed class ProgressEventArgs : EventArgs
+    {
+        public string Stage { get; internal set; }
+        public double Fraction { get; internal set; }
+        /// <summary>Set to true to cancel the running call (it throws Status.Cancelled).</summary>
+        public bool Cancel { get; set; }
+    }
+
+    /// <summary>Runs the three steps; used by one thread at a time. Results outlive it.</summary>
+    public sealed class Context : IDisposable
+    {
+        readonly ContextHandle handle;
+        // the delegate the library calls; held here so the GC keeps it while the context lives
+        readonly Native.ProgressFn progress;
+
+        /// <summary>Stage name and fraction in [0, 1], raised on the calling thread.</summary>
+        public event EventHandler<ProgressEventArgs> Progress;
+
+        /// <param name="threads">worker threads; 0 = all cores, 1 = serial</param>
+        /// <param name="progressIntervalSeconds">least time between two Progress events within a stage</param>
+        public Context(int threads = 0, double progressIntervalSeconds = 0)
+        {
+            var desc = new Native.ContextDesc();
+            Native.CheckDefaults(Native.ca_context_desc_defaults(ref desc, Native.SizeOf<Native.ContextDesc>()), "ca_context_desc");
+            desc.threads = threads;
+            desc.progress_interval_s = progressIntervalSeconds;
+            progress = OnProgress;
+            desc.progress = Marshal.GetFunctionPointerForDelegate(progress);
+            var status = Native.ca_context_create(ref desc, out handle);
+            if (status != 0)
+                throw new CoverageAxisException((Status)status, CoverageAxisException.StatusString((Status)status));
+        }
+
+        int OnProgress(IntPtr user, IntPtr stage, double fraction)
+        {
+            var handler = Progress;
+            if (handler == null) return 0;
+            var e = new ProgressEventArgs { Stage = Marshal.PtrToStringAnsi(stage), Fraction = fraction };
+            try { handler(this, e); }
+            catch (Exception) { return 1; } // an exception must not unwind into C: it cancels
+            return e.Cancel ? 1 : 0;
+        }
+
+        public void Dispose() { handle.Dispose(); }
+
+        /// <summary>Runs a call with the token's cancellation forwarded to the library.</summary>
+        T Run<T>(CancellationToken token, Func<int> call, Func<T> result)
+        {
+            int status;
+            using (token.Register(() => Native.ca_context_request_cancel(handle)))
+                status = call();
+            if (token.IsCancellationRequested) Native.ca_context_clear_cancel(handle);
+            if (status == 0) return result();
+            var message = Marshal.PtrToStringAnsi(Native.ca_context_last_error(handle));
+            if (status == (int)Status.Cancelled && token.IsCancellationRequested)
+                throw new OperationCanceledException(message, token);
+            throw new CoverageAxisException((Status)status, message);
+        }
+
+        /// <summary>Step 1: surface samples and inner candidate balls.</summary>
+        public CandidateSet Candidates(Surface surface, CandidateOptions options = null,
+                                       CancellationToken token = default(CancellationToken))
+        {
+            var o = (options ?? new CandidateOptions()).Raw;
+            CandidateSetHandle h = null;
+            return Run(token, () => surface.With(v => Native.ca_candidates(handle, ref v, ref o, out h)),
+                       () => new CandidateSet(h));
+        }
+
+        /// <summary>Step 2: the fewest dilated candidate balls that cover every sample.</summary>
+        public Selection Select(CandidateSet set, SelectOptions options = null,
+                                CancellationToken token = default(CancellationToken))
+        {
+            options = options ?? new SelectOptions();
+            var o = options.Raw;
+            var pins = new[] { Pin(options.IgnorableSamples), Pin(options.ForcedIn), Pin(options.ForcedOut) };
+            try
+            {
+                o.ignorable_samples = Address(pins[0]);
+                o.forced_in = Address(pins[1]);
+                o.forced_out = Address(pins[2]);
+                SelectionHandle h = null;
+                return Run(token, () => Native.ca_select(handle, set.Handle, ref o, out h), () => new Selection(h));
+            }
+            finally
+            {
+                foreach (var p in pins) if (p.IsAllocated) p.Free();
+            }
+        }
+
+        /// <summary>Step 3: edges and faces between the selected balls (set: the selection's own).</summary>
+        public Skeleton Connect(CandidateSet set, Selection selection, ConnectOptions options = null,
+                                CancellationToken token = default(CancellationToken))
+        {
+            var o = (options ?? new ConnectOptions()).Raw;
+            SkeletonHandle h = null;
+            return Run(token, () => Native.ca_connect(handle, set.Handle, selection.Handle, ref o, out h),
+                       () => new Skeleton(h));
+        }
+
+        /// <summary>The three steps with default options.</summary>
+        public Skeleton Skeletonize(Surface surface, CancellationToken token = default(CancellationToken))
+        {
+            using (var set = Candidates(surface, null, token))
+            using (var selection = Select(set, null, token))
+                return Connect(set, selection, null, token);
+        }
+
+        /// <summary>Hausdorff distances between the surface and the skeleton's reconstruction, in % of
+        /// the bounding-box diagonal.</summary>
+        public Native.Evaluation Evaluate(Surface surface, Skeleton skeleton, EvaluateOptions options = null,
+                                          CancellationToken token = default(CancellationToken))
+        {
+            var o = (options ?? new EvaluateOptions()).Raw;
+            var view = new Native.SkeletonView();
+            Native.CheckDefaults(Native.ca_skeleton_view_defaults(ref view, Native.SizeOf<Native.SkeletonView>()), "ca_skeleton_view");
+            Native.CheckDefaults(Native.ca_skeleton_get_view(skeleton.Handle, ref view), "ca_skeleton_view");
+            var result = new Native.Evaluation { struct_size = Native.SizeOf<Native.Evaluation>() };
+            var done = Run(token, () => surface.With(v => Native.ca_evaluate(handle, ref v, ref view, ref o, ref result)),
+                           () => result);
+            GC.KeepAlive(skeleton);
+            return done;
+        }
+
+        static GCHandle Pin(byte[] a) { return a == null ? default(GCHandle) : GCHandle.Alloc(a, GCHandleType.Pinned); }
+        static IntPtr Address(GCHandle h) { return h.IsAllocated ? h.AddrOfPinnedObject() : IntPtr.Zero; }
+    }
+
+    /// <summary>Copies getter arrays out of the C objects.</summary>
+    static class Copy
+    {
+        public static double[] Doubles(IntPtr p, ulong n)
+        {
+            var a = new double[n];
+            if (n > 0) Marshal.Copy(p, a, 0, (int)n);
+            return a;
+        }
+        public static uint[] UInts(IntPtr p, ulong n)
+        {
+            var tmp = new int[n];
+            if (n > 0) Marshal.Copy(p, tmp, 0, (int)n);
+            var a = new uint[n];
+            Buffer.BlockCopy(tmp, 0, a, 0, tmp.Length * 4);
+            return a;
+        }
+    }
+
+    /// <summary>Samples and candidate balls (step 1). Selections keep the C object alive, so it
+    /// may be disposed before them.</summary>
+    public sealed class CandidateSet : IDisposable
+    {
+        internal readonly CandidateSetHandle Handle;
+        internal CandidateSet(CandidateSetHandle h) { Handle = h; }
+        public void Dispose() { Handle.Dispose(); }
+        public int Count { get { return (int)Native.ca_candidate_set_count(Handle); } }
+        /// <summary>x y z per ball.</summary>
+        public double[] Centers { get { return Copy.Doubles(Native.ca_candidate_set_centers(Handle), 3 * (ulong)Count); } }
+        public double[] Radii { get { return Copy.Doubles(Native.ca_candidate_set_radii(Handle), (ulong)Count); } }
+        /// <summary>x y z per surface sample.</summary>
+        public double[] Samples
+        {
+            get { return Copy.Doubles(Native.ca_candidate_set_samples(Handle), 3 * (ulong)Native.ca_candidate_set_sample_count(Handle)); }
+        }
+        public double ReferenceLength { get { return Native.ca_candidate_set_reference_length(Handle); } }
+        public bool Flipped { get { return Native.ca_candidate_set_flipped(Handle) != 0; } }
+    }
+
+    /// <summary>Balls chosen by step 2; outlives its candidate set and context.</summary>
+    public sealed class Selection : IDisposable
+    {
+        internal readonly SelectionHandle Handle;
+        internal Selection(SelectionHandle h) { Handle = h; }
+        public void Dispose() { Handle.Dispose(); }
+        public int Count { get { return (int)Native.ca_selection_count(Handle); } }
+        /// <summary>Indices into the candidate set.</summary>
+        public uint[] Indices { get { return Copy.UInts(Native.ca_selection_indices(Handle), (ulong)Count); } }
+        public double[] Centers { get { return Copy.Doubles(Native.ca_selection_centers(Handle), 3 * (ulong)Count); } }
+        public double[] Radii { get { return Copy.Doubles(Native.ca_selection_radii(Handle), (ulong)Count); } }
+        public double[] DilatedRadii { get { return Copy.Doubles(Native.ca_selection_dilated_radii(Handle), (ulong)Count); } }
+        public uint[] Uncovered
+        {
+            get { return Copy.UInts(Native.ca_selection_uncovered(Handle), (ulong)Native.ca_selection_uncovered_count(Handle)); }
+        }
+        public Native.SelectStats Stats
+        {
+            get
+            {
+                var s = new Native.SelectStats { struct_size = Native.SizeOf<Native.SelectStats>() };
+                Native.CheckDefaults(Native.ca_selection_stats(Handle, ref s), "ca_select_stats");
+                return s;
+            }
+        }
+    }
+
+    /// <summary>The medial skeleton (step 3); holds nothing of the other objects.</summary>
+    public sealed class Skeleton : IDisposable
+    {
+        internal readonly SkeletonHandle Handle;
+        internal Skeleton(SkeletonHandle h) { Handle = h; }
+        public void Dispose() { Handle.Dispose(); }
+        public int Count { get { return (int)Native.ca_skeleton_vertex_count(Handle); } }
+        public double[] Centers { get { return Copy.Doubles(Native.ca_skeleton_centers(Handle), 3 * (ulong)Count); } }
+        public double[] Radii { get { return Copy.Doubles(Native.ca_skeleton_radii(Handle), (ulong)Count); } }
+        /// <summary>i j per edge, including the faces' edges.</summary>
+        public uint[] Edges { get { return Copy.UInts(Native.ca_skeleton_edges(Handle), 2 * (ulong)Native.ca_skeleton_edge_count(Handle)); } }
+        /// <summary>i j k per face.</summary>
+        public uint[] Faces { get { return Copy.UInts(Native.ca_skeleton_faces(Handle), 3 * (ulong)Native.ca_skeleton_face_count(Handle)); } }
+        public Native.SkeletonStats Stats
+        {
+            get
+            {
+                var s = new Native.SkeletonStats { struct_size = Native.SizeOf<Native.SkeletonStats>() };
+                Native.CheckDefaults(Native.ca_skeleton_stats_get(Handle, ref s), "ca_skeleton_stats");
+                return s;
+            }
+        }
+    }
+}

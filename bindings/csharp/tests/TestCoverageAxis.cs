@@ -1,0 +1,223 @@
+// TestCoverageAxis.cs: tests of the C# binding. The layout check compares every struct of
+// CoverageAxis.Native (Marshal.SizeOf / Marshal.OffsetOf) with the C layout printed by
+// tests/abi_layout; fox.obj is skeletonized and compared with the .ma the CLI writes for it;
+// errors, defaults, the Progress event, CancellationToken and lifetimes are checked.
+// usage: mono TestCoverageAxis.exe ABI_LAYOUT_EXE CLI_EXE TEST_DATA_DIR
+using System;
+using System.Collections.Generic;
+using System.Diagnostics;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using System.Runtime.InteropServices;
+using System.Text.RegularExpressions;
+using System.Threading;
+using CoverageAxis;
+
+static class TestCoverageAxis
+{
+    static string layoutExe, cliExe, dataDir;
+    static int passed, failed;
+
+    static void Check(bool ok, string what)
+    {
+        if (!ok) throw new Exception("check failed: " + what);
+    }
+
+    static string Run(string exe, string args)
+    {
+        var p = Process.Start(new ProcessStartInfo(exe, args) { UseShellExecute = false, RedirectStandardOutput = true });
+        var output = p.StandardOutput.ReadToEnd();
+        p.WaitForExit();
+        Check(p.ExitCode == 0, exe + " " + args + " exited " + p.ExitCode);
+        return output;
+    }
+
+    // "ContextDesc" -> "ca_context_desc"
+    static string CName(Type t)
+    {
+        return "ca" + Regex.Replace(t.Name, "([A-Z])", m => "_" + m.Value.ToLowerInvariant());
+    }
+
+    static void LayoutMatchesTheHeader()
+    {
+        var printed = new List<string>();
+        foreach (var line in Run(layoutExe, "").Split('\n'))
+            if (line.StartsWith("struct ") || line.StartsWith("field ")) printed.Add(line);
+            else if (line.StartsWith("abi ")) Check(line == "abi " + Native.AbiVersion, "header " + line);
+        var declared = new List<string>();
+        foreach (var t in Native.Structs)
+        {
+            declared.Add("struct " + CName(t) + " " + Marshal.SizeOf(t));
+            var fields = t.GetFields().OrderBy(f => (long)Marshal.OffsetOf(t, f.Name));
+            foreach (var f in fields)
+                declared.Add(string.Format("field {0} {1} {2} {3}", CName(t), f.Name, (long)Marshal.OffsetOf(t, f.Name),
+                                           Marshal.SizeOf(f.FieldType)));
+        }
+        for (int i = 0; i < Math.Max(printed.Count, declared.Count); ++i)
+        {
+            var want = i < printed.Count ? printed[i] : "(nothing)";
+            var got = i < declared.Count ? declared[i] : "(nothing)";
+            Check(want == got, "C# layout line " + i + ": '" + got + "', the C compiler prints '" + want + "'");
+        }
+        Console.WriteLine("  {0} C# structs ({1} fields) match the printed layout", Native.Structs.Length,
+                          declared.Count - Native.Structs.Length);
+    }
+
+    static Surface ReadObj(string path)
+    {
+        var v = new List<double>();
+        var f = new List<uint>();
+        foreach (var line in File.ReadAllLines(path))
+        {
+            var t = line.Split(new[] { ' ', '\t' }, StringSplitOptions.RemoveEmptyEntries);
+            if (t.Length == 0) continue;
+            if (t[0] == "v")
+                for (int k = 1; k <= 3; ++k) v.Add(double.Parse(t[k], CultureInfo.InvariantCulture));
+            else if (t[0] == "f")
+            {
+                var idx = t.Skip(1).Select(s => uint.Parse(s.Split('/')[0]) - 1).ToArray();
+                for (int k = 1; k + 1 < idx.Length; ++k) f.AddRange(new[] { idx[0], idx[k], idx[k + 1] });
+            }
+        }
+        return Surface.Mesh(v.ToArray(), f.ToArray());
+    }
+
+    static bool Close(double a, double b) { return Math.Abs(a - b) <= 1e-7 * Math.Max(Math.Abs(b), 1.0); }
+
+    static void FoxMatchesTheCli()
+    {
+        var model = Path.Combine(dataDir, "fox.obj");
+        var ma = Path.Combine(Path.GetTempPath(), "coverage_axis_cs_" + Process.GetCurrentProcess().Id + ".ma");
+        Run(cliExe, "\"" + model + "\" -o \"" + ma + "\" --quiet");
+        var lines = File.ReadAllLines(ma);
+        File.Delete(ma);
+        var counts = lines[0].Split(' ').Select(int.Parse).ToArray();
+        var balls = lines.Where(l => l.StartsWith("v ")).Select(l => l.Substring(2).Split(' ')
+            .Select(s => double.Parse(s, CultureInfo.InvariantCulture)).ToArray()).ToArray();
+        Check(balls.Length == counts[0] && balls.Length > 10, "the CLI's .ma has " + balls.Length + " balls");
+
+        var surface = ReadObj(model);
+        using (var ctx = new Context(threads: 2))
+        using (var skeleton = ctx.Skeletonize(surface))
+        {
+            Check(skeleton.Count == balls.Length, skeleton.Count + " balls, the CLI " + balls.Length);
+            var c = skeleton.Centers;
+            var r = skeleton.Radii;
+            for (int i = 0; i < balls.Length; ++i)
+                Check(Close(c[3 * i], balls[i][0]) && Close(c[3 * i + 1], balls[i][1]) && Close(c[3 * i + 2], balls[i][2])
+                      && Close(r[i], balls[i][3]), "ball " + i + " differs from the CLI's");
+            Check(skeleton.Edges.Length / 2 == counts[1] && skeleton.Faces.Length / 3 == counts[2], "edge/face counts");
+            Check((int)skeleton.Stats.vertices == balls.Length, "stats.vertices");
+            var e = ctx.Evaluate(surface, skeleton, new EvaluateOptions { SurfaceSamples = 2000, EnvelopeSamples = 2000 });
+            Check(e.hd_two_sided > 0 && e.hd_two_sided < 20, "two-sided Hausdorff " + e.hd_two_sided);
+            Console.WriteLine("  fox: {0} balls, {1} edges, {2} faces match the CLI", balls.Length, counts[1], counts[2]);
+        }
+    }
+
+    static void DefaultsComeFromTheLibrary()
+    {
+        var s = new SelectOptions();
+        Check(s.Delta == 0.02 && s.Scale == 1.5 && s.Solver == Solver.Exact, "select defaults");
+        Check(new CandidateOptions().CoverSamples == 1500, "cover_samples default");
+        Check(new ConnectOptions().Method == ConnectMethod.Auto, "connect default");
+        Check(new EvaluateOptions().SurfaceSamples == 30000, "evaluate default");
+    }
+
+    static void ErrorsCarryStatusAndMessage()
+    {
+        using (var ctx = new Context())
+        {
+            try { ctx.Candidates(Surface.Mesh(new double[0], new uint[0])); Check(false, "empty surface accepted"); }
+            catch (CoverageAxisException e) { Check(e.Status == Status.DegenerateInput && e.Message.Length > 0, e.Message); }
+            var tri = Surface.Mesh(new double[] { 0, 0, 0, 1, 0, 0, 0, 1, 0 }, new uint[] { 0, 1, 7 });
+            try { ctx.Candidates(tri); Check(false, "bad index accepted"); }
+            catch (CoverageAxisException e) { Check(e.Status == Status.InvalidInput, e.Message); }
+        }
+        try { new Context(threads: -1); Check(false, "threads -1 accepted"); }
+        catch (CoverageAxisException e) { Check(e.Status == Status.InvalidArgument, e.Message); }
+    }
+
+    static void ProgressEventAndCancellation()
+    {
+        var surface = ReadObj(Path.Combine(dataDir, "fox.obj"));
+        var small = new CandidateOptions { CoverSamples = 300 };
+        using (var ctx = new Context())
+        {
+            var stages = new HashSet<string>();
+            EventHandler<ProgressEventArgs> record = (o, e) => { stages.Add(e.Stage); Check(e.Fraction >= 0 && e.Fraction <= 1, "fraction"); };
+            ctx.Progress += record;
+            ctx.Candidates(surface, small).Dispose();
+            Check(stages.Contains("sampling"), "progress stages: " + string.Join(",", stages));
+            ctx.Progress -= record;
+
+            EventHandler<ProgressEventArgs> stop = (o, e) => { e.Cancel = true; };
+            ctx.Progress += stop;
+            try { ctx.Candidates(surface, small); Check(false, "cancel from the event ignored"); }
+            catch (CoverageAxisException e) { Check(e.Status == Status.Cancelled, e.Message); }
+            ctx.Progress -= stop;
+
+            using (var cts = new CancellationTokenSource())
+            {
+                // cancelled from another thread while the call runs (the event waits for that
+                // thread, so the library sees the request at its next update)
+                bool sent = false;
+                EventHandler<ProgressEventArgs> cancelOnce = (o, e) =>
+                {
+                    if (sent) return;
+                    sent = true;
+                    var t = new Thread(() => cts.Cancel());
+                    t.Start();
+                    t.Join();
+                };
+                ctx.Progress += cancelOnce;
+                try { ctx.Candidates(surface, null, cts.Token); Check(false, "token cancellation ignored"); }
+                catch (OperationCanceledException e) { Check(e.CancellationToken == cts.Token, "the token"); }
+                ctx.Progress -= cancelOnce;
+            }
+            using (var set = ctx.Candidates(surface, small)) Check(set.Count > 0, "a call after a cancelled one");
+        }
+    }
+
+    static void ResultsOutliveContextAndSet()
+    {
+        var surface = ReadObj(Path.Combine(dataDir, "fox.obj"));
+        Selection selection;
+        Skeleton skeleton;
+        int candidates;
+        using (var ctx = new Context())
+        using (var set = ctx.Candidates(surface, new CandidateOptions { CoverSamples = 300 }))
+        {
+            candidates = set.Count;
+            selection = ctx.Select(set, new SelectOptions { Solver = Solver.Greedy });
+            skeleton = ctx.Connect(set, selection);
+        }
+        using (selection)
+        using (skeleton)
+        {
+            Check(selection.Indices.All(i => i < candidates) && selection.Indices.Length == selection.Count, "indices");
+            Check(selection.DilatedRadii.Zip(selection.Radii, (d, r) => d > r).All(x => x), "dilated radii");
+            Check((int)selection.Stats.objective == selection.Count, "stats.objective");
+            Check(skeleton.Count == selection.Count, "skeleton size");
+        }
+    }
+
+    static void Test(string name, Action body)
+    {
+        try { body(); ++passed; Console.WriteLine("ok   " + name); }
+        catch (Exception e) { ++failed; Console.WriteLine("FAIL " + name + ": " + e); }
+    }
+
+    static int Main(string[] args)
+    {
+        layoutExe = args[0]; cliExe = args[1]; dataDir = args[2];
+        Test("layout matches the header", LayoutMatchesTheHeader);
+        Test("defaults come from the library", DefaultsComeFromTheLibrary);
+        Test("errors carry status and message", ErrorsCarryStatusAndMessage);
+        Test("fox matches the CLI", FoxMatchesTheCli);
+        Test("progress event and cancellation", ProgressEventAndCancellation);
+        Test("results outlive context and set", ResultsOutliveContextAndSet);
+        Console.WriteLine("{0} passed, {1} failed", passed, failed);
+        return failed == 0 ? 0 : 1;
+    }
+}

@@ -1,0 +1,422 @@
+# CoverageAxis.jl: the Julia binding of the coverage-axis C ABI (include/coverage_axis.h, ABI 2).
+# ccall wrappers over libcoverage_axis; the C structs are declared field for field (checked
+# against the C compiler's layout by tests/abi_layout/check_julia_layout.py, since Julia is not
+# packaged in Debian 12 and cannot run in this project's CI). Results are mutable objects with
+# finalizers that destroy the C object; their arrays are zero-copy `unsafe_wrap`s inside an
+# `OwnedArray` that keeps the owning result alive. Options are keyword arguments applied on top of
+# the library's defaults (ca_*_defaults). Indices (triangles in, edges and faces out) are 0-based,
+# as in C.
+module CoverageAxis
+
+export Context, candidates, select, connect, skeletonize, evaluate, cancel!, clear_cancel!,
+       centers, radii, dilated_radii, indices, uncovered, samples, edges, faces, stats, CoverageAxisError
+
+# The library's path: COVERAGE_AXIS_LIBRARY, else the loader's search path.
+const libcoverage_axis = get(ENV, "COVERAGE_AXIS_LIBRARY", "libcoverage_axis")
+const ABI_VERSION = 2  # the ABI whose layouts are declared below
+const CA_OK = Int32(0)
+const CA_ERROR_CANCELLED = Int32(9)
+
+# ---- the C structs (names: the header's without ca_, in CamelCase) ----------------------------
+struct ContextDesc
+    struct_size::UInt32
+    alloc::Ptr{Cvoid}
+    free::Ptr{Cvoid}
+    alloc_user::Ptr{Cvoid}
+    log::Ptr{Cvoid}
+    log_user::Ptr{Cvoid}
+    progress::Ptr{Cvoid}
+    progress_user::Ptr{Cvoid}
+    threads::Int32
+    progress_interval_s::Float64  # ABI 2
+end
+
+struct SurfaceView
+    struct_size::UInt32
+    positions::Ptr{Float64}
+    vertex_count::Csize_t
+    position_stride::Csize_t
+    triangles::Ptr{UInt32}
+    triangle_count::Csize_t
+    triangle_stride::Csize_t
+    normals::Ptr{Float64}
+    normal_stride::Csize_t
+end
+
+struct CandidateOptions
+    struct_size::UInt32
+    generator::Int32
+    cover_samples::UInt32
+    voronoi_samples::UInt32
+    random_candidates::UInt32
+    seed::UInt64
+    connect_samples::UInt32
+end
+
+struct SelectOptions
+    struct_size::UInt32
+    dilation::Int32
+    delta::Float64
+    scale::Float64
+    solver::Int32
+    time_limit_s::Float64
+    skip_uncoverable::Int32
+    ignorable_samples::Ptr{UInt8}
+    forced_in::Ptr{UInt8}
+    forced_out::Ptr{UInt8}
+    target_count::UInt32
+    target_tolerance::Float64
+    divide_threshold::UInt32
+    effort::Int32
+end
+
+struct SelectStats
+    struct_size::UInt32
+    proven_optimal::Int32
+    solver::Int32
+    objective::Float64
+    lower_bound::Float64
+    gap::Float64
+    delta_absolute::Float64
+    time_reduce_s::Float64
+    time_solve_s::Float64
+    time_total_s::Float64
+    rows_before::UInt64
+    cols_before::UInt64
+    rows_after::UInt64
+    cols_after::UInt64
+    forced::UInt64
+    components::UInt64
+    probes::UInt64
+    parts::UInt64
+    scale_used::Float64
+    time_coverage_s::Float64  # ABI 2
+    cbc_components::UInt64    # ABI 2
+    rowgen_rounds::UInt64     # ABI 2
+end
+
+struct ConnectOptions
+    struct_size::UInt32
+    method::Int32
+    remove_outside::Int32
+    fill_holes::Int32
+    reconnect::Int32
+end
+
+struct SkeletonStats
+    struct_size::UInt32
+    vertices::UInt64
+    edges::UInt64
+    faces::UInt64
+    components::UInt64
+    isolated::UInt64
+    betti1::Int64
+    time_s::Float64
+    method::Int32
+end
+
+struct SkeletonView
+    struct_size::UInt32
+    centers::Ptr{Float64}
+    radii::Ptr{Float64}
+    vertex_count::Csize_t
+    edges::Ptr{UInt32}
+    edge_count::Csize_t
+    faces::Ptr{UInt32}
+    face_count::Csize_t
+end
+
+struct EvaluateOptions
+    struct_size::UInt32
+    surface_samples::UInt32
+    envelope_samples::UInt32
+    seed::UInt64
+end
+
+struct Evaluation
+    struct_size::UInt32
+    hd_surface_to_recon::Float64
+    mean_surface_to_recon::Float64
+    hd_recon_to_surface::Float64
+    mean_recon_to_surface::Float64
+    hd_two_sided::Float64
+    diagonal::Float64
+    surface_samples_used::UInt64
+    envelope_samples_used::UInt64
+    time_s::Float64
+end
+
+# ---- errors, defaults -------------------------------------------------------------------------
+"""A failed call: the library's status code and its message."""
+struct CoverageAxisError <: Exception
+    status::Int32
+    message::String
+end
+Base.showerror(io::IO, e::CoverageAxisError) = print(io, "CoverageAxisError(", e.status, "): ", e.message)
+
+status_string(status) = unsafe_string(ccall((:ca_status_string, libcoverage_axis), Cstring, (Int32,), status))
+version() = ccall((:ca_version, libcoverage_axis), UInt32, ())
+abi_version() = ccall((:ca_abi_version, libcoverage_axis), UInt32, ())
+
+function check(status::Int32)
+    status == CA_OK || throw(CoverageAxisError(status, status_string(status)))
+    nothing
+end
+
+# The library's defaults for this binding's layout of each input struct.
+for (T, f) in ((ContextDesc, :ca_context_desc_defaults), (SurfaceView, :ca_surface_view_defaults),
+               (CandidateOptions, :ca_candidate_options_defaults), (SelectOptions, :ca_select_options_defaults),
+               (ConnectOptions, :ca_connect_options_defaults), (SkeletonView, :ca_skeleton_view_defaults),
+               (EvaluateOptions, :ca_evaluate_options_defaults))
+    @eval function defaults(::Type{$T})
+        r = Ref{$T}()
+        check(ccall(($(QuoteNode(f)), libcoverage_axis), Int32, (Ptr{$T}, UInt32), r, sizeof($T)))
+        r[]
+    end
+end
+
+# A copy of x with the named fields replaced (converted to the fields' types).
+function with(x::T; fields...) where {T}
+    for k in keys(fields)
+        k in fieldnames(T) || throw(ArgumentError("$T has no option $k"))
+    end
+    T((haskey(fields, f) ? convert(fieldtype(T, f), fields[f]) : getfield(x, f) for f in fieldnames(T))...)
+end
+
+# An output struct: struct_size set, every other field zero.
+zero_field(::Type{P}) where {P<:Ptr} = P(C_NULL)
+zero_field(::Type{T}) where {T} = zero(T)
+blank(::Type{T}) where {T} =
+    with(T((zero_field(fieldtype(T, i)) for i in 1:fieldcount(T))...); struct_size=sizeof(T))
+
+# ---- arrays that keep their owner alive -------------------------------------------------------
+"""A zero-copy array over a result's memory; holds the result so it is not finalized first."""
+struct OwnedArray{T,N} <: AbstractArray{T,N}
+    data::Array{T,N}
+    owner::Any
+end
+Base.size(a::OwnedArray) = size(a.data)
+Base.IndexStyle(::Type{<:OwnedArray}) = IndexLinear()
+Base.getindex(a::OwnedArray, i::Int) = a.data[i]
+Base.unsafe_convert(::Type{Ptr{T}}, a::OwnedArray{T}) where {T} = pointer(a.data)
+
+function owned(owner, p::Ptr{T}, dims::Tuple) where {T}
+    # an empty array's pointer must not be read: give a fresh empty array
+    prod(dims) == 0 && return OwnedArray(Array{T}(undef, dims), owner)
+    OwnedArray(unsafe_wrap(Array, p, dims; own=false), owner)
+end
+
+# ---- context ----------------------------------------------------------------------------------
+"""
+    Context(; threads=0, progress=nothing, progress_interval_s=0)
+
+Runs the three steps; one task at a time. `progress(stage::String, fraction::Float64)` is called
+on the calling thread; returning `false` cancels the call (CoverageAxisError with status 9).
+`cancel!(ctx)` may be called from any thread.
+"""
+mutable struct Context
+    ptr::Ptr{Cvoid}
+    progress::Any
+    function Context(; threads::Integer=0, progress=nothing, progress_interval_s::Real=0)
+        ctx = new(C_NULL, progress)
+        desc = with(defaults(ContextDesc); threads=threads, progress_interval_s=progress_interval_s)
+        if progress !== nothing
+            desc = with(desc; progress=@cfunction(progress_trampoline, Int32, (Ptr{Cvoid}, Cstring, Float64)),
+                        progress_user=pointer_from_objref(ctx))
+        end
+        out = Ref{Ptr{Cvoid}}(C_NULL)
+        check(ccall((:ca_context_create, libcoverage_axis), Int32, (Ref{ContextDesc}, Ref{Ptr{Cvoid}}), desc, out))
+        ctx.ptr = out[]
+        finalizer(close, ctx)
+    end
+end
+
+function progress_trampoline(user::Ptr{Cvoid}, stage::Cstring, fraction::Float64)::Int32
+    ctx = unsafe_pointer_to_objref(user)::Context
+    try
+        return ctx.progress(unsafe_string(stage), fraction) === false ? Int32(1) : Int32(0)
+    catch
+        return Int32(1)  # an exception must not unwind into C: it cancels the call
+    end
+end
+
+function Base.close(ctx::Context)
+    ccall((:ca_context_destroy, libcoverage_axis), Cvoid, (Ptr{Cvoid},), ctx.ptr)
+    ctx.ptr = C_NULL
+    nothing
+end
+
+cancel!(ctx::Context) = ccall((:ca_context_request_cancel, libcoverage_axis), Cvoid, (Ptr{Cvoid},), ctx.ptr)
+clear_cancel!(ctx::Context) = ccall((:ca_context_clear_cancel, libcoverage_axis), Cvoid, (Ptr{Cvoid},), ctx.ptr)
+
+function check(ctx::Context, status::Int32)
+    status == CA_OK && return nothing
+    message = unsafe_string(ccall((:ca_context_last_error, libcoverage_axis), Cstring, (Ptr{Cvoid},), ctx.ptr))
+    throw(CoverageAxisError(status, isempty(message) ? status_string(status) : message))
+end
+
+# ---- results ----------------------------------------------------------------------------------
+"""Samples and candidate balls (step 1). Selections keep the C object alive."""
+mutable struct CandidateSet
+    ptr::Ptr{Cvoid}
+    CandidateSet(ptr) = finalizer(close, new(ptr))
+end
+"""Balls chosen by step 2; it may outlive its candidate set and context."""
+mutable struct Selection
+    ptr::Ptr{Cvoid}
+    Selection(ptr) = finalizer(close, new(ptr))
+end
+"""The medial skeleton (step 3); it holds nothing of the other objects."""
+mutable struct Skeleton
+    ptr::Ptr{Cvoid}
+    Skeleton(ptr) = finalizer(close, new(ptr))
+end
+
+for (T, destroy) in ((CandidateSet, :ca_candidate_set_destroy), (Selection, :ca_selection_destroy),
+                     (Skeleton, :ca_skeleton_destroy))
+    @eval function Base.close(x::$T)
+        ccall(($(QuoteNode(destroy)), libcoverage_axis), Cvoid, (Ptr{Cvoid},), x.ptr)
+        x.ptr = C_NULL
+        nothing
+    end
+end
+
+getter(name, T, x) = ccall((name, libcoverage_axis), Ptr{T}, (Ptr{Cvoid},), x.ptr)
+count_of(name, x) = Int(ccall((name, libcoverage_axis), Csize_t, (Ptr{Cvoid},), x.ptr))
+
+Base.length(s::CandidateSet) = count_of(:ca_candidate_set_count, s)
+Base.length(s::Selection) = count_of(:ca_selection_count, s)
+Base.length(s::Skeleton) = count_of(:ca_skeleton_vertex_count, s)
+
+"""3×n centres (one column per ball)."""
+centers(s::CandidateSet) = owned(s, getter(:ca_candidate_set_centers, Float64, s), (3, length(s)))
+centers(s::Selection) = owned(s, getter(:ca_selection_centers, Float64, s), (3, length(s)))
+centers(s::Skeleton) = owned(s, getter(:ca_skeleton_centers, Float64, s), (3, length(s)))
+"""Undilated medial radii."""
+radii(s::CandidateSet) = owned(s, getter(:ca_candidate_set_radii, Float64, s), (length(s),))
+radii(s::Selection) = owned(s, getter(:ca_selection_radii, Float64, s), (length(s),))
+radii(s::Skeleton) = owned(s, getter(:ca_skeleton_radii, Float64, s), (length(s),))
+samples(s::CandidateSet) =
+    owned(s, getter(:ca_candidate_set_samples, Float64, s), (3, count_of(:ca_candidate_set_sample_count, s)))
+reference_length(s::CandidateSet) =
+    ccall((:ca_candidate_set_reference_length, libcoverage_axis), Float64, (Ptr{Cvoid},), s.ptr)
+dilated_radii(s::Selection) = owned(s, getter(:ca_selection_dilated_radii, Float64, s), (length(s),))
+"""0-based indices into the candidate set."""
+indices(s::Selection) = owned(s, getter(:ca_selection_indices, UInt32, s), (length(s),))
+uncovered(s::Selection) =
+    owned(s, getter(:ca_selection_uncovered, UInt32, s), (count_of(:ca_selection_uncovered_count, s),))
+"""2×m 0-based vertex indices per edge (including the faces' edges)."""
+edges(s::Skeleton) = owned(s, getter(:ca_skeleton_edges, UInt32, s), (2, count_of(:ca_skeleton_edge_count, s)))
+"""3×k 0-based vertex indices per face."""
+faces(s::Skeleton) = owned(s, getter(:ca_skeleton_faces, UInt32, s), (3, count_of(:ca_skeleton_face_count, s)))
+
+function stats(s::Selection)
+    r = Ref(blank(SelectStats))
+    check(ccall((:ca_selection_stats, libcoverage_axis), Int32, (Ptr{Cvoid}, Ptr{SelectStats}), s.ptr, r))
+    r[]
+end
+function stats(s::Skeleton)
+    r = Ref(blank(SkeletonStats))
+    check(ccall((:ca_skeleton_stats_get, libcoverage_axis), Int32, (Ptr{Cvoid}, Ptr{SkeletonStats}), s.ptr, r))
+    r[]
+end
+
+# ---- the steps --------------------------------------------------------------------------------
+# A view of the caller's arrays (3×n positions, 3×m 0-based UInt32 triangles or nothing, 3×n
+# normals or nothing); the arrays must be preserved around the call that reads it.
+function surface_view(positions::Matrix{Float64}, triangles, normals)
+    size(positions, 1) == 3 || throw(ArgumentError("positions must be 3×n"))
+    with(defaults(SurfaceView); positions=pointer(positions), vertex_count=size(positions, 2),
+         triangles=triangles === nothing ? Ptr{UInt32}(C_NULL) : pointer(triangles),
+         triangle_count=triangles === nothing ? 0 : size(triangles, 2),
+         normals=normals === nothing ? Ptr{Float64}(C_NULL) : pointer(normals))
+end
+
+as_matrix(::Type{T}, a) where {T} = a === nothing ? nothing : a isa Matrix{T} ? a : Matrix{T}(a)
+
+"""
+    candidates(ctx, positions, triangles=nothing; normals=nothing, options...)
+
+Step 1. positions 3×n; triangles 3×m 0-based (a mesh) or `nothing` with 3×n outward `normals`
+(a point cloud). Options: the fields of `ca_candidate_options` (cover_samples, seed, ...).
+"""
+function candidates(ctx::Context, positions, triangles=nothing; normals=nothing, options...)
+    p, t, n = as_matrix(Float64, positions), as_matrix(UInt32, triangles), as_matrix(Float64, normals)
+    o = with(defaults(CandidateOptions); options...)
+    out = Ref{Ptr{Cvoid}}(C_NULL)
+    GC.@preserve ctx p t n begin
+        view = surface_view(p, t, n)
+        check(ctx, ccall((:ca_candidates, libcoverage_axis), Int32,
+                         (Ptr{Cvoid}, Ref{SurfaceView}, Ref{CandidateOptions}, Ref{Ptr{Cvoid}}), ctx.ptr, view, o, out))
+    end
+    CandidateSet(out[])
+end
+
+"""
+    select(ctx, set; options...)
+
+Step 2: the fewest dilated balls covering every sample. Options: the fields of
+`ca_select_options` (delta, solver, effort, time_limit_s, ...); masks as Vector{UInt8}.
+"""
+function select(ctx::Context, set::CandidateSet; ignorable_samples=nothing, forced_in=nothing, forced_out=nothing,
+                options...)
+    masks = (ignorable_samples, forced_in, forced_out)
+    ptrs = map(m -> m === nothing ? Ptr{UInt8}(C_NULL) : pointer(m::Vector{UInt8}), masks)
+    o = with(defaults(SelectOptions); ignorable_samples=ptrs[1], forced_in=ptrs[2], forced_out=ptrs[3], options...)
+    out = Ref{Ptr{Cvoid}}(C_NULL)
+    GC.@preserve ctx set masks begin
+        check(ctx, ccall((:ca_select, libcoverage_axis), Int32,
+                         (Ptr{Cvoid}, Ptr{Cvoid}, Ref{SelectOptions}, Ref{Ptr{Cvoid}}), ctx.ptr, set.ptr, o, out))
+    end
+    Selection(out[])
+end
+
+"""
+    connect(ctx, set, selection; options...)
+
+Step 3: edges and faces between the selected balls (`set`: the selection's own set). Options: the
+fields of `ca_connect_options` (method, remove_outside, fill_holes, reconnect).
+"""
+function connect(ctx::Context, set::CandidateSet, selection::Selection; options...)
+    o = with(defaults(ConnectOptions); options...)
+    out = Ref{Ptr{Cvoid}}(C_NULL)
+    GC.@preserve ctx set selection begin
+        check(ctx, ccall((:ca_connect, libcoverage_axis), Int32,
+                         (Ptr{Cvoid}, Ptr{Cvoid}, Ptr{Cvoid}, Ref{ConnectOptions}, Ref{Ptr{Cvoid}}),
+                         ctx.ptr, set.ptr, selection.ptr, o, out))
+    end
+    Skeleton(out[])
+end
+
+"""The three steps with default options."""
+function skeletonize(ctx::Context, positions, triangles=nothing; normals=nothing)
+    set = candidates(ctx, positions, triangles; normals=normals)
+    connect(ctx, set, select(ctx, set))
+end
+
+"""
+    evaluate(ctx, positions, triangles, skeleton; options...)
+
+Hausdorff distances between the surface and the skeleton's reconstruction, in % of the
+bounding-box diagonal (an `Evaluation`).
+"""
+function evaluate(ctx::Context, positions, triangles, skeleton::Skeleton; options...)
+    p, t = as_matrix(Float64, positions), as_matrix(UInt32, triangles)
+    o = with(defaults(EvaluateOptions); options...)
+    result = Ref(blank(Evaluation))
+    GC.@preserve ctx p t skeleton begin
+        view = Ref(defaults(SkeletonView))
+        check(ccall((:ca_skeleton_get_view, libcoverage_axis), Int32, (Ptr{Cvoid}, Ptr{SkeletonView}), skeleton.ptr, view))
+        check(ctx, ccall((:ca_evaluate, libcoverage_axis), Int32,
+                         (Ptr{Cvoid}, Ref{SurfaceView}, Ptr{SkeletonView}, Ref{EvaluateOptions}, Ptr{Evaluation}),
+                         ctx.ptr, surface_view(p, t, nothing), view, o, result))
+    end
+    result[]
+end
+
+function __init__()
+    abi_version() >= ABI_VERSION ||
+        error("libcoverage_axis has ABI $(abi_version()); CoverageAxis.jl needs $ABI_VERSION")
+end
+
+end # module

@@ -1,0 +1,346 @@
+//! coverage-axis-sys: raw declarations of the coverage-axis C ABI (`include/coverage_axis.h`,
+//! ABI 2). Names, field order and types follow the header exactly; docs/abi.md gives the rules
+//! (struct_size, defaults, ownership). Every struct is declared through `ca_struct!`, which also
+//! records its layout (`layouts()`), so the test compares the declarations with the C compiler's
+//! layout printed by tests/abi_layout.
+#![allow(non_camel_case_types)]
+
+use std::os::raw::{c_char, c_void};
+
+/// The ABI version whose struct layouts this crate declares.
+pub const CA_ABI_VERSION: u32 = 2;
+
+pub type ca_status = i32;
+pub const CA_OK: ca_status = 0;
+pub const CA_ERROR_INVALID_ARGUMENT: ca_status = 1;
+pub const CA_ERROR_NULL_POINTER: ca_status = 2;
+pub const CA_ERROR_STRUCT_SIZE: ca_status = 3;
+pub const CA_ERROR_INVALID_INPUT: ca_status = 4;
+pub const CA_ERROR_DEGENERATE_INPUT: ca_status = 5;
+pub const CA_ERROR_UNCOVERABLE: ca_status = 6;
+pub const CA_ERROR_GEOMETRY: ca_status = 7;
+pub const CA_ERROR_SOLVER: ca_status = 8;
+pub const CA_ERROR_CANCELLED: ca_status = 9;
+pub const CA_ERROR_OUT_OF_MEMORY: ca_status = 10;
+pub const CA_ERROR_BUFFER_TOO_SMALL: ca_status = 11;
+pub const CA_ERROR_INTERNAL: ca_status = 12;
+pub const CA_ERROR_NO_CANDIDATES: ca_status = 13;
+
+pub const CA_CANDIDATES_VORONOI: i32 = 0;
+pub const CA_CANDIDATES_RANDOM: i32 = 1;
+pub const CA_DILATE_OFFSET: i32 = 0;
+pub const CA_DILATE_SCALE: i32 = 1;
+pub const CA_SOLVER_EXACT: i32 = 0;
+pub const CA_SOLVER_GREEDY: i32 = 1;
+pub const CA_SOLVER_CAPP: i32 = 2;
+pub const CA_EFFORT_FAST: i32 = 0;
+pub const CA_EFFORT_PROVE: i32 = 1;
+pub const CA_CONNECT_POWER: i32 = 0;
+pub const CA_CONNECT_MEDIAL: i32 = 1;
+pub const CA_CONNECT_AUTO: i32 = 2;
+
+#[repr(C)]
+pub struct ca_context {
+    _opaque: [u8; 0],
+}
+#[repr(C)]
+pub struct ca_candidate_set {
+    _opaque: [u8; 0],
+}
+#[repr(C)]
+pub struct ca_selection {
+    _opaque: [u8; 0],
+}
+#[repr(C)]
+pub struct ca_skeleton {
+    _opaque: [u8; 0],
+}
+
+pub type ca_log_fn = Option<unsafe extern "C" fn(user: *mut c_void, level: i32, message: *const c_char)>;
+pub type ca_progress_fn =
+    Option<unsafe extern "C" fn(user: *mut c_void, stage: *const c_char, fraction: f64) -> i32>;
+pub type ca_alloc_fn = Option<unsafe extern "C" fn(user: *mut c_void, size: usize) -> *mut c_void>;
+pub type ca_free_fn = Option<unsafe extern "C" fn(user: *mut c_void, pointer: *mut c_void)>;
+
+/// One struct's layout as this crate declares it: name, size, and (field, offset, size) in
+/// declaration order.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct StructLayout {
+    pub name: &'static str,
+    pub size: usize,
+    pub fields: Vec<(&'static str, usize, usize)>,
+}
+
+fn pointee_size<T>(_: *const T) -> usize {
+    std::mem::size_of::<T>()
+}
+
+/// Declares a `#[repr(C)]` struct and a `layout()` that reports its fields' offsets and sizes
+/// (taken from the declaration itself, so the layout test checks exactly what is compiled).
+macro_rules! ca_struct {
+    ($(#[$meta:meta])* $name:ident { $($(#[$fmeta:meta])* $field:ident : $ty:ty,)* }) => {
+        $(#[$meta])*
+        #[repr(C)]
+        #[derive(Clone, Copy)]
+        pub struct $name { $($(#[$fmeta])* pub $field: $ty,)* }
+
+        impl $name {
+            pub fn layout() -> StructLayout {
+                let value = std::mem::MaybeUninit::<$name>::uninit();
+                let base = value.as_ptr();
+                let mut fields = Vec::new();
+                $(
+                    // SAFETY: addr_of! takes the field's address without reading it
+                    let field = unsafe { std::ptr::addr_of!((*base).$field) };
+                    fields.push((stringify!($field), field as usize - base as usize, pointee_size(field)));
+                )*
+                StructLayout { name: stringify!($name), size: std::mem::size_of::<$name>(), fields }
+            }
+        }
+    };
+}
+
+ca_struct!(ca_context_desc {
+    struct_size: u32,
+    alloc: ca_alloc_fn,
+    free: ca_free_fn,
+    alloc_user: *mut c_void,
+    log: ca_log_fn,
+    log_user: *mut c_void,
+    progress: ca_progress_fn,
+    progress_user: *mut c_void,
+    threads: i32,
+    /// ABI 2
+    progress_interval_s: f64,
+});
+
+ca_struct!(ca_surface_view {
+    struct_size: u32,
+    positions: *const f64,
+    vertex_count: usize,
+    position_stride: usize,
+    triangles: *const u32,
+    triangle_count: usize,
+    triangle_stride: usize,
+    normals: *const f64,
+    normal_stride: usize,
+});
+
+ca_struct!(ca_candidate_options {
+    struct_size: u32,
+    generator: i32,
+    cover_samples: u32,
+    voronoi_samples: u32,
+    random_candidates: u32,
+    seed: u64,
+    connect_samples: u32,
+});
+
+ca_struct!(ca_select_options {
+    struct_size: u32,
+    dilation: i32,
+    delta: f64,
+    scale: f64,
+    solver: i32,
+    time_limit_s: f64,
+    skip_uncoverable: i32,
+    ignorable_samples: *const u8,
+    forced_in: *const u8,
+    forced_out: *const u8,
+    target_count: u32,
+    target_tolerance: f64,
+    divide_threshold: u32,
+    effort: i32,
+});
+
+ca_struct!(#[derive(Debug, Default)] ca_select_stats {
+    struct_size: u32,
+    proven_optimal: i32,
+    solver: i32,
+    objective: f64,
+    lower_bound: f64,
+    gap: f64,
+    delta_absolute: f64,
+    time_reduce_s: f64,
+    time_solve_s: f64,
+    time_total_s: f64,
+    rows_before: u64,
+    cols_before: u64,
+    rows_after: u64,
+    cols_after: u64,
+    forced: u64,
+    components: u64,
+    probes: u64,
+    parts: u64,
+    scale_used: f64,
+    /// ABI 2
+    time_coverage_s: f64,
+    /// ABI 2
+    cbc_components: u64,
+    /// ABI 2
+    rowgen_rounds: u64,
+});
+
+ca_struct!(ca_connect_options {
+    struct_size: u32,
+    method: i32,
+    remove_outside: i32,
+    fill_holes: i32,
+    reconnect: i32,
+});
+
+ca_struct!(#[derive(Debug, Default)] ca_skeleton_stats {
+    struct_size: u32,
+    vertices: u64,
+    edges: u64,
+    faces: u64,
+    components: u64,
+    isolated: u64,
+    betti1: i64,
+    time_s: f64,
+    method: i32,
+});
+
+ca_struct!(ca_skeleton_view {
+    struct_size: u32,
+    centers: *const f64,
+    radii: *const f64,
+    vertex_count: usize,
+    edges: *const u32,
+    edge_count: usize,
+    faces: *const u32,
+    face_count: usize,
+});
+
+ca_struct!(ca_evaluate_options {
+    struct_size: u32,
+    surface_samples: u32,
+    envelope_samples: u32,
+    seed: u64,
+});
+
+ca_struct!(#[derive(Debug, Default)] ca_evaluation {
+    struct_size: u32,
+    hd_surface_to_recon: f64,
+    mean_surface_to_recon: f64,
+    hd_recon_to_surface: f64,
+    mean_recon_to_surface: f64,
+    hd_two_sided: f64,
+    diagonal: f64,
+    surface_samples_used: u64,
+    envelope_samples_used: u64,
+    time_s: f64,
+});
+
+/// Every struct this crate declares, in header order.
+pub fn layouts() -> Vec<StructLayout> {
+    vec![
+        ca_context_desc::layout(),
+        ca_surface_view::layout(),
+        ca_candidate_options::layout(),
+        ca_select_options::layout(),
+        ca_select_stats::layout(),
+        ca_connect_options::layout(),
+        ca_skeleton_stats::layout(),
+        ca_skeleton_view::layout(),
+        ca_evaluate_options::layout(),
+        ca_evaluation::layout(),
+    ]
+}
+
+extern "C" {
+    pub fn ca_version() -> u32;
+    pub fn ca_abi_version() -> u32;
+    pub fn ca_status_string(status: ca_status) -> *const c_char;
+
+    pub fn ca_context_desc_defaults(desc: *mut ca_context_desc, struct_size: u32) -> ca_status;
+    pub fn ca_context_create(desc: *const ca_context_desc, out: *mut *mut ca_context) -> ca_status;
+    pub fn ca_context_destroy(ctx: *mut ca_context);
+    pub fn ca_context_request_cancel(ctx: *mut ca_context);
+    pub fn ca_context_clear_cancel(ctx: *mut ca_context);
+    pub fn ca_context_last_error(ctx: *const ca_context) -> *const c_char;
+
+    pub fn ca_surface_view_defaults(view: *mut ca_surface_view, struct_size: u32) -> ca_status;
+
+    pub fn ca_candidate_options_defaults(options: *mut ca_candidate_options, struct_size: u32) -> ca_status;
+    pub fn ca_candidates(
+        ctx: *mut ca_context,
+        surface: *const ca_surface_view,
+        options: *const ca_candidate_options,
+        out: *mut *mut ca_candidate_set,
+    ) -> ca_status;
+    pub fn ca_candidates_from_arrays(
+        ctx: *mut ca_context,
+        samples: *const f64,
+        sample_count: usize,
+        sample_stride: usize,
+        centers: *const f64,
+        center_stride: usize,
+        radii: *const f64,
+        radius_stride: usize,
+        ball_count: usize,
+        reference_length: f64,
+        out: *mut *mut ca_candidate_set,
+    ) -> ca_status;
+    pub fn ca_candidate_set_destroy(set: *mut ca_candidate_set);
+    pub fn ca_candidate_set_count(set: *const ca_candidate_set) -> usize;
+    pub fn ca_candidate_set_centers(set: *const ca_candidate_set) -> *const f64;
+    pub fn ca_candidate_set_radii(set: *const ca_candidate_set) -> *const f64;
+    pub fn ca_candidate_set_sample_count(set: *const ca_candidate_set) -> usize;
+    pub fn ca_candidate_set_samples(set: *const ca_candidate_set) -> *const f64;
+    pub fn ca_candidate_set_reference_length(set: *const ca_candidate_set) -> f64;
+    pub fn ca_candidate_set_flipped(set: *const ca_candidate_set) -> i32;
+    pub fn ca_candidate_set_copy(
+        set: *const ca_candidate_set,
+        centers: *mut f64,
+        radii: *mut f64,
+        capacity: usize,
+        count: *mut usize,
+    ) -> ca_status;
+
+    pub fn ca_select_options_defaults(options: *mut ca_select_options, struct_size: u32) -> ca_status;
+    pub fn ca_select(
+        ctx: *mut ca_context,
+        set: *const ca_candidate_set,
+        options: *const ca_select_options,
+        out: *mut *mut ca_selection,
+    ) -> ca_status;
+    pub fn ca_selection_destroy(selection: *mut ca_selection);
+    pub fn ca_selection_count(selection: *const ca_selection) -> usize;
+    pub fn ca_selection_indices(selection: *const ca_selection) -> *const u32;
+    pub fn ca_selection_centers(selection: *const ca_selection) -> *const f64;
+    pub fn ca_selection_radii(selection: *const ca_selection) -> *const f64;
+    pub fn ca_selection_dilated_radii(selection: *const ca_selection) -> *const f64;
+    pub fn ca_selection_uncovered_count(selection: *const ca_selection) -> usize;
+    pub fn ca_selection_uncovered(selection: *const ca_selection) -> *const u32;
+    pub fn ca_selection_stats(selection: *const ca_selection, stats: *mut ca_select_stats) -> ca_status;
+
+    pub fn ca_connect_options_defaults(options: *mut ca_connect_options, struct_size: u32) -> ca_status;
+    pub fn ca_connect(
+        ctx: *mut ca_context,
+        set: *const ca_candidate_set,
+        selection: *const ca_selection,
+        options: *const ca_connect_options,
+        out: *mut *mut ca_skeleton,
+    ) -> ca_status;
+    pub fn ca_skeleton_destroy(skeleton: *mut ca_skeleton);
+    pub fn ca_skeleton_vertex_count(skeleton: *const ca_skeleton) -> usize;
+    pub fn ca_skeleton_centers(skeleton: *const ca_skeleton) -> *const f64;
+    pub fn ca_skeleton_radii(skeleton: *const ca_skeleton) -> *const f64;
+    pub fn ca_skeleton_edge_count(skeleton: *const ca_skeleton) -> usize;
+    pub fn ca_skeleton_edges(skeleton: *const ca_skeleton) -> *const u32;
+    pub fn ca_skeleton_face_count(skeleton: *const ca_skeleton) -> usize;
+    pub fn ca_skeleton_faces(skeleton: *const ca_skeleton) -> *const u32;
+    pub fn ca_skeleton_stats_get(skeleton: *const ca_skeleton, stats: *mut ca_skeleton_stats) -> ca_status;
+
+    pub fn ca_skeleton_view_defaults(view: *mut ca_skeleton_view, struct_size: u32) -> ca_status;
+    pub fn ca_skeleton_get_view(skeleton: *const ca_skeleton, view: *mut ca_skeleton_view) -> ca_status;
+    pub fn ca_evaluate_options_defaults(options: *mut ca_evaluate_options, struct_size: u32) -> ca_status;
+    pub fn ca_evaluate(
+        ctx: *mut ca_context,
+        surface: *const ca_surface_view,
+        skeleton: *const ca_skeleton_view,
+        options: *const ca_evaluate_options,
+        result: *mut ca_evaluation,
+    ) -> ca_status;
+}

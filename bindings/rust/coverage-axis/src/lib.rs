@@ -1,0 +1,709 @@
+//! coverage-axis: a safe Rust API over the coverage-axis C library (Coverage Axis medial
+//! skeletons, Dou et al., EG 2022). Three steps, each a method of [`Context`]:
+//! [`Context::candidates`] (surface -> samples + inner candidate balls), [`Context::select`]
+//! (fewest dilated balls covering the samples), [`Context::connect`] (edges and faces between
+//! them). Results own their C objects (freed on drop), are `Send + Sync`, outlive their context,
+//! and lend their arrays as slices borrowed from themselves. Options start from the library's
+//! own defaults (`ca_*_defaults`) and change through builder methods.
+use coverage_axis_sys as sys;
+use std::ffi::CStr;
+use std::fmt;
+use std::marker::PhantomData;
+use std::os::raw::{c_char, c_void};
+use std::ptr;
+use std::sync::Arc;
+
+pub use sys::{ca_evaluation as Evaluation, ca_select_stats as SelectStats, ca_skeleton_stats as SkeletonStats};
+
+/// A failed call: the library's status code and its message.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Error {
+    pub status: i32,
+    pub message: String,
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{} ({})", self.message, status_string(self.status))
+    }
+}
+
+impl std::error::Error for Error {}
+
+pub type Result<T> = std::result::Result<T, Error>;
+
+/// The library's static name of a status, e.g. "CA_ERROR_NULL_POINTER: a required pointer is NULL".
+pub fn status_string(status: i32) -> String {
+    // SAFETY: ca_status_string returns a static NUL-terminated string for any value
+    unsafe { cstr(sys::ca_status_string(status)) }
+}
+
+/// The linked library's version number (major * 10000 + minor * 100 + patch).
+pub fn version() -> u32 {
+    unsafe { sys::ca_version() }
+}
+
+unsafe fn cstr(p: *const c_char) -> String {
+    if p.is_null() {
+        String::new()
+    } else {
+        CStr::from_ptr(p).to_string_lossy().into_owned()
+    }
+}
+
+/// A status without a context: the message is the status's name.
+fn check(status: i32) -> Result<()> {
+    if status == sys::CA_OK {
+        Ok(())
+    } else {
+        Err(Error { status, message: status_string(status) })
+    }
+}
+
+/// A slice of `count` items of `N` values each from a getter pointer (empty: not read).
+unsafe fn items<'a, T, const N: usize>(p: *const T, count: usize) -> &'a [[T; N]] {
+    if count == 0 || p.is_null() {
+        &[]
+    } else {
+        std::slice::from_raw_parts(p as *const [T; N], count)
+    }
+}
+
+unsafe fn values<'a, T>(p: *const T, count: usize) -> &'a [T] {
+    if count == 0 || p.is_null() {
+        &[]
+    } else {
+        std::slice::from_raw_parts(p, count)
+    }
+}
+
+/// Fills a struct with the library's defaults for this crate's layout of it.
+macro_rules! defaults {
+    ($ty:ty, $fn:path) => {{
+        let mut raw = std::mem::MaybeUninit::<$ty>::zeroed();
+        // SAFETY: the library writes at most size_of::<$ty>() bytes (the size passed)
+        let status = unsafe { $fn(raw.as_mut_ptr(), std::mem::size_of::<$ty>() as u32) };
+        assert_eq!(status, sys::CA_OK, "the linked library does not know this crate's {} (ABI {})",
+                   stringify!($ty), sys::CA_ABI_VERSION);
+        unsafe { raw.assume_init() }
+    }};
+}
+
+// ---- surface ---------------------------------------------------------------------------------
+
+/// A borrowed input surface: a triangle mesh, or an oriented point cloud (one outward normal per
+/// point). It is read during a call only.
+#[derive(Clone, Copy)]
+pub struct Surface<'a> {
+    raw: sys::ca_surface_view,
+    _data: PhantomData<&'a [f64]>,
+}
+
+impl<'a> Surface<'a> {
+    /// A triangle mesh: x y z per vertex, 0-based i j k per triangle.
+    pub fn mesh(positions: &'a [[f64; 3]], triangles: &'a [[u32; 3]]) -> Surface<'a> {
+        let mut raw: sys::ca_surface_view = defaults!(sys::ca_surface_view, sys::ca_surface_view_defaults);
+        raw.positions = positions.as_ptr() as *const f64;
+        raw.vertex_count = positions.len();
+        raw.triangles = triangles.as_ptr() as *const u32;
+        raw.triangle_count = triangles.len();
+        Surface { raw, _data: PhantomData }
+    }
+
+    /// An oriented point cloud: positions and outward normals (the same count, or the call fails).
+    pub fn points(positions: &'a [[f64; 3]], normals: &'a [[f64; 3]]) -> Surface<'a> {
+        let mut raw: sys::ca_surface_view = defaults!(sys::ca_surface_view, sys::ca_surface_view_defaults);
+        raw.positions = positions.as_ptr() as *const f64;
+        raw.vertex_count = positions.len();
+        raw.normals = if normals.len() == positions.len() { normals.as_ptr() as *const f64 } else { ptr::null() };
+        Surface { raw, _data: PhantomData }
+    }
+}
+
+// ---- options ---------------------------------------------------------------------------------
+
+/// Generator of the candidate balls.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Generator {
+    Voronoi = sys::CA_CANDIDATES_VORONOI as isize,
+    Random = sys::CA_CANDIDATES_RANDOM as isize,
+}
+
+/// How the selected balls are dilated before covering the samples.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Dilation {
+    /// r' = r + delta * reference length (delta a fraction of the longest bbox side)
+    Offset(f64),
+    /// r' = r * scale
+    Scale(f64),
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Solver {
+    Exact = sys::CA_SOLVER_EXACT as isize,
+    Greedy = sys::CA_SOLVER_GREEDY as isize,
+    Capp = sys::CA_SOLVER_CAPP as isize,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Effort {
+    Fast = sys::CA_EFFORT_FAST as isize,
+    Prove = sys::CA_EFFORT_PROVE as isize,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ConnectMethod {
+    Power = sys::CA_CONNECT_POWER as isize,
+    Medial = sys::CA_CONNECT_MEDIAL as isize,
+    Auto = sys::CA_CONNECT_AUTO as isize,
+}
+
+/// Options of [`Context::candidates`]; `default()` is the library's defaults.
+#[derive(Clone, Copy)]
+pub struct CandidateOptions {
+    raw: sys::ca_candidate_options,
+}
+
+impl Default for CandidateOptions {
+    fn default() -> Self {
+        CandidateOptions { raw: defaults!(sys::ca_candidate_options, sys::ca_candidate_options_defaults) }
+    }
+}
+
+impl CandidateOptions {
+    pub fn new() -> Self {
+        Self::default()
+    }
+    pub fn generator(mut self, generator: Generator) -> Self {
+        self.raw.generator = generator as i32;
+        self
+    }
+    /// |S|, the surface samples to cover.
+    pub fn cover_samples(mut self, n: u32) -> Self {
+        self.raw.cover_samples = n;
+        self
+    }
+    pub fn voronoi_samples(mut self, n: u32) -> Self {
+        self.raw.voronoi_samples = n;
+        self
+    }
+    pub fn random_candidates(mut self, n: u32) -> Self {
+        self.raw.random_candidates = n;
+        self
+    }
+    pub fn seed(mut self, seed: u64) -> Self {
+        self.raw.seed = seed;
+        self
+    }
+    pub fn connect_samples(mut self, n: u32) -> Self {
+        self.raw.connect_samples = n;
+        self
+    }
+    /// The C struct, for reading the values.
+    pub fn raw(&self) -> &sys::ca_candidate_options {
+        &self.raw
+    }
+}
+
+/// Options of [`Context::select`]; `default()` is the library's defaults. The masks are borrowed
+/// until the call.
+#[derive(Clone, Copy)]
+pub struct SelectOptions<'a> {
+    raw: sys::ca_select_options,
+    _masks: PhantomData<&'a [u8]>,
+}
+
+impl<'a> Default for SelectOptions<'a> {
+    fn default() -> Self {
+        SelectOptions { raw: defaults!(sys::ca_select_options, sys::ca_select_options_defaults), _masks: PhantomData }
+    }
+}
+
+fn mask(m: Option<&[u8]>) -> *const u8 {
+    m.map_or(ptr::null(), |m| m.as_ptr())
+}
+
+impl<'a> SelectOptions<'a> {
+    pub fn new() -> Self {
+        Self::default()
+    }
+    pub fn dilation(mut self, dilation: Dilation) -> Self {
+        match dilation {
+            Dilation::Offset(delta) => {
+                self.raw.dilation = sys::CA_DILATE_OFFSET;
+                self.raw.delta = delta;
+            }
+            Dilation::Scale(scale) => {
+                self.raw.dilation = sys::CA_DILATE_SCALE;
+                self.raw.scale = scale;
+            }
+        }
+        self
+    }
+    pub fn solver(mut self, solver: Solver) -> Self {
+        self.raw.solver = solver as i32;
+        self
+    }
+    pub fn effort(mut self, effort: Effort) -> Self {
+        self.raw.effort = effort as i32;
+        self
+    }
+    /// Exact solver wall-clock budget; <= 0: no limit.
+    pub fn time_limit_s(mut self, seconds: f64) -> Self {
+        self.raw.time_limit_s = seconds;
+        self
+    }
+    pub fn skip_uncoverable(mut self, skip: bool) -> Self {
+        self.raw.skip_uncoverable = skip as i32;
+        self
+    }
+    /// At most `k` balls with the smallest dilation achieving it (0 = off).
+    pub fn target_count(mut self, k: u32) -> Self {
+        self.raw.target_count = k;
+        self
+    }
+    pub fn target_tolerance(mut self, tolerance: f64) -> Self {
+        self.raw.target_tolerance = tolerance;
+        self
+    }
+    pub fn divide_threshold(mut self, samples: u32) -> Self {
+        self.raw.divide_threshold = samples;
+        self
+    }
+    /// One entry per sample; non-zero: need not be covered. Lengths are checked by the call.
+    pub fn ignorable_samples(mut self, m: Option<&'a [u8]>) -> Self {
+        self.raw.ignorable_samples = mask(m);
+        self
+    }
+    /// One entry per candidate ball; non-zero: must be selected.
+    pub fn forced_in(mut self, m: Option<&'a [u8]>) -> Self {
+        self.raw.forced_in = mask(m);
+        self
+    }
+    /// One entry per candidate ball; non-zero: must not be selected.
+    pub fn forced_out(mut self, m: Option<&'a [u8]>) -> Self {
+        self.raw.forced_out = mask(m);
+        self
+    }
+    pub fn raw(&self) -> &sys::ca_select_options {
+        &self.raw
+    }
+}
+
+/// Options of [`Context::connect`]; `default()` is the library's defaults.
+#[derive(Clone, Copy)]
+pub struct ConnectOptions {
+    raw: sys::ca_connect_options,
+}
+
+impl Default for ConnectOptions {
+    fn default() -> Self {
+        ConnectOptions { raw: defaults!(sys::ca_connect_options, sys::ca_connect_options_defaults) }
+    }
+}
+
+impl ConnectOptions {
+    pub fn new() -> Self {
+        Self::default()
+    }
+    pub fn method(mut self, method: ConnectMethod) -> Self {
+        self.raw.method = method as i32;
+        self
+    }
+    pub fn remove_outside(mut self, on: bool) -> Self {
+        self.raw.remove_outside = on as i32;
+        self
+    }
+    pub fn fill_holes(mut self, on: bool) -> Self {
+        self.raw.fill_holes = on as i32;
+        self
+    }
+    pub fn reconnect(mut self, on: bool) -> Self {
+        self.raw.reconnect = on as i32;
+        self
+    }
+    pub fn raw(&self) -> &sys::ca_connect_options {
+        &self.raw
+    }
+}
+
+/// Options of [`Context::evaluate`]; `default()` is the library's defaults.
+#[derive(Clone, Copy)]
+pub struct EvaluateOptions {
+    raw: sys::ca_evaluate_options,
+}
+
+impl Default for EvaluateOptions {
+    fn default() -> Self {
+        EvaluateOptions { raw: defaults!(sys::ca_evaluate_options, sys::ca_evaluate_options_defaults) }
+    }
+}
+
+impl EvaluateOptions {
+    pub fn new() -> Self {
+        Self::default()
+    }
+    pub fn surface_samples(mut self, n: u32) -> Self {
+        self.raw.surface_samples = n;
+        self
+    }
+    pub fn envelope_samples(mut self, n: u32) -> Self {
+        self.raw.envelope_samples = n;
+        self
+    }
+    pub fn seed(mut self, seed: u64) -> Self {
+        self.raw.seed = seed;
+        self
+    }
+    pub fn raw(&self) -> &sys::ca_evaluate_options {
+        &self.raw
+    }
+}
+
+// ---- context ---------------------------------------------------------------------------------
+
+type ProgressFn = dyn FnMut(&str, f64) -> bool + Send;
+type LogFn = dyn FnMut(i32, &str) + Send;
+
+/// The closures a context calls back; boxed so their address stays fixed.
+#[derive(Default)]
+struct Callbacks {
+    progress: Option<Box<ProgressFn>>,
+    log: Option<Box<LogFn>>,
+}
+
+unsafe extern "C" fn progress_trampoline(user: *mut c_void, stage: *const c_char, fraction: f64) -> i32 {
+    let callbacks = &mut *(user as *mut Callbacks);
+    let stage = cstr(stage);
+    match callbacks.progress.as_mut() {
+        // a panic must not unwind into C: it cancels the call instead
+        Some(f) => match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| f(&stage, fraction))) {
+            Ok(true) => 0,
+            _ => 1,
+        },
+        None => 0,
+    }
+}
+
+unsafe extern "C" fn log_trampoline(user: *mut c_void, level: i32, message: *const c_char) {
+    let callbacks = &mut *(user as *mut Callbacks);
+    let message = cstr(message);
+    if let Some(f) = callbacks.log.as_mut() {
+        let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| f(level, &message)));
+    }
+}
+
+/// The C context, shared by the [`Context`] and its [`CancelHandle`]s; freed with the last.
+struct RawContext(*mut sys::ca_context);
+
+// SAFETY: the only call made through a shared RawContext from other threads is
+// ca_context_request_cancel, which the library allows from any thread.
+unsafe impl Send for RawContext {}
+unsafe impl Sync for RawContext {}
+
+impl Drop for RawContext {
+    fn drop(&mut self) {
+        unsafe { sys::ca_context_destroy(self.0) }
+    }
+}
+
+/// Builds a [`Context`]: threads, progress closure, log closure, progress interval.
+pub struct ContextBuilder {
+    desc: sys::ca_context_desc,
+    callbacks: Callbacks,
+}
+
+impl ContextBuilder {
+    /// Worker threads of the parallel stages: 0 = all cores (the default), 1 = serial.
+    pub fn threads(mut self, threads: i32) -> Self {
+        self.desc.threads = threads;
+        self
+    }
+    /// Least time between two progress calls within a stage (default 0: every update).
+    pub fn progress_interval_s(mut self, seconds: f64) -> Self {
+        self.desc.progress_interval_s = seconds;
+        self
+    }
+    /// Called on the calling thread with a stage name and a fraction in [0, 1]; return false to
+    /// cancel the running call (it fails with CA_ERROR_CANCELLED).
+    pub fn progress<F: FnMut(&str, f64) -> bool + Send + 'static>(mut self, f: F) -> Self {
+        self.callbacks.progress = Some(Box::new(f));
+        self
+    }
+    /// Log messages: level 0 debug, 1 info, 2 warning.
+    pub fn log<F: FnMut(i32, &str) + Send + 'static>(mut self, f: F) -> Self {
+        self.callbacks.log = Some(Box::new(f));
+        self
+    }
+    pub fn build(self) -> Result<Context> {
+        let mut desc = self.desc;
+        let callbacks = Box::into_raw(Box::new(self.callbacks));
+        // SAFETY: callbacks stays valid until Context::drop, after the last call that uses it
+        unsafe {
+            if (*callbacks).progress.is_some() {
+                desc.progress = Some(progress_trampoline);
+                desc.progress_user = callbacks as *mut c_void;
+            }
+            if (*callbacks).log.is_some() {
+                desc.log = Some(log_trampoline);
+                desc.log_user = callbacks as *mut c_void;
+            }
+        }
+        let mut raw = ptr::null_mut();
+        let status = unsafe { sys::ca_context_create(&desc, &mut raw) };
+        if status != sys::CA_OK {
+            drop(unsafe { Box::from_raw(callbacks) });
+            check(status)?;
+        }
+        Ok(Context { raw: Arc::new(RawContext(raw)), callbacks, _not_sync: PhantomData })
+    }
+}
+
+/// A thread-safe handle that cancels the running (and every later) call of its context until
+/// [`CancelHandle::clear`]. It keeps the C context alive, so it may outlive the [`Context`].
+#[derive(Clone)]
+pub struct CancelHandle {
+    raw: Arc<RawContext>,
+}
+
+impl CancelHandle {
+    pub fn cancel(&self) {
+        unsafe { sys::ca_context_request_cancel(self.raw.0) }
+    }
+    pub fn clear(&self) {
+        unsafe { sys::ca_context_clear_cancel(self.raw.0) }
+    }
+}
+
+/// Runs the three steps. Used by one thread at a time (`Send`, not `Sync`); cancel from other
+/// threads through [`Context::cancel_handle`].
+pub struct Context {
+    raw: Arc<RawContext>,
+    callbacks: *mut Callbacks,
+    // a context is not Sync: calls on it must not overlap
+    _not_sync: PhantomData<std::cell::Cell<()>>,
+}
+
+// SAFETY: the context and its boxed Send closures may move to another thread as a whole.
+unsafe impl Send for Context {}
+
+impl Drop for Context {
+    fn drop(&mut self) {
+        // The C context may live on in a CancelHandle, but no call that could run a callback can
+        // be made through one, so the closures may go now.
+        drop(unsafe { Box::from_raw(self.callbacks) });
+    }
+}
+
+impl Context {
+    /// A context with the library's defaults (all cores, no callbacks).
+    pub fn new() -> Result<Context> {
+        Context::builder().build()
+    }
+
+    pub fn builder() -> ContextBuilder {
+        ContextBuilder {
+            desc: defaults!(sys::ca_context_desc, sys::ca_context_desc_defaults),
+            callbacks: Callbacks::default(),
+        }
+    }
+
+    pub fn cancel_handle(&self) -> CancelHandle {
+        CancelHandle { raw: self.raw.clone() }
+    }
+
+    fn ptr(&self) -> *mut sys::ca_context {
+        self.raw.0
+    }
+
+    /// Ok, or the status with the context's message for the failed call.
+    fn check(&self, status: i32) -> Result<()> {
+        if status == sys::CA_OK {
+            return Ok(());
+        }
+        let message = unsafe { cstr(sys::ca_context_last_error(self.ptr())) };
+        Err(Error { status, message: if message.is_empty() { status_string(status) } else { message } })
+    }
+
+    /// Step 1: surface samples and inner candidate balls.
+    pub fn candidates(&self, surface: &Surface<'_>, options: &CandidateOptions) -> Result<CandidateSet> {
+        let mut out = ptr::null_mut();
+        self.check(unsafe { sys::ca_candidates(self.ptr(), &surface.raw, &options.raw, &mut out) })?;
+        Ok(CandidateSet { raw: out })
+    }
+
+    /// Step 1 from the caller's own samples and balls (radius = undilated medial radius);
+    /// reference_length 0 = the longest bbox side of the samples.
+    pub fn candidates_from_arrays(&self, samples: &[[f64; 3]], centers: &[[f64; 3]], radii: &[f64],
+                                  reference_length: f64) -> Result<CandidateSet> {
+        if centers.len() != radii.len() {
+            return Err(Error { status: sys::CA_ERROR_INVALID_ARGUMENT,
+                               message: format!("{} centres but {} radii", centers.len(), radii.len()) });
+        }
+        let mut out = ptr::null_mut();
+        self.check(unsafe {
+            sys::ca_candidates_from_arrays(self.ptr(), samples.as_ptr() as *const f64, samples.len(), 0,
+                                           centers.as_ptr() as *const f64, 0, radii.as_ptr(), 0,
+                                           centers.len(), reference_length, &mut out)
+        })?;
+        Ok(CandidateSet { raw: out })
+    }
+
+    /// Step 2: the fewest dilated candidate balls covering every sample.
+    pub fn select(&self, set: &CandidateSet, options: &SelectOptions<'_>) -> Result<Selection> {
+        let mut out = ptr::null_mut();
+        self.check(unsafe { sys::ca_select(self.ptr(), set.raw, &options.raw, &mut out) })?;
+        Ok(Selection { raw: out })
+    }
+
+    /// Step 3: edges and faces between the selected balls (`set` is the selection's own set).
+    pub fn connect(&self, set: &CandidateSet, selection: &Selection, options: &ConnectOptions) -> Result<Skeleton> {
+        let mut out = ptr::null_mut();
+        self.check(unsafe { sys::ca_connect(self.ptr(), set.raw, selection.raw, &options.raw, &mut out) })?;
+        Ok(Skeleton { raw: out })
+    }
+
+    /// The three steps with default options.
+    pub fn skeletonize(&self, surface: &Surface<'_>) -> Result<Skeleton> {
+        let set = self.candidates(surface, &CandidateOptions::default())?;
+        let selection = self.select(&set, &SelectOptions::default())?;
+        self.connect(&set, &selection, &ConnectOptions::default())
+    }
+
+    /// Hausdorff distances between the surface and the skeleton's reconstruction, in % of the
+    /// bounding-box diagonal.
+    pub fn evaluate(&self, surface: &Surface<'_>, skeleton: &Skeleton, options: &EvaluateOptions) -> Result<Evaluation> {
+        let mut view: sys::ca_skeleton_view = defaults!(sys::ca_skeleton_view, sys::ca_skeleton_view_defaults);
+        check(unsafe { sys::ca_skeleton_get_view(skeleton.raw, &mut view) })?;
+        let mut result = Evaluation { struct_size: std::mem::size_of::<Evaluation>() as u32, ..Default::default() };
+        self.check(unsafe { sys::ca_evaluate(self.ptr(), &surface.raw, &view, &options.raw, &mut result) })?;
+        Ok(result)
+    }
+}
+
+// ---- results ---------------------------------------------------------------------------------
+
+/// Surface samples and candidate balls (step 1). Selections made from it keep the C object alive,
+/// so it may be dropped before them.
+pub struct CandidateSet {
+    raw: *mut sys::ca_candidate_set,
+}
+
+/// Balls chosen by step 2; it may outlive its candidate set and context.
+pub struct Selection {
+    raw: *mut sys::ca_selection,
+}
+
+/// The medial skeleton (step 3); it holds nothing of the other objects.
+pub struct Skeleton {
+    raw: *mut sys::ca_skeleton,
+}
+
+// SAFETY: results are immutable and may be read from several threads at once (docs/abi.md).
+unsafe impl Send for CandidateSet {}
+unsafe impl Sync for CandidateSet {}
+unsafe impl Send for Selection {}
+unsafe impl Sync for Selection {}
+unsafe impl Send for Skeleton {}
+unsafe impl Sync for Skeleton {}
+
+impl Drop for CandidateSet {
+    fn drop(&mut self) {
+        unsafe { sys::ca_candidate_set_destroy(self.raw) }
+    }
+}
+impl Drop for Selection {
+    fn drop(&mut self) {
+        unsafe { sys::ca_selection_destroy(self.raw) }
+    }
+}
+impl Drop for Skeleton {
+    fn drop(&mut self) {
+        unsafe { sys::ca_skeleton_destroy(self.raw) }
+    }
+}
+
+impl CandidateSet {
+    pub fn len(&self) -> usize {
+        unsafe { sys::ca_candidate_set_count(self.raw) }
+    }
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+    pub fn centers(&self) -> &[[f64; 3]] {
+        unsafe { items(sys::ca_candidate_set_centers(self.raw), self.len()) }
+    }
+    pub fn radii(&self) -> &[f64] {
+        unsafe { values(sys::ca_candidate_set_radii(self.raw), self.len()) }
+    }
+    pub fn samples(&self) -> &[[f64; 3]] {
+        unsafe { items(sys::ca_candidate_set_samples(self.raw), sys::ca_candidate_set_sample_count(self.raw)) }
+    }
+    /// The length delta is a fraction of (the longest bbox side), in the input's units.
+    pub fn reference_length(&self) -> f64 {
+        unsafe { sys::ca_candidate_set_reference_length(self.raw) }
+    }
+    /// The input mesh faced inward and was flipped for the inside test.
+    pub fn flipped(&self) -> bool {
+        unsafe { sys::ca_candidate_set_flipped(self.raw) != 0 }
+    }
+}
+
+impl Selection {
+    pub fn len(&self) -> usize {
+        unsafe { sys::ca_selection_count(self.raw) }
+    }
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+    /// Indices into the candidate set.
+    pub fn indices(&self) -> &[u32] {
+        unsafe { values(sys::ca_selection_indices(self.raw), self.len()) }
+    }
+    pub fn centers(&self) -> &[[f64; 3]] {
+        unsafe { items(sys::ca_selection_centers(self.raw), self.len()) }
+    }
+    /// Undilated radii.
+    pub fn radii(&self) -> &[f64] {
+        unsafe { values(sys::ca_selection_radii(self.raw), self.len()) }
+    }
+    pub fn dilated_radii(&self) -> &[f64] {
+        unsafe { values(sys::ca_selection_dilated_radii(self.raw), self.len()) }
+    }
+    /// Samples no ball covers (with skip_uncoverable).
+    pub fn uncovered(&self) -> &[u32] {
+        unsafe { values(sys::ca_selection_uncovered(self.raw), sys::ca_selection_uncovered_count(self.raw)) }
+    }
+    pub fn stats(&self) -> SelectStats {
+        let mut stats = SelectStats { struct_size: std::mem::size_of::<SelectStats>() as u32, ..Default::default() };
+        check(unsafe { sys::ca_selection_stats(self.raw, &mut stats) }).expect("stats of a live selection");
+        stats
+    }
+}
+
+impl Skeleton {
+    pub fn len(&self) -> usize {
+        unsafe { sys::ca_skeleton_vertex_count(self.raw) }
+    }
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+    pub fn centers(&self) -> &[[f64; 3]] {
+        unsafe { items(sys::ca_skeleton_centers(self.raw), self.len()) }
+    }
+    pub fn radii(&self) -> &[f64] {
+        unsafe { values(sys::ca_skeleton_radii(self.raw), self.len()) }
+    }
+    /// i j per edge, including the faces' edges.
+    pub fn edges(&self) -> &[[u32; 2]] {
+        unsafe { items(sys::ca_skeleton_edges(self.raw), sys::ca_skeleton_edge_count(self.raw)) }
+    }
+    pub fn faces(&self) -> &[[u32; 3]] {
+        unsafe { items(sys::ca_skeleton_faces(self.raw), sys::ca_skeleton_face_count(self.raw)) }
+    }
+    pub fn stats(&self) -> SkeletonStats {
+        let mut stats = SkeletonStats { struct_size: std::mem::size_of::<SkeletonStats>() as u32, ..Default::default() };
+        check(unsafe { sys::ca_skeleton_stats_get(self.raw, &mut stats) }).expect("stats of a live skeleton");
+        stats
+    }
+}

@@ -1,0 +1,155 @@
+//! fox.rs: the safe API against the CLI and the library's contracts. Skeletonizes
+//! tests/data/fox.obj and compares ball count, centres, radii, edge and face counts with the .ma
+//! the CLI writes for the same file (CA_CLI: the coverage-axis tool, CA_TEST_DATA: tests/data);
+//! checks errors, defaults, progress, cancellation and lifetimes.
+use coverage_axis::*;
+use std::path::PathBuf;
+use std::process::Command;
+
+fn data(name: &str) -> PathBuf {
+    PathBuf::from(std::env::var("CA_TEST_DATA").expect("CA_TEST_DATA: the tests/data folder")).join(name)
+}
+
+/// v and f lines of an OBJ (1-based indices, "i/t/n" forms take the first number).
+fn read_obj(path: &PathBuf) -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
+    let text = std::fs::read_to_string(path).unwrap();
+    let (mut v, mut f) = (Vec::new(), Vec::new());
+    for line in text.lines() {
+        let mut it = line.split_whitespace();
+        match it.next() {
+            Some("v") => {
+                let p: Vec<f64> = it.take(3).map(|s| s.parse().unwrap()).collect();
+                v.push([p[0], p[1], p[2]]);
+            }
+            Some("f") => {
+                let i: Vec<u32> = it.map(|s| s.split('/').next().unwrap().parse::<u32>().unwrap() - 1).collect();
+                for k in 1..i.len() - 1 {
+                    f.push([i[0], i[k], i[k + 1]]);
+                }
+            }
+            _ => {}
+        }
+    }
+    (v, f)
+}
+
+/// The CLI's skeleton of `model`: ([x y z r] per ball, edge count, face count).
+fn cli_skeleton(model: &PathBuf) -> (Vec<[f64; 4]>, usize, usize) {
+    let cli = std::env::var("CA_CLI").expect("CA_CLI: the coverage-axis tool");
+    let out = std::env::temp_dir().join(format!("coverage_axis_rust_{}.ma", std::process::id()));
+    let status = Command::new(cli).arg(model).arg("-o").arg(&out).arg("--quiet").status().unwrap();
+    assert!(status.success());
+    let text = std::fs::read_to_string(&out).unwrap();
+    std::fs::remove_file(&out).unwrap();
+    let mut lines = text.lines();
+    let counts: Vec<usize> = lines.next().unwrap().split(' ').map(|s| s.parse().unwrap()).collect();
+    let balls: Vec<[f64; 4]> = lines
+        .filter(|l| l.starts_with("v "))
+        .map(|l| {
+            let x: Vec<f64> = l[2..].split(' ').map(|s| s.parse().unwrap()).collect();
+            [x[0], x[1], x[2], x[3]]
+        })
+        .collect();
+    assert_eq!(balls.len(), counts[0]);
+    (balls, counts[1], counts[2])
+}
+
+/// The .ma has 9 significant digits.
+fn close(a: f64, b: f64) -> bool {
+    (a - b).abs() <= 1e-7 * b.abs().max(1.0)
+}
+
+#[test]
+fn fox_matches_the_cli() {
+    let model = data("fox.obj");
+    let (v, f) = read_obj(&model);
+    let ctx = Context::builder().threads(2).build().unwrap();
+    let skeleton = ctx.skeletonize(&Surface::mesh(&v, &f)).unwrap();
+    let (balls, edges, faces) = cli_skeleton(&model);
+    assert!(balls.len() > 10);
+    assert_eq!(skeleton.len(), balls.len());
+    for ((c, r), b) in skeleton.centers().iter().zip(skeleton.radii()).zip(&balls) {
+        assert!(close(c[0], b[0]) && close(c[1], b[1]) && close(c[2], b[2]) && close(*r, b[3]),
+                "ball {:?} {} vs the CLI's {:?}", c, r, b);
+    }
+    assert_eq!(skeleton.edges().len(), edges);
+    assert_eq!(skeleton.faces().len(), faces);
+    let stats = skeleton.stats();
+    assert_eq!(stats.vertices as usize, balls.len());
+    let evaluation = ctx.evaluate(&Surface::mesh(&v, &f), &skeleton, &EvaluateOptions::new().surface_samples(2000)
+                                  .envelope_samples(2000)).unwrap();
+    assert!(evaluation.hd_two_sided > 0.0 && evaluation.hd_two_sided < 20.0, "{:?}", evaluation);
+    println!("fox: {} balls, {} edges, {} faces match the CLI", balls.len(), edges, faces);
+}
+
+#[test]
+fn results_outlive_context_and_set() {
+    let (v, f) = read_obj(&data("fox.obj"));
+    let ctx = Context::new().unwrap();
+    let set = ctx.candidates(&Surface::mesh(&v, &f), &CandidateOptions::new().cover_samples(300)).unwrap();
+    let candidates = set.len();
+    let selection = ctx.select(&set, &SelectOptions::new().solver(Solver::Greedy)).unwrap();
+    let skeleton = ctx.connect(&set, &selection, &ConnectOptions::default()).unwrap();
+    drop(ctx);
+    drop(set);
+    let indices = selection.indices();
+    assert_eq!(indices.len(), selection.len());
+    assert!(indices.iter().all(|&i| (i as usize) < candidates));
+    assert_eq!(selection.centers().len(), skeleton.len());
+    assert!(selection.dilated_radii().iter().zip(selection.radii()).all(|(d, r)| d > r));
+    assert_eq!(selection.stats().objective as usize, selection.len());
+    // results are Send + Sync: read from another thread
+    let n = std::thread::spawn(move || skeleton.centers().len()).join().unwrap();
+    assert_eq!(n, selection.len());
+}
+
+#[test]
+fn defaults_come_from_the_library() {
+    let o = SelectOptions::new();
+    assert_eq!(o.raw().delta, 0.02);
+    assert_eq!(o.raw().scale, 1.5);
+    assert_eq!(o.raw().struct_size as usize, std::mem::size_of_val(o.raw()));
+    assert_eq!(CandidateOptions::new().raw().cover_samples, 1500);
+    assert_eq!(ConnectOptions::new().raw().method, ConnectMethod::Auto as i32);
+    assert_eq!(EvaluateOptions::new().raw().surface_samples, 30000);
+}
+
+#[test]
+fn errors_carry_status_and_message() {
+    let ctx = Context::new().unwrap();
+    let e = ctx.candidates(&Surface::mesh(&[], &[]), &CandidateOptions::new()).err().unwrap();
+    assert_eq!(e.status, coverage_axis_sys::CA_ERROR_DEGENERATE_INPUT);
+    assert!(!e.message.is_empty());
+    let v = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+    let e = ctx.candidates(&Surface::mesh(&v, &[[0, 1, 7]]), &CandidateOptions::new()).err().unwrap();
+    assert_eq!(e.status, coverage_axis_sys::CA_ERROR_INVALID_INPUT, "{}", e);
+    let e = Context::builder().threads(-1).build().err().unwrap();
+    assert_eq!(e.status, coverage_axis_sys::CA_ERROR_INVALID_ARGUMENT);
+}
+
+#[test]
+fn progress_closure_and_cancel() {
+    let (v, f) = read_obj(&data("fox.obj"));
+    let seen = std::sync::Arc::new(std::sync::Mutex::new(Vec::<String>::new()));
+    let log = seen.clone();
+    let ctx = Context::builder().progress(move |stage, fraction| {
+        assert!((0.0..=1.0).contains(&fraction));
+        log.lock().unwrap().push(stage.to_string());
+        true
+    }).build().unwrap();
+    ctx.candidates(&Surface::mesh(&v, &f), &CandidateOptions::new().cover_samples(300)).unwrap();
+    assert!(seen.lock().unwrap().iter().any(|s| s == "sampling"));
+
+    // a closure returning false cancels the call
+    let stop = Context::builder().progress(|_, _| false).build().unwrap();
+    let e = stop.candidates(&Surface::mesh(&v, &f), &CandidateOptions::new()).err().unwrap();
+    assert_eq!(e.status, coverage_axis_sys::CA_ERROR_CANCELLED);
+
+    // a cancel handle sent to another thread; the request stays in force until cleared
+    let handle = ctx.cancel_handle();
+    std::thread::spawn(move || handle.cancel()).join().unwrap();
+    let e = ctx.candidates(&Surface::mesh(&v, &f), &CandidateOptions::new()).err().unwrap();
+    assert_eq!(e.status, coverage_axis_sys::CA_ERROR_CANCELLED);
+    ctx.cancel_handle().clear();
+    assert!(ctx.candidates(&Surface::mesh(&v, &f), &CandidateOptions::new().cover_samples(300)).is_ok());
+}
