@@ -281,34 +281,40 @@ for (T, destroy) in ((CandidateSet, :ca_candidate_set_destroy), (Selection, :ca_
     end
 end
 
-getter(name, T, x) = ccall((name, libcoverage_axis), Ptr{T}, (Ptr{Cvoid},), x.ptr)
-count_of(name, x) = Int(ccall((name, libcoverage_axis), Csize_t, (Ptr{Cvoid},), x.ptr))
+# ccall needs constant names and return types, so each count and getter is generated.
+for (f, T, cname) in ((:length, CandidateSet, :ca_candidate_set_count), (:length, Selection, :ca_selection_count),
+                      (:length, Skeleton, :ca_skeleton_vertex_count),
+                      (:sample_count, CandidateSet, :ca_candidate_set_sample_count),
+                      (:uncovered_count, Selection, :ca_selection_uncovered_count),
+                      (:edge_count, Skeleton, :ca_skeleton_edge_count), (:face_count, Skeleton, :ca_skeleton_face_count))
+    name = f === :length ? :(Base.length) : f
+    @eval $name(s::$T) = Int(ccall(($(QuoteNode(cname)), libcoverage_axis), Csize_t, (Ptr{Cvoid},), s.ptr))
+end
 
-Base.length(s::CandidateSet) = count_of(:ca_candidate_set_count, s)
-Base.length(s::Selection) = count_of(:ca_selection_count, s)
-Base.length(s::Skeleton) = count_of(:ca_skeleton_vertex_count, s)
+# (function, owner, C getter, element type, rows (0: a vector), count): centers and samples are
+# 3×n (one column per point), edges 2×m and faces 3×k with 0-based indices (edges include the
+# faces' edges), radii undilated, indices 0-based into the candidate set.
+for (f, T, cname, E, rows, n) in (
+        (:centers, CandidateSet, :ca_candidate_set_centers, Float64, 3, length),
+        (:radii, CandidateSet, :ca_candidate_set_radii, Float64, 0, length),
+        (:samples, CandidateSet, :ca_candidate_set_samples, Float64, 3, sample_count),
+        (:centers, Selection, :ca_selection_centers, Float64, 3, length),
+        (:radii, Selection, :ca_selection_radii, Float64, 0, length),
+        (:dilated_radii, Selection, :ca_selection_dilated_radii, Float64, 0, length),
+        (:indices, Selection, :ca_selection_indices, UInt32, 0, length),
+        (:uncovered, Selection, :ca_selection_uncovered, UInt32, 0, uncovered_count),
+        (:centers, Skeleton, :ca_skeleton_centers, Float64, 3, length),
+        (:radii, Skeleton, :ca_skeleton_radii, Float64, 0, length),
+        (:edges, Skeleton, :ca_skeleton_edges, UInt32, 2, edge_count),
+        (:faces, Skeleton, :ca_skeleton_faces, UInt32, 3, face_count))
+    @eval function $f(s::$T)
+        p = ccall(($(QuoteNode(cname)), libcoverage_axis), Ptr{$E}, (Ptr{Cvoid},), s.ptr)
+        owned(s, p, $rows == 0 ? ($n(s),) : ($rows, $n(s)))
+    end
+end
 
-"""3×n centres (one column per ball)."""
-centers(s::CandidateSet) = owned(s, getter(:ca_candidate_set_centers, Float64, s), (3, length(s)))
-centers(s::Selection) = owned(s, getter(:ca_selection_centers, Float64, s), (3, length(s)))
-centers(s::Skeleton) = owned(s, getter(:ca_skeleton_centers, Float64, s), (3, length(s)))
-"""Undilated medial radii."""
-radii(s::CandidateSet) = owned(s, getter(:ca_candidate_set_radii, Float64, s), (length(s),))
-radii(s::Selection) = owned(s, getter(:ca_selection_radii, Float64, s), (length(s),))
-radii(s::Skeleton) = owned(s, getter(:ca_skeleton_radii, Float64, s), (length(s),))
-samples(s::CandidateSet) =
-    owned(s, getter(:ca_candidate_set_samples, Float64, s), (3, count_of(:ca_candidate_set_sample_count, s)))
 reference_length(s::CandidateSet) =
     ccall((:ca_candidate_set_reference_length, libcoverage_axis), Float64, (Ptr{Cvoid},), s.ptr)
-dilated_radii(s::Selection) = owned(s, getter(:ca_selection_dilated_radii, Float64, s), (length(s),))
-"""0-based indices into the candidate set."""
-indices(s::Selection) = owned(s, getter(:ca_selection_indices, UInt32, s), (length(s),))
-uncovered(s::Selection) =
-    owned(s, getter(:ca_selection_uncovered, UInt32, s), (count_of(:ca_selection_uncovered_count, s),))
-"""2×m 0-based vertex indices per edge (including the faces' edges)."""
-edges(s::Skeleton) = owned(s, getter(:ca_skeleton_edges, UInt32, s), (2, count_of(:ca_skeleton_edge_count, s)))
-"""3×k 0-based vertex indices per face."""
-faces(s::Skeleton) = owned(s, getter(:ca_skeleton_faces, UInt32, s), (3, count_of(:ca_skeleton_face_count, s)))
 
 function stats(s::Selection)
     r = Ref(blank(SelectStats))

@@ -5,6 +5,22 @@
 //! them). Results own their C objects (freed on drop), are `Send + Sync`, outlive their context,
 //! and lend their arrays as slices borrowed from themselves. Options start from the library's
 //! own defaults (`ca_*_defaults`) and change through builder methods.
+//!
+//! ```no_run
+//! use coverage_axis::*;
+//! # fn main() -> Result<()> {
+//! let v: Vec<[f64; 3]> = vec![/* x y z per vertex */];
+//! let f: Vec<[u32; 3]> = vec![/* 0-based i j k per triangle */];
+//! let ctx = Context::builder().threads(0).progress(|stage, t| { eprintln!("{} {:.0}%", stage, 100.0 * t); true }).build()?;
+//! let surface = Surface::mesh(&v, &f);
+//! let set = ctx.candidates(&surface, &CandidateOptions::new().cover_samples(1500))?;
+//! let selection = ctx.select(&set, &SelectOptions::new().dilation(Dilation::Offset(0.02)))?;
+//! let skeleton = ctx.connect(&set, &selection, &ConnectOptions::default())?;
+//! for (c, r) in skeleton.centers().iter().zip(skeleton.radii()) { println!("{:?} {}", c, r); }
+//! println!("{} edges, {} faces", skeleton.edges().len(), skeleton.faces().len());
+//! # Ok(())
+//! # }
+//! ```
 use coverage_axis_sys as sys;
 use std::ffi::CStr;
 use std::fmt;
