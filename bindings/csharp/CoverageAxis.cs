@@ -217,32 +217,39 @@ namespace CoverageAxis
         }
     }
 
-    public sealed class ContextHandle : SafeHandle
+    /// <summary>A C object owned by a SafeHandle; subclasses name the destroy function.</summary>
+    public abstract class OwnedHandle : SafeHandle
     {
-        public ContextHandle() : base(IntPtr.Zero, true) { }
+        protected OwnedHandle() : base(IntPtr.Zero, true) { }
         public override bool IsInvalid { get { return handle == IntPtr.Zero; } }
+    }
+
+    public sealed class ContextHandle : OwnedHandle
+    {
         protected override bool ReleaseHandle() { Native.ca_context_destroy(handle); return true; }
     }
 
-    public sealed class CandidateSetHandle : SafeHandle
+    public sealed class CandidateSetHandle : OwnedHandle
     {
-        public CandidateSetHandle() : base(IntPtr.Zero, true) { }
-        public override bool IsInvalid { get { return handle == IntPtr.Zero; } }
         protected override bool ReleaseHandle() { Native.ca_candidate_set_destroy(handle); return true; }
     }
 
-    public sealed class SelectionHandle : SafeHandle
+    public sealed class SelectionHandle : OwnedHandle
     {
-        public SelectionHandle() : base(IntPtr.Zero, true) { }
-        public override bool IsInvalid { get { return handle == IntPtr.Zero; } }
         protected override bool ReleaseHandle() { Native.ca_selection_destroy(handle); return true; }
     }
 
-    public sealed class SkeletonHandle : SafeHandle
+    public sealed class SkeletonHandle : OwnedHandle
     {
-        public SkeletonHandle() : base(IntPtr.Zero, true) { }
-        public override bool IsInvalid { get { return handle == IntPtr.Zero; } }
         protected override bool ReleaseHandle() { Native.ca_skeleton_destroy(handle); return true; }
+    }
+
+    /// <summary>Pins managed arrays for the duration of one call.</summary>
+    static class Pinning
+    {
+        public static GCHandle Pin(Array a) { return a == null ? default(GCHandle) : GCHandle.Alloc(a, GCHandleType.Pinned); }
+        public static IntPtr Address(GCHandle h) { return h.IsAllocated ? h.AddrOfPinnedObject() : IntPtr.Zero; }
+        public static void Free(GCHandle[] pins) { foreach (var p in pins) if (p.IsAllocated) p.Free(); }
     }
 
     /// <summary>A failed call: the library's status and its message.</summary>
@@ -280,24 +287,21 @@ namespace CoverageAxis
         {
             var view = new Native.SurfaceView();
             Native.CheckDefaults(Native.ca_surface_view_defaults(ref view, Native.SizeOf<Native.SurfaceView>()), "ca_surface_view");
-            var pins = new[] { Pin(Positions), Pin(Triangles), Pin(Normals) };
+            var pins = new[] { Pinning.Pin(Positions), Pinning.Pin(Triangles), Pinning.Pin(Normals) };
             try
             {
-                view.positions = Address(pins[0]);
+                view.positions = Pinning.Address(pins[0]);
                 view.vertex_count = (UIntPtr)(Positions == null ? 0 : Positions.Length / 3);
-                view.triangles = Address(pins[1]);
+                view.triangles = Pinning.Address(pins[1]);
                 view.triangle_count = (UIntPtr)(Triangles == null ? 0 : Triangles.Length / 3);
-                view.normals = Address(pins[2]);
+                view.normals = Pinning.Address(pins[2]);
                 return f(view);
             }
             finally
             {
-                foreach (var p in pins) if (p.IsAllocated) p.Free();
+                Pinning.Free(pins);
             }
         }
-
-        static GCHandle Pin(Array a) { return a == null ? default(GCHandle) : GCHandle.Alloc(a, GCHandleType.Pinned); }
-        static IntPtr Address(GCHandle h) { return h.IsAllocated ? h.AddrOfPinnedObject() : IntPtr.Zero; }
     }
 
     /// <summary>Options of Context.Candidates, starting from the library's defaults.</summary>
@@ -446,18 +450,18 @@ namespace CoverageAxis
         {
             options = options ?? new SelectOptions();
             var o = options.Raw;
-            var pins = new[] { Pin(options.IgnorableSamples), Pin(options.ForcedIn), Pin(options.ForcedOut) };
+            var pins = new[] { Pinning.Pin(options.IgnorableSamples), Pinning.Pin(options.ForcedIn), Pinning.Pin(options.ForcedOut) };
             try
             {
-                o.ignorable_samples = Address(pins[0]);
-                o.forced_in = Address(pins[1]);
-                o.forced_out = Address(pins[2]);
+                o.ignorable_samples = Pinning.Address(pins[0]);
+                o.forced_in = Pinning.Address(pins[1]);
+                o.forced_out = Pinning.Address(pins[2]);
                 SelectionHandle h = null;
                 return Run(token, () => Native.ca_select(handle, set.Handle, ref o, out h), () => new Selection(h));
             }
             finally
             {
-                foreach (var p in pins) if (p.IsAllocated) p.Free();
+                Pinning.Free(pins);
             }
         }
 
@@ -494,9 +498,6 @@ namespace CoverageAxis
             GC.KeepAlive(skeleton);
             return done;
         }
-
-        static GCHandle Pin(byte[] a) { return a == null ? default(GCHandle) : GCHandle.Alloc(a, GCHandleType.Pinned); }
-        static IntPtr Address(GCHandle h) { return h.IsAllocated ? h.AddrOfPinnedObject() : IntPtr.Zero; }
     }
 
     /// <summary>Copies getter arrays out of the C objects.</summary>
