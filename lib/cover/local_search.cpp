@@ -27,12 +27,13 @@ constexpr uint64_t kStallPerElement = 5;
 constexpr uint64_t kStallMin = 2000;
 }  // namespace
 
-std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start, size_t lower_bound,
-                                   uint64_t max_steps, uint64_t seed, const Deadline& deadline,
-                                   uint64_t* steps, const std::atomic<size_t>* known_bound, SearchRace* race,
-                                   uint64_t* found_step) {
-    if (steps) *steps = 0;
-    if (found_step) *found_step = 0;
+SearchResult local_search(const Problem& P, std::vector<uint32_t> start, const SearchSettings& settings) {
+    const size_t lower_bound = settings.lower_bound;
+    const uint64_t max_steps = settings.max_steps, seed = settings.seed;
+    const Deadline& deadline = settings.deadline;
+    const std::atomic<size_t>* known_bound = settings.known_bound;
+    SearchRace* race = settings.race;
+    SearchResult result;
     std::sort(start.begin(), start.end());
     // an optimal cover found at swap `at`: tell the other runs
     auto publish = [&](uint64_t at) {
@@ -43,7 +44,8 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
     };
     if (P.R == 0 || start.size() <= lower_bound || !covers_problem(P, start)) {
         if (P.R == 0 || start.size() <= lower_bound) publish(0);
-        return start;
+        result.cover = std::move(start);
+        return result;
     }
     const uint32_t R = P.R, C = P.C;
     // raw pointers: the byte stores into `in` may alias anything, and would otherwise make the
@@ -156,14 +158,15 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
     uint64_t last_improved = 0;
     auto finish = [&](uint64_t at) {  // best is optimal, found at swap `at`
         publish(at);
-        if (found_step) *found_step = at;
-        return best;
+        result.found_step = at;
+        result.cover = std::move(best);
+        return result;
     };
     const uint64_t patience = std::max<uint64_t>(kStallMin, kStallPerElement * (uint64_t(R) + C));
     uint64_t step_now = 0;
     for (uint64_t step = 1; step <= max_steps; ++step) {
         step_now = step;
-        if (steps) *steps = step;
+        result.steps = step;
         while (uncovered.empty()) {
             if (sel.size() < best.size()) {
                 best = sel;
@@ -210,19 +213,24 @@ std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start
         std::sort(best.begin(), best.end());
     }
     remove_redundant(P.cptr, P.crow, P.R, nullptr, nullptr, best);
-    if (found_step) *found_step = last_improved;
-    return best;
+    result.found_step = last_improved;
+    result.cover = std::move(best);
+    return result;
 }
 
-SearchRuns::SearchRuns(const Problem& P, const std::vector<uint32_t>& start, size_t lower_bound, uint64_t max_steps,
-                       uint64_t seed, int starts, const Deadline& deadline, const std::atomic<size_t>* known_bound)
-    : P_(P), start_(start), lower_bound_(lower_bound), max_steps_(max_steps), seed_(seed), deadline_(deadline),
-      known_bound_(known_bound), found_(size_t(std::max(1, starts))), found_at_(found_.size(), 0) {}
+SearchRuns::SearchRuns(const Problem& P, const std::vector<uint32_t>& start, const SearchSettings& settings, int starts)
+    : P_(P), start_(start), settings_(settings), found_(size_t(std::max(1, starts))), found_at_(found_.size(), 0) {
+    settings_.race = &race_;
+}
 
 void SearchRuns::work() {
-    for (size_t i = next_++; i < found_.size(); i = next_++)
-        found_[i] = local_search(P_, start_, lower_bound_, max_steps_, seed_ + i, deadline_, nullptr, known_bound_, &race_,
-                                 &found_at_[i]);
+    for (size_t i = next_++; i < found_.size(); i = next_++) {
+        SearchSettings run = settings_;
+        run.seed = settings_.seed + i;
+        SearchResult r = local_search(P_, start_, run);
+        found_[i] = std::move(r.cover);
+        found_at_[i] = r.found_step;
+    }
 }
 
 std::vector<uint32_t> SearchRuns::best() const {

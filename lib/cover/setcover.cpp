@@ -252,7 +252,13 @@ ComponentResult solve_component(const Problem& P, const Deadline& deadline, int 
     bool have_duals = false;
     const std::vector<uint32_t> start = out.sel;
     const int starts = (P.R <= kSmallSearchRows || large) ? kSmallSearchStarts : kLocalSearchStarts;
-    SearchRuns runs(P, start, size_t(out.lb), kLocalSearchSteps, kLocalSearchSeed, starts, ls_deadline, &known_bound);
+    SearchSettings search;
+    search.lower_bound = size_t(out.lb);
+    search.max_steps = kLocalSearchSteps;
+    search.seed = kLocalSearchSeed;
+    search.deadline = ls_deadline;
+    search.known_bound = &known_bound;
+    SearchRuns runs(P, start, search, starts);
     size_t branched_bound = 0;  // > 0: branching showed that every cover has at least this many columns
     auto lp_phase = [&]() {
         const std::vector<double> duals =

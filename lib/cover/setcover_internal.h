@@ -161,40 +161,49 @@ RowGenOutcome row_generation(const Problem& K, size_t target, const Deadline& de
                              int threads, const Monitor& monitor);
 
 // ---- local_search.cpp ----
-// Row-weighting local search (RWLS) from the cover `start` of P: returns the smallest cover
-// found (ascending, redundancy-free, never larger than `start`). Stops after `max_steps` swaps,
-// when it stalls (no improvement for max(2000, 5 (R + C)) swaps + as many as the last
-// improvement took), at `deadline`, or when a cover of `lower_bound` columns is found.
-// Deterministic for a seed unless the deadline cuts it short. `steps` (optional) receives the
-// number of swaps made.
-// `known_bound` (optional): a lower bound that another thread may raise during the search (the
-// LP's); the search stops once its best cover reaches it. That only saves time: below a bound
-// the best cover cannot change, so the result is the same whenever the bound arrives.
-// `race` (optional, shared by runs side by side): when a run's best cover is known to be
-// optimal (it reaches lower_bound or known_bound), the swap at which it was found is published
-// in race->optimal_step (the smallest such swap); a run that has not found an optimal cover
-// by then stops, since it can only end with a larger cover or a later one.
-// `found_step` (optional) receives the swap at which the returned cover was first reached
-// (0 for the start).
+// Runs side by side share a race: when a run's best cover is known to be optimal (it reaches
+// lower_bound or known_bound), the swap at which it was found is published in optimal_step
+// (the smallest such swap); a run that has not found an optimal cover by then stops, since it
+// can only end with a larger cover or a later one.
 struct SearchRace {
     std::atomic<uint64_t> optimal_step{UINT64_MAX};
 };
-std::vector<uint32_t> local_search(const Problem& P, std::vector<uint32_t> start, size_t lower_bound,
-                                   uint64_t max_steps, uint64_t seed, const Deadline& deadline,
-                                   uint64_t* steps = nullptr, const std::atomic<size_t>* known_bound = nullptr,
-                                   SearchRace* race = nullptr, uint64_t* found_step = nullptr);
+
+// What bounds one run of the local search.
+struct SearchSettings {
+    size_t lower_bound = 0;    // stop at a cover this small
+    uint64_t max_steps = 0;    // at most this many swaps
+    uint64_t seed = 1;
+    Deadline deadline;         // a safety stop: results depend on it only when it cuts a run short
+    // A lower bound another thread may raise during the search (the LP's); the search stops once
+    // its best cover reaches it. That only saves time: below a bound the best cover cannot
+    // change, so the result is the same whenever the bound arrives. May be null.
+    const std::atomic<size_t>* known_bound = nullptr;
+    SearchRace* race = nullptr;  // shared by runs side by side; may be null
+};
+
+struct SearchResult {
+    std::vector<uint32_t> cover;  // ascending, redundancy-free, never larger than the start
+    uint64_t steps = 0;           // swaps made
+    uint64_t found_step = 0;      // the swap at which `cover` was first reached (0: the start)
+};
+
+// Row-weighting local search (RWLS) from the cover `start` of P: the smallest cover found.
+// Stops after max_steps swaps, when it stalls (no improvement for max(2000, 5 (R + C)) swaps +
+// as many as the last improvement took), at the deadline, or when a cover of lower_bound (or
+// known_bound) columns is found. Deterministic for a seed unless the deadline cuts it short.
+SearchResult local_search(const Problem& P, std::vector<uint32_t> start, const SearchSettings& settings);
 
 // Independent runs of local_search from the same start with seeds seed, seed + 1, ...,
-// seed + starts - 1, as a pool of work: every thread that calls work() takes the next run not
-// yet started until none is left, so threads can join at any time (the LP's thread, once its
-// LP is solved). best() (after every work() has returned) is the smallest cover, ties to the one
-// found at the earliest swap, then to the lowest seed. A run stops early only when it can no
-// longer be the one returned (see SearchRace), so best() is the same however many threads took
-// part and whenever they joined. On the paper kernels the seed alone moves results by 1-2 balls.
+// seed + starts - 1 (the other settings shared; `race` is the pool's own), as a pool of work:
+// every thread that calls work() takes the next run not yet started until none is left, so
+// threads can join at any time (the LP's thread, once its LP is solved). best() (after every
+// work() has returned) is the smallest cover, ties to the one found at the earliest swap, then
+// to the lowest seed. A run stops early only when it can no longer be the one returned (see
+// SearchRace), so best() is the same however many threads took part and whenever they joined.
 class SearchRuns {
 public:
-    SearchRuns(const Problem& P, const std::vector<uint32_t>& start, size_t lower_bound, uint64_t max_steps,
-               uint64_t seed, int starts, const Deadline& deadline, const std::atomic<size_t>* known_bound);
+    SearchRuns(const Problem& P, const std::vector<uint32_t>& start, const SearchSettings& settings, int starts);
     void work();
     std::vector<uint32_t> best() const;
     // A run has reached the lower bound or the known bound (a cover that small exists).
@@ -203,10 +212,7 @@ public:
 private:
     const Problem& P_;
     const std::vector<uint32_t>& start_;
-    size_t lower_bound_;
-    uint64_t max_steps_, seed_;
-    Deadline deadline_;
-    const std::atomic<size_t>* known_bound_;
+    SearchSettings settings_;
     SearchRace race_;
     std::atomic<size_t> next_{0};
     std::vector<std::vector<uint32_t>> found_;

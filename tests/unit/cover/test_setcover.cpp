@@ -897,8 +897,8 @@ TEST_CASE("set cover: the local search returns valid covers, never worse than it
         const sc::Problem P = to_problem(c);
         std::vector<uint32_t> g = sc::greedy_cover(P);
         sc::remove_redundant(P.cptr, P.crow, P.R, nullptr, nullptr, g);
-        const std::vector<uint32_t> a = sc::local_search(P, g, 0, 20000, 7, far);
-        const std::vector<uint32_t> b = sc::local_search(P, g, 0, 20000, 7, far);
+        const std::vector<uint32_t> a = sc::local_search(P, g, {0, 20000, 7, far}).cover;
+        const std::vector<uint32_t> b = sc::local_search(P, g, {0, 20000, 7, far}).cover;
         INFO("instance " << t << " greedy " << g.size() << " optimum " << best << " local " << a.size());
         CHECK(valid_cover(c, a));
         CHECK(std::is_sorted(a.begin(), a.end()));
@@ -906,7 +906,7 @@ TEST_CASE("set cover: the local search returns valid covers, never worse than it
         CHECK(int(a.size()) >= best);
         CHECK(a == b);
         // stops at the lower bound: given the optimum as bound, it returns a cover of that size
-        const std::vector<uint32_t> s = sc::local_search(P, g, size_t(best), 20000, 7, far);
+        const std::vector<uint32_t> s = sc::local_search(P, g, {size_t(best), 20000, 7, far}).cover;
         CHECK(int(s.size()) == best);
         CHECK(valid_cover(c, s));
         optimal += int(a.size()) == best;
@@ -929,7 +929,7 @@ std::vector<uint32_t> greedy_start(const sc::Problem& P) {
 std::vector<uint32_t> local_search_multi(const sc::Problem& P, const std::vector<uint32_t>& start, size_t lower_bound,
                                          uint64_t max_steps, uint64_t seed, int starts, int threads,
                                          const Deadline& deadline) {
-    sc::SearchRuns runs(P, start, lower_bound, max_steps, seed, starts, deadline, nullptr);
+    sc::SearchRuns runs(P, start, {lower_bound, max_steps, seed, deadline}, starts);
     run_workers(threads > 1 ? size_t(starts) : 1, [&](size_t) { runs.work(); });
     return runs.best();
 }
@@ -943,9 +943,9 @@ std::vector<uint32_t> best_single_run(const sc::Problem& P, const std::vector<ui
     std::vector<uint32_t> expect;
     uint64_t expect_at = 0;
     for (int k = 0; k < starts; ++k) {
-        uint64_t at = 0;
-        const std::vector<uint32_t> one =
-            sc::local_search(P, g, lower_bound, steps, seed + uint64_t(k), far, nullptr, nullptr, nullptr, &at);
+        const sc::SearchResult run = sc::local_search(P, g, {lower_bound, steps, seed + uint64_t(k), far});
+        const std::vector<uint32_t>& one = run.cover;
+        const uint64_t at = run.found_step;
         if (sizes) sizes->insert(one.size());
         if (found_steps) found_steps->insert(at);
         if (k == 0 || one.size() < expect.size() || (one.size() == expect.size() && at < expect_at)) {
@@ -1018,7 +1018,7 @@ TEST_CASE("set cover: search runs taken by threads that join late, with a bound 
             for (int delay_ms : {0, 2, 20}) {
                 INFO("instance " << t << " early threads " << early << " delay " << delay_ms << " ms");
                 std::atomic<size_t> known{0};
-                sc::SearchRuns runs(P, g, 0, 20000, 40, 4, far, &known);
+                sc::SearchRuns runs(P, g, {0, 20000, 40, far, &known}, 4);
                 std::thread late([&] {
                     std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
                     known.store(bound);
@@ -1043,10 +1043,10 @@ TEST_CASE("set cover: the local search with no steps or an expired deadline keep
     const sc::Problem P = to_problem(c);
     std::vector<uint32_t> g = sc::greedy_cover(P);
     sc::remove_redundant(P.cptr, P.crow, P.R, nullptr, nullptr, g);
-    const std::vector<uint32_t> z = sc::local_search(P, g, 0, 0, 1, Deadline::after(3600));
+    const std::vector<uint32_t> z = sc::local_search(P, g, {0, 0, 1, Deadline::after(3600)}).cover;
     CHECK(valid_cover(c, z));
     CHECK(z.size() <= g.size());
-    const std::vector<uint32_t> e = sc::local_search(P, g, 0, 1000000, 1, Deadline::after(1, Clock::now() - std::chrono::seconds(2)));
+    const std::vector<uint32_t> e = sc::local_search(P, g, {0, 1000000, 1, Deadline::after(1, Clock::now() - std::chrono::seconds(2))}).cover;
     CHECK(valid_cover(c, e));
     CHECK(e.size() <= g.size());
 }
@@ -1068,11 +1068,10 @@ TEST_CASE("set cover: the local search's patience is proportional to the problem
     std::vector<uint32_t> start;
     for (uint32_t g = 0; g < 200; ++g) start.push_back(2 * g);
     const Deadline far = Deadline::after(3600);
-    uint64_t steps = 0;
-    const std::vector<uint32_t> s = sc::local_search(P, start, 0, 1000000, 3, far, &steps);
-    CHECK(s.size() == 200);
-    CHECK(valid_cover(c, s));
-    CHECK(steps == 5 * (600 + 400) + 1);
+    const sc::SearchResult s = sc::local_search(P, start, {0, 1000000, 3, far});
+    CHECK(s.cover.size() == 200);
+    CHECK(valid_cover(c, s.cover));
+    CHECK(s.steps == 5 * (600 + 400) + 1);
     // a small problem gets the minimum patience
     Rng rng(11);
     const Coverage small = random_cover(rng, 20, 15, 0.25);
@@ -1081,10 +1080,10 @@ TEST_CASE("set cover: the local search's patience is proportional to the problem
     const sc::Problem Q = to_problem(small);
     std::vector<uint32_t> g = sc::greedy_cover(Q);
     sc::remove_redundant(Q.cptr, Q.crow, Q.R, nullptr, nullptr, g);
-    const std::vector<uint32_t> a = sc::local_search(Q, g, 0, 1000000, 3, far, &steps);
-    CHECK(int(a.size()) == best);
-    CHECK(steps <= 2 * 2000 + 2000 + 1);
-    CHECK(steps >= 2000);
+    const sc::SearchResult a = sc::local_search(Q, g, {0, 1000000, 3, far});
+    CHECK(int(a.cover.size()) == best);
+    CHECK(a.steps <= 2 * 2000 + 2000 + 1);
+    CHECK(a.steps >= 2000);
 }
 
 TEST_CASE("set cover: the reduction reaches its fixpoint (incremental dominance passes miss nothing)") {
