@@ -11,16 +11,39 @@ namespace caio {
 
 struct MeshData {
     std::vector<double> positions;     // x y z per vertex
-    std::vector<uint32_t> triangles;   // i j k per triangle (polygons are fan-triangulated)
-    std::vector<double> normals;       // nx ny nz per vertex, or empty
+    std::vector<uint32_t> triangles;   // i j k per triangle (polygons are fan-triangulated); empty for a point cloud
+    std::vector<double> normals;       // nx ny nz per vertex when the file gives them, else empty
 };
 
-// .obj (v, vn, f with v/vt/vn forms, negative indices, polygons), .off (also COFF/NOFF headers
-// and comments), .ply (ascii, binary_little_endian, binary_big_endian; any scalar types; vertex
-// x y z [nx ny nz]; face vertex_indices / vertex_index lists), .xyz (x y z [nx ny nz] per line).
-// The format is chosen by extension (case-insensitive). Indices are checked against the vertex
-// count: out of range -> false with a message.
+// Reads a mesh or point cloud. `path` "-" reads standard input (then `format` is required).
+// `format` "" chooses by extension (case-insensitive); otherwise a name without dot:
+//  obj   v, vn, f (v, v/vt, v//vn, v/vt/vn forms; negative indices; polygons). Normals are kept
+//        when there is one vn per v (point clouds); other records are ignored.
+//  off   [ST][C][N]OFF headers, comments; NOFF gives normals.
+//  ply   ascii, binary_little_endian, binary_big_endian; any scalar types; vertex x y z
+//        [nx ny nz]; face vertex_indices / vertex_index lists; other elements skipped.
+//  xyz   "x y z" or "x y z nx ny nz" per line; normals only if every line has them.
+//  pts   blocks of an optional count line (one integer, checked) and "x y z [intensity] [r g b]"
+//        lines (3, 4, 6 or 7 values); only x y z are kept.
+//  stl   binary or ASCII (binary when the size is 84 + 50 * count); equal positions are merged.
+//  gltf, glb  glTF 2.0: triangle primitives of the default scene (all scenes' roots if none) in
+//        world coordinates. External buffer URIs resolve only inside the asset's own folder (no
+//        absolute paths, no '..', no symbolic links out of it; from standard input none at
+//        all); a data: URI may not declare more bytes than the file has. Images are not read.
+//  anything assimp imports (fbx, dae, 3ds, ...; see readable_formats()): from memory only
+//        (referenced files are not opened), node transforms applied.
+// Limits, so memory stays proportional to the input: at most one vertex and one triangle per
+// input byte (glTF: bytes of the file plus its external buffers) and at most 65536 vertices in
+// one polygon; beyond either the reader refuses with a message naming the limit.
+// Indices are checked against the vertex count. On failure `out` is empty and `error` says
+// "file[:line]: what".
+bool read_mesh(const std::string& path, const std::string& format, MeshData& out, std::string& error);
+// Same, format by extension.
 bool read_mesh(const std::string& path, MeshData& out, std::string& error);
+// Parses bytes already in memory (fuzzing, tests); glTF external URIs are all refused.
+bool read_mesh_buffer(const std::string& bytes, const std::string& format, MeshData& out, std::string& error);
+// One line naming every readable format, for --help: "obj off ply ...; through assimp: 3ds ...".
+std::string readable_formats();
 
 // Point/ball files: lines "v x y z [r]" (obj style) or plain "x y z [r]"; '#' comments and
 // other obj records (vn, f, ...) are skipped. `radii` is filled only if every point has one

@@ -459,8 +459,8 @@ TEST_CASE("errors: truncated files, missing files, garbage, absurd counts") {
     CHECK(err.find("g.obj:1: bad number 'zz'") != std::string::npos);
     CHECK_FALSE(caio::read_ma(td.write("g.ma", "hello world\n"), s, err));
     CHECK(err.find("g.ma:1:") != std::string::npos);
-    CHECK_FALSE(caio::read_mesh(td.write("x.stl", "solid\n"), m, err));
-    CHECK(err.find("unknown mesh format") != std::string::npos);
+    CHECK_FALSE(caio::read_mesh(td.write("x.qqq", "solid\n"), m, err));
+    CHECK(err.find("unknown mesh format 'qqq'") != std::string::npos);
     CHECK_FALSE(caio::read_mesh(td.write("empty.obj", ""), m, err));
     CHECK(err.find("no vertices") != std::string::npos);
     // Absurd header counts fail fast without allocating.

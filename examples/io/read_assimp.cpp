@@ -1,0 +1,98 @@
+// read_assimp.cpp: every other mesh format assimp imports (FBX, DAE, 3DS, ...). The file is
+// handed to assimp from memory with an I/O system that opens nothing else, so files an asset
+// references (materials, textures, external geometry) are never read. Assimp triangulates,
+// merges identical vertices and applies the node transforms (pre-transformed vertices, in world
+// units); point and line primitives are dropped. The output obeys the same one-per-input-byte
+// limit as the other readers. Normals are not read (MeshData normals stay empty).
+#include <assimp/IOStream.hpp>
+#include <assimp/IOSystem.hpp>
+#include <assimp/Importer.hpp>
+#include <assimp/config.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <limits>
+#include <string>
+
+#include "readers.h"
+
+namespace caio {
+namespace detail {
+namespace {
+
+// An I/O system with no files: assimp's readers can open only the buffer they were given.
+class NoFiles : public Assimp::IOSystem {
+public:
+    bool Exists(const char*) const override { return false; }
+    char getOsSeparator() const override { return '/'; }
+    Assimp::IOStream* Open(const char*, const char*) override { return nullptr; }
+    void Close(Assimp::IOStream* s) override { delete s; }
+};
+
+}  // namespace
+
+bool assimp_can_read(const std::string& format) {
+    if (format.empty()) return false;
+    Assimp::Importer importer;
+    return importer.IsExtensionSupported("." + format);
+}
+
+std::string assimp_formats() {
+    Assimp::Importer importer;
+    std::string list;
+    importer.GetExtensionList(list);  // "*.3ds;*.obj;..."
+    std::string out;
+    size_t i = 0;
+    while (i < list.size()) {
+        size_t j = list.find(';', i);
+        if (j == std::string::npos) j = list.size();
+        std::string ext = list.substr(i, j - i);
+        if (ext.compare(0, 2, "*.") == 0) ext = ext.substr(2);
+        if (!ext.empty()) out += (out.empty() ? "" : " ") + ext;
+        i = j + 1;
+    }
+    return out;
+}
+
+bool read_assimp(const std::string& name, const std::string& buf, const std::string& format, MeshData& out,
+                 std::string& error) {
+    if (buf.empty()) return fail(error, name, 0, "empty file");
+    Assimp::Importer importer;
+    importer.SetIOHandler(new NoFiles);  // owned by the importer
+    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices |
+                           aiProcess_SortByPType;
+    const aiScene* scene = importer.ReadFileFromMemory(buf.data(), buf.size(), flags, format.c_str());
+    if (!scene) return fail(error, name, 0, std::string("assimp: ") + importer.GetErrorString());
+    size_t nv = 0, nt = 0;
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+        nv += scene->mMeshes[m]->mNumVertices;
+        nt += scene->mMeshes[m]->mNumFaces;
+    }
+    if (!check_budget(name, buf.size(), nv, nt, error)) return false;
+    if (nv > std::numeric_limits<uint32_t>::max()) return fail(error, name, 0, "too many vertices");
+    out.positions.reserve(3 * nv);
+    out.triangles.reserve(3 * nt);
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+        const aiMesh* mesh = scene->mMeshes[m];
+        const uint32_t base = static_cast<uint32_t>(out.positions.size() / 3);
+        for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
+            const aiVector3D& p = mesh->mVertices[v];
+            out.positions.insert(out.positions.end(), {double(p.x), double(p.y), double(p.z)});
+        }
+        for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+            const aiFace& face = mesh->mFaces[f];
+            if (face.mNumIndices != 3) continue;
+            for (unsigned k = 0; k < 3; ++k) {
+                if (face.mIndices[k] >= mesh->mNumVertices)
+                    return fail(error, name, 0, "assimp returned an index out of range");
+                out.triangles.push_back(base + face.mIndices[k]);
+            }
+        }
+    }
+    if (out.triangles.empty()) return fail(error, name, 0, "no triangles");
+    return true;
+}
+
+}  // namespace detail
+}  // namespace caio
