@@ -8,7 +8,9 @@ set -euo pipefail
 # rustc), mono-mcs, mono-runtime and libmono-system-core4.0-cil (C# binding: compiler, runtime, LINQ).
 packages=(build-essential cmake pkg-config libeigen3-dev libnanoflann-dev coinor-libcbc-dev libqhull-dev doctest-dev
           python3 python3-numpy python3-setuptools python3-pip cargo mono-mcs mono-runtime libmono-system-core4.0-cil)
-# extra packages a make target needs (make test-blender: blender)
+# the file readers of the tool (examples/io): glTF (tinygltf with its JSON library) and assimp
+packages+=(libtinygltf-dev nlohmann-json3-dev libassimp-dev)
+# extra packages a make target needs (make test-blender: blender; make fuzz: clang libclang-rt-14-dev)
 packages+=("$@")
 missing=()
 for p in "${packages[@]}"; do
