@@ -334,7 +334,9 @@ std::vector<int> root_nodes(const tinygltf::Model& m) {
 bool add_scene(const std::string& name, const tinygltf::Model& m, size_t budget, MeshData& out, std::string& error) {
     struct Item { int node; Mat4 parent; size_t depth; };
     std::vector<Item> stack;
-    for (int r : root_nodes(m)) stack.push_back({r, identity(), 0});
+    // Depth first, in file order: roots and children are pushed last to first.
+    const std::vector<int> roots = root_nodes(m);
+    for (auto r = roots.rbegin(); r != roots.rend(); ++r) stack.push_back({*r, identity(), 0});
     size_t visits = 0;
     while (!stack.empty()) {
         const Item it = stack.back();
@@ -353,7 +355,7 @@ bool add_scene(const std::string& name, const tinygltf::Model& m, size_t budget,
             for (const auto& p : m.meshes[static_cast<size_t>(n.mesh)].primitives)
                 if (is_triangles(p.mode) && !add_primitive(name, m, p, world, budget, out, error)) return false;
         }
-        for (int c : n.children) stack.push_back({c, world, it.depth + 1});
+        for (auto c = n.children.rbegin(); c != n.children.rend(); ++c) stack.push_back({*c, world, it.depth + 1});
     }
     return true;
 }
