@@ -41,13 +41,22 @@ bench: build
 install: build
 	@cmake --install $(BUILD) $(if $(PREFIX),--prefix $(PREFIX),)
 
-# libFuzzer on the C ABI with ASan/UBSan (clang); FUZZ_SECONDS of fuzzing
+# libFuzzer (clang, ASan/UBSan): the C ABI (fuzz_pipeline) and every file reader (fuzz_read_<format>,
+# seeded with the test models of that format), FUZZ_SECONDS each, one after the other
 FUZZ_SECONDS ?= 60
-fuzz: deps
+FUZZ_READERS ?= obj off ply xyz pts stl gltf glb dae
+fuzz:
+	@FUZZ=1 bash scripts/install-deps.sh
 	@cmake -S . -B build-fuzz -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCA_FUZZ=ON -DCA_SANITIZE=ON \
 	  -DCA_BUILD_TESTS=OFF -DCA_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
-	@cmake --build build-fuzz -j $(JOBS) --target fuzz_pipeline
+	@cmake --build build-fuzz -j $(JOBS) --target fuzz_pipeline $(addprefix fuzz_read_,$(FUZZ_READERS))
 	@mkdir -p build-fuzz/corpus && ./build-fuzz/fuzz_pipeline -max_total_time=$(FUZZ_SECONDS) -max_len=512 build-fuzz/corpus
+	@for f in $(FUZZ_READERS); do \
+	  mkdir -p build-fuzz/corpus_$$f build-fuzz/seeds_$$f && \
+	  find tests/data -name "*.$$f" -size -200k -exec cp {} build-fuzz/seeds_$$f/ \; && \
+	  ./build-fuzz/fuzz_read_$$f -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 \
+	    build-fuzz/corpus_$$f build-fuzz/seeds_$$f || exit 1; \
+	done
 
 clean:
 	@rm -rf $(BUILD) build-fuzz demo-output
