@@ -13,7 +13,7 @@ namespace caio {
 namespace detail {
 bool read_off(const std::string& path, const std::string& buf, MeshData& out, std::string& error) {
     LineReader lr(buf);
-    const char *lb, *le, *tb, *te;
+    const char *lb = nullptr, *le = nullptr, *tb = nullptr, *te = nullptr;
     // Next non-empty line after comment stripping.
     auto next_content = [&](Tok& t) -> bool {
         while (lr.next(lb, le)) {
