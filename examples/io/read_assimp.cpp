@@ -4,6 +4,9 @@
 // merges identical vertices and applies the node transforms (pre-transformed vertices, in world
 // units); point and line primitives are dropped. The output obeys the same one-per-input-byte
 // limit as the other readers. Normals are not read (MeshData normals stay empty).
+// Assimp's Collada reader does not advance past a non-digit in an index list (<p>, <v>,
+// <vcount>, <h>) and fills memory until it runs out; such files are refused before assimp sees
+// them.
 #include <assimp/IOStream.hpp>
 #include <assimp/IOSystem.hpp>
 #include <assimp/Importer.hpp>
@@ -11,6 +14,8 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <cctype>
+#include <cstring>
 #include <limits>
 #include <string>
 
@@ -28,6 +33,19 @@ public:
     Assimp::IOStream* Open(const char*, const char*) override { return nullptr; }
     void Close(Assimp::IOStream* s) override { delete s; }
 };
+
+// True if some Collada index list holds a character other than digits and white space.
+bool bad_collada_index_list(const std::string& buf) {
+    for (const char* tag : {"<p>", "<v>", "<vcount>", "<h>"}) {
+        for (size_t at = buf.find(tag); at != std::string::npos; at = buf.find(tag, at + 1)) {
+            for (size_t i = at + std::strlen(tag); i < buf.size() && buf[i] != '<'; ++i) {
+                const unsigned char c = static_cast<unsigned char>(buf[i]);
+                if (!std::isdigit(c) && !std::isspace(c)) return true;
+            }
+        }
+    }
+    return false;
+}
 
 }  // namespace
 
@@ -57,6 +75,8 @@ std::string assimp_formats() {
 bool read_assimp(const std::string& name, const std::string& buf, const std::string& format, MeshData& out,
                  std::string& error) {
     if (buf.empty()) return fail(error, name, 0, "empty file");
+    if ((format == "dae" || format == "zae" || buf.find("<COLLADA") != std::string::npos) && bad_collada_index_list(buf))
+        return fail(error, name, 0, "Collada index list (<p>, <v>, <vcount> or <h>) holds a character other than digits");
     Assimp::Importer importer;
     importer.SetIOHandler(new NoFiles);  // owned by the importer
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);

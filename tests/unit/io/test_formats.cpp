@@ -124,6 +124,14 @@ TEST_CASE("assimp: Collada fox reads with fox.obj's triangles; referenced files 
     for (size_t i = 0; i < a.size(); ++i)
         for (int k = 0; k < 9; ++k) d = std::max(d, std::fabs(a[i][k] - b[i][k]));
     CHECK(d == 0.0);
+    // A non-digit in a Collada index list is refused before assimp sees it (assimp would fill
+    // memory with zeros).
+    std::string dae = slurp(kFormats + "fox.dae");
+    const size_t p = dae.find("<p>");
+    REQUIRE(p != std::string::npos);
+    dae[p + 5] = ':';
+    TempDir td;
+    CHECK(read_error(td.write("bad.dae", dae)).find("Collada index list") != std::string::npos);
     const std::string formats = caio::readable_formats();
     std::string words = " " + formats + " ";
     std::replace(words.begin(), words.end(), ';', ' ');
