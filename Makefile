@@ -46,7 +46,7 @@ install: build
 FUZZ_SECONDS ?= 60
 FUZZ_READERS ?= obj off ply xyz pts stl gltf glb dae
 fuzz:
-	@FUZZ=1 bash scripts/install-deps.sh
+	@bash scripts/install-deps.sh clang libclang-rt-14-dev
 	@cmake -S . -B build-fuzz -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCA_FUZZ=ON -DCA_SANITIZE=ON \
 	  -DCA_BUILD_TESTS=OFF -DCA_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
 	@cmake --build build-fuzz -j $(JOBS) --target fuzz_pipeline $(addprefix fuzz_read_,$(FUZZ_READERS))
