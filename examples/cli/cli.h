@@ -1,23 +1,95 @@
-// cli.h: pieces the command-line tool's commands share.
+// cli.h: pieces the command-line tool's commands (single run, batch, evaluate) share: the run
+// options (bound to the library's option structs, so their defaults are the library's), the
+// pipeline from an input file to the written outputs and a JSON report, and the error shape.
 #pragma once
 #include "coverage_axis.h"
 #include "mesh_io.h"
+#include "preview.h"
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include <string>
 
 namespace cli {
 
+using Json = nlohmann::ordered_json;
+
+// Version of the JSON reports (bumped when a field changes meaning or goes away).
+constexpr int kFormatVersion = 1;
+
+// Everything that decides a run's results. The structs start as the library's *_init defaults.
+struct RunOptions {
+    ca_candidate_options candidates;
+    ca_select_options select;
+    ca_connect_options connect;
+    ca_evaluate_options evaluation;
+    std::string candidate_kind = "voronoi";  // voronoi | random | a ball file
+    std::string solver, effort, connect_route;
+    std::string surface_samples_file, ignore_samples_file, force_in_file, force_out_file;
+    bool evaluate = false;
+    caio::PreviewOptions preview;
+    std::string view = "auto", up, preview_size;
+    int32_t threads = 0;  // 0 = all cores
+    RunOptions();
+};
+
+// Where one run writes (empty = not written).
+struct Outputs {
+    std::string ma, obj, ply, gltf, preview, export_samples, export_candidates;
+};
+
+// A failed run: a library status (CA_ERROR_*, exit 1) or a tool error (FILE_ERROR exit 3,
+// USAGE_ERROR exit 2; code -1).
+struct Failure {
+    std::string status;
+    int code = -1;
+    std::string message;
+    int exit_code = 1;
+};
+
+struct Outcome {
+    bool ok = false;
+    Json report;      // the --json fields
+    Failure failure;
+};
+
+// The options of a run, on a single run's or the batch command's command line.
+void add_run_options(CLI::App& app, RunOptions& o);
+// Turns the parsed strings into option values; false with a message on a bad combination.
+bool finish_run_options(const CLI::App& app, RunOptions& o, std::string& error);
+// The options as JSON (for batch sidecars): every value that can change an output.
+Json options_json(const RunOptions& o);
+
+// Reads `input`, runs candidates -> selection -> connection, writes `out` and reports.
+Outcome run_pipeline(const std::string& input, const RunOptions& o, const Outputs& out, ca_progress_fn progress = nullptr,
+                     void* progress_user = nullptr);
+
+Json error_json(const Failure& f);
+Failure library_failure(ca_context* ctx, ca_status st, const std::string& step);
+Failure file_failure(const std::string& message);
+// format_version, tool_version, library_version, abi_version, input: the start of every report.
+Json report_header(const std::string& input);
+
 // A borrowed view of a mesh or point cloud read from a file.
 ca_surface_view surface_view(const caio::MeshData& mesh);
-
-// Evaluates a skeleton against the input surface; prints a one-line error and returns false on failure.
+// Evaluates a skeleton against the input surface (Hausdorff distances, see ca_evaluate).
 bool evaluate(ca_context* ctx, const caio::MeshData& mesh, const ca_skeleton_view& skeleton,
-              const ca_evaluate_options& options, ca_evaluation& out);
+              const ca_evaluate_options& options, ca_evaluation& out, Failure& failure);
+// The evaluation's JSON fields (hd_two_sided, ...), added to `j`.
+void add_evaluation(Json& j, const ca_evaluation& e);
+// "coverage-axis X.Y.Z (library X.Y.Z, ABI N)"
+std::string version_text();
+std::string library_version();
+// FNV-1a 64 of a file's bytes as 16 hex digits ("" if it cannot be read).
+std::string file_hash(const std::string& path);
+// Readable mesh files: the extensions a folder given to batch expands to.
+bool is_mesh_file(const std::string& path);
+// The message for arguments left over after parsing (the apps allow extras so that an unknown
+// option and a second input get a clear one-line message); "" if none.
+std::string extras_error(const CLI::App& app);
 
-// The JSON members of an evaluation (without braces), e.g. "hd_two_sided":1.23,...
-std::string evaluation_json(const ca_evaluation& e);
-
-// `coverage-axis evaluate INPUT SKELETON.ma [options]`
 int evaluate_command(int argc, char** argv);
+int batch_command(int argc, char** argv);
 
 }  // namespace cli

@@ -3,90 +3,57 @@
 // the surface and the union of the skeleton's spheres, cones and slabs, in % of the bbox diagonal.
 #include "cli.h"
 
+#include <algorithm>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 
 namespace cli {
-
-ca_surface_view surface_view(const caio::MeshData& mesh) {
-    ca_surface_view view;
-    ca_surface_view_init(&view);
-    view.positions = mesh.positions.data();
-    view.vertex_count = mesh.positions.size() / 3;
-    view.triangles = mesh.triangles.data();
-    view.triangle_count = mesh.triangles.size() / 3;
-    view.normals = mesh.normals.empty() ? nullptr : mesh.normals.data();
-    return view;
-}
-
-bool evaluate(ca_context* ctx, const caio::MeshData& mesh, const ca_skeleton_view& skeleton,
-              const ca_evaluate_options& options, ca_evaluation& out) {
-    const ca_surface_view view = surface_view(mesh);
-    out.struct_size = sizeof out;
-    const ca_status st = ca_evaluate(ctx, &view, &skeleton, &options, &out);
-    if (st != CA_OK) {
-        std::fprintf(stderr, "coverage-axis: evaluation failed: %s (%s)\n", ca_context_last_error(ctx), ca_status_string(st));
-        return false;
-    }
-    return true;
-}
-
-std::string evaluation_json(const ca_evaluation& e) {
-    char buf[512];
-    std::snprintf(buf, sizeof buf,
-                  "\"hd_surface_to_recon\":%.6g,\"hd_recon_to_surface\":%.6g,\"hd_two_sided\":%.6g,"
-                  "\"mean_surface_to_recon\":%.6g,\"mean_recon_to_surface\":%.6g,\"evaluate_surface_samples\":%llu,"
-                  "\"evaluate_envelope_samples\":%llu",
-                  e.hd_surface_to_recon, e.hd_recon_to_surface, e.hd_two_sided, e.mean_surface_to_recon,
-                  e.mean_recon_to_surface, (unsigned long long)e.surface_samples_used,
-                  (unsigned long long)e.envelope_samples_used);
-    return buf;
-}
-
-static const char* kEvaluateUsage =
-    "usage: coverage-axis evaluate INPUT SKELETON.ma [--json] [--surface-samples N] [--envelope-samples N] [--seed N]\n";
 
 int evaluate_command(int argc, char** argv) {
     std::string input, skeleton_path;
     bool json = false;
     ca_evaluate_options options;
     ca_evaluate_options_init(&options);
-    for (int i = 2; i < argc; ++i) {
-        const std::string k = argv[i];
-        auto count = [&](uint32_t& out) {
-            if (i + 1 >= argc) return false;
-            char* end = nullptr;
-            const unsigned long v = std::strtoul(argv[++i], &end, 10);
-            if (*end || end == argv[i] || v == 0 || v > 100000000ul) return false;
-            out = uint32_t(v);
-            return true;
-        };
-        if (k == "-h" || k == "--help") { std::fputs(kEvaluateUsage, stdout); return 0; }
-        else if (k == "--json") json = true;
-        else if (k == "--surface-samples") { if (!count(options.surface_samples)) { std::fprintf(stderr, "coverage-axis: --surface-samples takes a count >= 1\n"); return 2; } }
-        else if (k == "--envelope-samples") { if (!count(options.envelope_samples)) { std::fprintf(stderr, "coverage-axis: --envelope-samples takes a count >= 1\n"); return 2; } }
-        else if (k == "--seed") {
-            uint32_t s = 0;
-            if (!count(s)) { std::fprintf(stderr, "coverage-axis: --seed takes a positive integer\n"); return 2; }
-            options.seed = s;
+    CLI::App app{"Measures a medial skeleton against its input surface (Hausdorff distances in % of the bbox diagonal).",
+                 "coverage-axis evaluate"};
+    app.add_option("INPUT", input, "the input mesh or point cloud")->required();
+    app.add_option("SKELETON", skeleton_path, "the skeleton (.ma)")->required();
+    app.add_option("--surface-samples", options.surface_samples, "area-uniform samples of the input (plus its vertices)")
+        ->capture_default_str()->check(CLI::Range(1u, 100000000u));
+    app.add_option("--envelope-samples", options.envelope_samples, "samples of the reconstruction's boundary")
+        ->capture_default_str()->check(CLI::Range(1u, 100000000u));
+    app.add_option("--seed", options.seed, "random seed")->capture_default_str();
+    app.add_flag("--json", json, "print one JSON object on stdout (on failure too: {\"error\": ...})");
+    json = std::any_of(argv + 1, argv + argc, [](const char* a) { return std::strcmp(a, "--json") == 0; });
+    auto fail = [&](const Failure& f) {
+        if (json) {
+            Json j = report_header(input);
+            j["error"] = error_json(f);
+            std::printf("%s\n", j.dump().c_str());
+        } else {
+            std::fprintf(stderr, "coverage-axis: %s\n", f.message.c_str());
         }
-        else if (!k.empty() && k[0] == '-') { std::fprintf(stderr, "coverage-axis: unknown option %s (see coverage-axis evaluate --help)\n", k.c_str()); return 2; }
-        else if (input.empty()) input = k;
-        else if (skeleton_path.empty()) skeleton_path = k;
-        else { std::fprintf(stderr, "coverage-axis: too many arguments (see coverage-axis evaluate --help)\n"); return 2; }
+        return f.exit_code;
+    };
+    app.allow_extras();
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        return fail({"USAGE_ERROR", -1, std::string(e.what()) + " (see coverage-axis evaluate --help)", 2});
     }
-    if (skeleton_path.empty()) { std::fprintf(stderr, "coverage-axis: evaluate needs INPUT and SKELETON.ma (see coverage-axis evaluate --help)\n"); return 2; }
+
+    const std::string extras = extras_error(app);
+    if (!extras.empty()) return fail({"USAGE_ERROR", -1, extras + " (see coverage-axis evaluate --help)", 2});
 
     caio::MeshData mesh;
     caio::SkeletonData sk;
     std::string err;
-    if (!caio::read_mesh(input, mesh, err) || !caio::read_ma(skeleton_path, sk, err)) {
-        std::fprintf(stderr, "coverage-axis: %s\n", err.c_str());
-        return 3;
-    }
+    if (!caio::read_mesh(input, mesh, err) || !caio::read_ma(skeleton_path, sk, err)) return fail(file_failure(err));
     ca_context* ctx = nullptr;
-    if (ca_context_create(nullptr, &ctx) != CA_OK) { std::fprintf(stderr, "coverage-axis: cannot create a context\n"); return 1; }
+    const ca_status st = ca_context_create(nullptr, &ctx);
+    if (st != CA_OK) return fail(library_failure(nullptr, st, "context"));
     ca_skeleton_view view;
     ca_skeleton_view_init(&view);
     view.centers = sk.centers.data();
@@ -97,13 +64,20 @@ int evaluate_command(int argc, char** argv) {
     view.faces = sk.faces.data();
     view.face_count = sk.faces.size() / 3;
     ca_evaluation e;
-    const bool ok = evaluate(ctx, mesh, view, options, e);
+    Failure failure;
+    const bool ok = evaluate(ctx, mesh, view, options, e, failure);
     ca_context_destroy(ctx);
-    if (!ok) return 1;
+    if (!ok) return fail(failure);
     if (json) {
-        std::printf("{\"input\":\"%s\",\"skeleton\":\"%s\",\"vertices\":%zu,\"edges\":%zu,\"faces\":%zu,%s,\"time_s\":%.4f}\n",
-                    input.c_str(), skeleton_path.c_str(), view.vertex_count, view.edge_count, view.face_count,
-                    evaluation_json(e).c_str(), e.time_s);
+        Json j = report_header(input);
+        j["skeleton"] = skeleton_path;
+        j["vertices"] = view.vertex_count;
+        j["edges"] = view.edge_count;
+        j["faces"] = view.face_count;
+        add_evaluation(j, e);
+        j["diagonal"] = e.diagonal;
+        j["time_s"] = e.time_s;
+        std::printf("%s\n", j.dump().c_str());
     } else {
         std::printf("skeleton    %s: %zu vertices, %zu edges, %zu faces\n", skeleton_path.c_str(), view.vertex_count,
                     view.edge_count, view.face_count);

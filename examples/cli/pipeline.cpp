@@ -1,0 +1,305 @@
+// pipeline.cpp: one run of the tool through the library's C ABI: read the input, candidates
+// (generated or from files), selection, connection, then the outputs (.ma, .obj, .ply, glTF,
+// preview) and the JSON report. Failures come back as a Failure (never printed here), so the
+// single run and the batch command report them alike.
+#include "cli.h"
+#include "gltf_writer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <vector>
+
+namespace cli {
+
+ca_surface_view surface_view(const caio::MeshData& mesh) {
+    ca_surface_view view;
+    ca_surface_view_init(&view);
+    view.positions = mesh.positions.data();
+    view.vertex_count = mesh.positions.size() / 3;
+    view.triangles = mesh.triangles.data();
+    view.triangle_count = mesh.triangles.size() / 3;
+    view.normals = mesh.normals.empty() ? nullptr : mesh.normals.data();
+    return view;
+}
+
+Failure library_failure(ca_context* ctx, ca_status st, const std::string& step) {
+    Failure f;
+    const std::string name = ca_status_string(st);
+    f.status = name.substr(0, name.find(':'));
+    f.code = st;
+    f.message = step + " failed: " + (ctx ? ca_context_last_error(ctx) : "");
+    if (st == CA_ERROR_UNCOVERABLE) f.message += "; raise --delta, add candidates, or pass --skip-uncoverable";
+    f.exit_code = 1;
+    return f;
+}
+
+Failure file_failure(const std::string& message) {
+    Failure f;
+    f.status = "FILE_ERROR";
+    f.message = message;
+    f.exit_code = 3;
+    return f;
+}
+
+Json error_json(const Failure& f) { return Json{{"status", f.status}, {"code", f.code}, {"message", f.message}}; }
+
+bool evaluate(ca_context* ctx, const caio::MeshData& mesh, const ca_skeleton_view& skeleton,
+              const ca_evaluate_options& options, ca_evaluation& out, Failure& failure) {
+    const ca_surface_view view = surface_view(mesh);
+    out.struct_size = sizeof out;
+    const ca_status st = ca_evaluate(ctx, &view, &skeleton, &options, &out);
+    if (st != CA_OK) failure = library_failure(ctx, st, "evaluation");
+    return st == CA_OK;
+}
+
+void add_evaluation(Json& j, const ca_evaluation& e) {
+    j["hd_surface_to_recon"] = e.hd_surface_to_recon;
+    j["hd_recon_to_surface"] = e.hd_recon_to_surface;
+    j["hd_two_sided"] = e.hd_two_sided;
+    j["mean_surface_to_recon"] = e.mean_surface_to_recon;
+    j["mean_recon_to_surface"] = e.mean_recon_to_surface;
+    j["evaluate_surface_samples"] = e.surface_samples_used;
+    j["evaluate_envelope_samples"] = e.envelope_samples_used;
+}
+
+Json report_header(const std::string& input) {
+    return Json{{"format_version", kFormatVersion}, {"tool_version", CA_TOOL_VERSION}, {"library_version", library_version()},
+                {"abi_version", ca_abi_version()}, {"input", input}};
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+double round4(double t) { return std::round(t * 1e4) / 1e4; }
+
+// The library objects of one run, destroyed in reverse order.
+struct Owned {
+    ca_context* ctx = nullptr;
+    ca_candidate_set* set = nullptr;
+    ca_selection* sel = nullptr;
+    ca_skeleton* sk = nullptr;
+    ~Owned() {
+        ca_skeleton_destroy(sk);
+        ca_selection_destroy(sel);
+        ca_candidate_set_destroy(set);
+        ca_context_destroy(ctx);
+    }
+};
+
+double longest_bbox_side(const caio::MeshData& mesh) {
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (size_t i = 0; i + 2 < mesh.positions.size(); i += 3)
+        for (size_t k = 0; k < 3; ++k) {
+            lo[k] = std::min(lo[k], mesh.positions[i + k]);
+            hi[k] = std::max(hi[k], mesh.positions[i + k]);
+        }
+    const double longest = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+    return std::isfinite(longest) && longest > 0 ? longest : 0;
+}
+
+// Step 1: generated candidates, with the sample and ball files (if any) replacing their parts.
+bool make_candidates(Owned& owned, const caio::MeshData& mesh, const RunOptions& o, Failure& failure) {
+    std::string err;
+    const bool from_file = o.candidate_kind != "voronoi" && o.candidate_kind != "random";
+    std::vector<double> file_samples, file_centers, file_radii, unused;
+    if (!o.surface_samples_file.empty() && !caio::read_points(o.surface_samples_file, file_samples, unused, err))
+        return failure = file_failure(err), false;
+    if (from_file) {
+        if (!caio::read_points(o.candidate_kind, file_centers, file_radii, err)) return failure = file_failure(err), false;
+        if (file_radii.size() * 3 != file_centers.size() || file_radii.empty())
+            return failure = file_failure(o.candidate_kind + ": every candidate needs a radius (v x y z r)"), false;
+    }
+    ca_status st;
+    if (!(from_file && !o.surface_samples_file.empty())) {
+        const ca_surface_view view = surface_view(mesh);
+        if ((st = ca_candidates(owned.ctx, &view, &o.candidates, &owned.set)) != CA_OK)
+            return failure = library_failure(owned.ctx, st, "candidates"), false;
+    }
+    if (from_file || !o.surface_samples_file.empty()) {
+        // delta stays relative to the input's longest bbox side
+        const double* sp = file_samples.empty() ? ca_candidate_set_samples(owned.set) : file_samples.data();
+        const size_t sn = file_samples.empty() ? ca_candidate_set_sample_count(owned.set) : file_samples.size() / 3;
+        const double* cp = file_centers.empty() ? ca_candidate_set_centers(owned.set) : file_centers.data();
+        const double* rp = file_radii.empty() ? ca_candidate_set_radii(owned.set) : file_radii.data();
+        const size_t cn = file_radii.empty() ? ca_candidate_set_count(owned.set) : file_radii.size();
+        ca_candidate_set* replaced = nullptr;
+        st = ca_candidates_from_arrays(owned.ctx, sp, sn, 0, cp, 0, rp, 0, cn, longest_bbox_side(mesh), &replaced);
+        if (st != CA_OK) return failure = library_failure(owned.ctx, st, "candidates"), false;
+        ca_candidate_set_destroy(owned.set);
+        owned.set = replaced;
+    }
+    return true;
+}
+
+bool export_candidates(const ca_candidate_set* set, const Outputs& out, Failure& failure) {
+    std::string err;
+    const size_t ns = ca_candidate_set_sample_count(set), nc = ca_candidate_set_count(set);
+    if (!out.export_samples.empty()) {
+        const std::vector<double> xyz(ca_candidate_set_samples(set), ca_candidate_set_samples(set) + 3 * ns);
+        if (!caio::write_points(out.export_samples, xyz, {}, err)) return failure = file_failure(err), false;
+    }
+    if (!out.export_candidates.empty()) {
+        const std::vector<double> xyz(ca_candidate_set_centers(set), ca_candidate_set_centers(set) + 3 * nc);
+        const std::vector<double> r(ca_candidate_set_radii(set), ca_candidate_set_radii(set) + nc);
+        if (!caio::write_points(out.export_candidates, xyz, r, err)) return failure = file_failure(err), false;
+    }
+    return true;
+}
+
+// Step 2: the user-control index files become per-sample / per-ball masks, then the cover.
+bool make_selection(Owned& owned, const RunOptions& o, Failure& failure) {
+    ca_select_options so = o.select;
+    const size_t n_samples = ca_candidate_set_sample_count(owned.set), n_candidates = ca_candidate_set_count(owned.set);
+    std::vector<uint8_t> ignorable, forced_in, forced_out;
+    struct MaskFile {
+        const std::string& path;
+        size_t size;
+        std::vector<uint8_t>& mask;
+        const uint8_t** field;
+        const char* what;
+    };
+    for (MaskFile m : {MaskFile{o.ignore_samples_file, n_samples, ignorable, &so.ignorable_samples, "sample"},
+                       MaskFile{o.force_in_file, n_candidates, forced_in, &so.forced_in, "candidate"},
+                       MaskFile{o.force_out_file, n_candidates, forced_out, &so.forced_out, "candidate"}}) {
+        if (m.path.empty()) continue;
+        std::vector<uint32_t> idx;
+        std::string err;
+        if (!caio::read_indices(m.path, idx, err)) return failure = file_failure(err), false;
+        m.mask.assign(m.size, 0);
+        for (uint32_t i : idx) {
+            if (i >= m.size)
+                return failure = file_failure(m.path + ": " + m.what + " index " + std::to_string(i) + " out of range (" +
+                                              std::to_string(m.size) + " " + m.what + "s)"),
+                       false;
+            m.mask[i] = 1;
+        }
+        *m.field = m.mask.data();
+    }
+    const ca_status st = ca_select(owned.ctx, owned.set, &so, &owned.sel);
+    if (st != CA_OK) return failure = library_failure(owned.ctx, st, "selection"), false;
+    return true;
+}
+
+caio::SkeletonData skeleton_data(const ca_skeleton* sk) {
+    caio::SkeletonData sd;
+    const size_t nv = ca_skeleton_vertex_count(sk);
+    sd.centers.assign(ca_skeleton_centers(sk), ca_skeleton_centers(sk) + 3 * nv);
+    sd.radii.assign(ca_skeleton_radii(sk), ca_skeleton_radii(sk) + nv);
+    sd.edges.assign(ca_skeleton_edges(sk), ca_skeleton_edges(sk) + 2 * ca_skeleton_edge_count(sk));
+    sd.faces.assign(ca_skeleton_faces(sk), ca_skeleton_faces(sk) + 3 * ca_skeleton_face_count(sk));
+    return sd;
+}
+
+bool write_outputs(const caio::MeshData& mesh, const caio::SkeletonData& sd, const RunOptions& o, const Outputs& out,
+                   Failure& failure) {
+    std::string err;
+    if (!caio::write_ma(out.ma, sd, err) || (!out.obj.empty() && !caio::write_obj(out.obj, sd, err)) ||
+        (!out.ply.empty() && !caio::write_ply(out.ply, sd, err)) || (!out.gltf.empty() && !caio::write_gltf(out.gltf, sd, err)) ||
+        (!out.preview.empty() && !caio::write_preview(out.preview, mesh, sd, o.preview, err)))
+        return failure = file_failure(err), false;
+    return true;
+}
+
+Json outputs_json(const Outputs& out) {
+    Json j = {{"ma", out.ma}};
+    for (const auto& [key, path] : {std::pair<const char*, const std::string&>{"obj", out.obj}, {"ply", out.ply},
+                                    {"gltf", out.gltf}, {"preview", out.preview}})
+        if (!path.empty()) j[key] = path;
+    return j;
+}
+
+}  // namespace
+
+Outcome run_pipeline(const std::string& input, const RunOptions& o, const Outputs& out, ca_progress_fn progress,
+                     void* progress_user) {
+    Outcome r;
+    const auto t_start = Clock::now();
+    caio::MeshData mesh;
+    std::string err;
+    if (!caio::read_mesh(input, mesh, err)) return r.failure = file_failure(err), r;
+    const double t_read = since(t_start);
+
+    Owned owned;
+    ca_context_desc desc;
+    ca_context_desc_init(&desc);
+    desc.threads = o.threads;
+    desc.progress = progress;
+    desc.progress_user = progress_user;
+    ca_status st = ca_context_create(&desc, &owned.ctx);
+    if (st != CA_OK) return r.failure = library_failure(nullptr, st, "context"), r;
+
+    auto t0 = Clock::now();
+    if (!make_candidates(owned, mesh, o, r.failure) || !export_candidates(owned.set, out, r.failure)) return r;
+    const double t_candidates = since(t0);
+
+    t0 = Clock::now();
+    if (!make_selection(owned, o, r.failure)) return r;
+    const double t_select = since(t0);
+    ca_select_stats ss;
+    ss.struct_size = sizeof ss;
+    ca_selection_stats(owned.sel, &ss);
+
+    t0 = Clock::now();
+    if ((st = ca_connect(owned.ctx, owned.set, owned.sel, &o.connect, &owned.sk)) != CA_OK)
+        return r.failure = library_failure(owned.ctx, st, "connection"), r;
+    const double t_connect = since(t0);
+    ca_skeleton_stats ks;
+    ks.struct_size = sizeof ks;
+    ca_skeleton_stats_get(owned.sk, &ks);
+
+    t0 = Clock::now();
+    const caio::SkeletonData sd = skeleton_data(owned.sk);
+    if (!write_outputs(mesh, sd, o, out, r.failure)) return r;
+    const double t_write = since(t0);
+
+    ca_evaluation ev{};
+    double t_evaluate = 0;
+    if (o.evaluate) {
+        t0 = Clock::now();
+        ca_skeleton_view view;
+        ca_skeleton_view_init(&view);
+        ca_skeleton_get_view(owned.sk, &view);
+        if (!evaluate(owned.ctx, mesh, view, o.evaluation, ev, r.failure)) return r;
+        t_evaluate = since(t0);
+    }
+
+    Json& j = r.report;
+    j = report_header(input);
+    j["input_vertices"] = mesh.positions.size() / 3;
+    j["input_triangles"] = mesh.triangles.size() / 3;
+    j["surface_samples"] = ca_candidate_set_sample_count(owned.set);
+    j["candidates"] = ca_candidate_set_count(owned.set);
+    j["selected"] = sd.radii.size();
+    j["edges"] = ks.edges;
+    j["faces"] = ks.faces;
+    j["components"] = ks.components;
+    j["isolated"] = ks.isolated;
+    j["betti1"] = ks.betti1;
+    j["uncovered"] = ca_selection_uncovered_count(owned.sel);
+    j["optimal"] = ss.proven_optimal != 0;
+    j["objective"] = std::llround(ss.objective);
+    j["lower_bound"] = std::llround(ss.lower_bound);
+    j["gap"] = ss.gap;
+    j["delta"] = ss.delta_absolute;
+    j["scale"] = ss.scale_used;
+    j["reference_length"] = ca_candidate_set_reference_length(owned.set);
+    j["solver"] = o.solver;
+    j["effort"] = o.effort;
+    j["connect"] = ks.method == CA_CONNECT_MEDIAL ? "medial" : "power";
+    j["probes"] = ss.probes;
+    j["parts"] = ss.parts;
+    j["reduction"] = {{"rows_before", ss.rows_before}, {"cols_before", ss.cols_before}, {"rows_after", ss.rows_after},
+                      {"cols_after", ss.cols_after}, {"forced", ss.forced}};
+    j["output"] = out.ma;
+    j["outputs"] = outputs_json(out);
+    if (o.evaluate) add_evaluation(j, ev);
+    j["time_s"] = {{"read", round4(t_read)},         {"candidates", round4(t_candidates)}, {"select", round4(t_select)},
+                   {"connect", round4(t_connect)}, {"write", round4(t_write)},           {"evaluate", round4(t_evaluate)},
+                   {"total", round4(since(t_start))}};
+    r.ok = true;
+    return r;
+}
+
+}  // namespace cli

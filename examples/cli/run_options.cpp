@@ -1,0 +1,246 @@
+// run_options.cpp: the run options on the command line (CLI11). Every option is bound to a field
+// of the library's option structs, filled by its ca_*_options_init, so --help prints the
+// library's defaults. Also: the options as JSON for batch sidecars, and the version text.
+#include "cli.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+#ifndef CA_TOOL_VERSION
+#error "CA_TOOL_VERSION is set by CMake (the project version)"
+#endif
+
+namespace cli {
+namespace {
+
+using Names = std::vector<std::pair<std::string, int32_t>>;
+const Names kSolvers = {{"exact", CA_SOLVER_EXACT}, {"greedy", CA_SOLVER_GREEDY}, {"capp", CA_SOLVER_CAPP}};
+const Names kEfforts = {{"fast", CA_EFFORT_FAST}, {"prove", CA_EFFORT_PROVE}};
+const Names kRoutes = {{"auto", CA_CONNECT_AUTO}, {"medial", CA_CONNECT_MEDIAL}, {"power", CA_CONNECT_POWER}};
+const Names kGenerators = {{"voronoi", CA_CANDIDATES_VORONOI}, {"random", CA_CANDIDATES_RANDOM}};
+
+std::string name_of(const Names& names, int32_t value) {
+    for (const auto& n : names)
+        if (n.second == value) return n.first;
+    return std::to_string(value);
+}
+int32_t value_of(const Names& names, const std::string& name) {
+    for (const auto& n : names)
+        if (n.first == name) return n.second;
+    return -1;
+}
+std::vector<std::string> keys(const Names& names) {
+    std::vector<std::string> k;
+    for (const auto& n : names) k.push_back(n.first);
+    return k;
+}
+
+// A number >= lo (CLI11's NonNegativeNumber prints the largest double in its message).
+CLI::Validator at_least(double lo) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", lo);
+    const std::string bound = text;
+    return CLI::Validator(
+        [lo, bound](std::string& s) -> std::string {
+            char* end = nullptr;
+            const double v = std::strtod(s.c_str(), &end);
+            if (end == s.c_str() || *end || !std::isfinite(v) || v < lo) return "takes a number >= " + bound + ", not " + s;
+            return "";
+        },
+        ">= " + bound);
+}
+
+}  // namespace
+
+std::string file_hash(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return "";
+    uint64_t h = 1469598103934665603ull;
+    char buf[1 << 16];
+    while (in.read(buf, sizeof buf) || in.gcount() > 0) {
+        for (std::streamsize i = 0; i < in.gcount(); ++i) {
+            h ^= static_cast<unsigned char>(buf[i]);
+            h *= 1099511628211ull;
+        }
+        if (!in) break;
+    }
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+    return hex;
+}
+
+RunOptions::RunOptions() {
+    ca_candidate_options_init(&candidates);
+    ca_select_options_init(&select);
+    ca_connect_options_init(&connect);
+    ca_evaluate_options_init(&evaluation);
+    ca_context_desc desc;
+    ca_context_desc_init(&desc);
+    threads = desc.threads;
+    candidate_kind = name_of(kGenerators, candidates.generator);
+    solver = name_of(kSolvers, select.solver);
+    effort = name_of(kEfforts, select.effort);
+    connect_route = name_of(kRoutes, connect.method);
+    up = std::string(1, preview.up);
+    preview_size = std::to_string(preview.width) + "x" + std::to_string(preview.height);
+}
+
+void add_run_options(CLI::App& app, RunOptions& o) {
+    const std::string sampling = "Sampling and candidates", cover = "Cover (set cover of the samples)",
+                      connect = "Connection", control = "User control", look = "Preview picture";
+    app.add_option("--samples", o.candidates.cover_samples, "surface samples to cover")
+        ->capture_default_str()->check(CLI::Range(1u, 100000000u))->group(sampling);
+    app.add_option("--voronoi-samples", o.candidates.voronoi_samples, "samples whose inner Voronoi vertices are candidates")
+        ->capture_default_str()->check(CLI::Range(5u, 100000000u))->group(sampling);
+    app.add_option("--candidates", o.candidate_kind,
+                   "voronoi | random[:N] (N default " + std::to_string(o.candidates.random_candidates) +
+                       ") | FILE (v x y z r lines)")
+        ->capture_default_str()->group(sampling);
+    app.add_option("--surface-samples", o.surface_samples_file, "cover these samples (v x y z, input units) instead of sampling")
+        ->group(sampling);
+    app.add_option("--seed", o.candidates.seed, "random seed")->capture_default_str()->group(sampling);
+
+    app.add_option("--delta", o.select.delta, "dilation offset, fraction of the longest bbox side")
+        ->capture_default_str()->check(at_least(0))->group(cover);
+    app.add_option("--scale", o.select.scale, "dilate by scaling r' = r * S instead of the offset")
+        ->capture_default_str()->check(at_least(1))->group(cover);
+    app.add_option("--solver", o.solver, "set-cover solver")->capture_default_str()->check(CLI::IsMember(keys(kSolvers)))->group(cover);
+    app.add_option("--effort", o.effort,
+                   "exact solver: fast (LP bound + local search; CBC only for a one-ball gap on a small kernel) | "
+                   "prove (CBC until proven optimal)")
+        ->capture_default_str()->check(CLI::IsMember(keys(kEfforts)))->group(cover);
+    app.add_option("--time-limit", o.select.time_limit_s, "exact solver budget in seconds (<= 0: none)")
+        ->capture_default_str()->group(cover);
+    app.add_option("--target-count", o.select.target_count, "at most K balls, with the smallest delta (or scale) that achieves it (0 = off)")
+        ->capture_default_str()->check(CLI::Range(0u, 100000000u))->group(cover);
+    app.add_option("--divide", o.select.divide_threshold, "divide and conquer above N surface samples (0 = never)")
+        ->capture_default_str()->group(cover);
+    app.add_flag("--skip-uncoverable", "ignore samples no ball covers instead of failing")->group(cover);
+
+    app.add_option("--connect", o.connect_route, "auto (medial for meshes, power for point clouds) | medial | power")
+        ->capture_default_str()->check(CLI::IsMember(keys(kRoutes)))->group(connect);
+
+    app.add_option("--ignore-samples", o.ignore_samples_file, "indices (0-based) of samples that need not be covered")->group(control);
+    app.add_option("--force-in", o.force_in_file, "indices of candidate balls that must be selected")->group(control);
+    app.add_option("--force-out", o.force_out_file, "indices of candidate balls that must not be selected")->group(control);
+
+    app.add_option("--view", o.view, "AZIMUTH,ELEVATION in degrees, or auto (the largest projected bbox area)")
+        ->capture_default_str()->group(look);
+    app.add_option("--up", o.up, "the model's up axis: y or z")->capture_default_str()->check(CLI::IsMember({"y", "z"}))->group(look);
+    app.add_option("--preview-size", o.preview_size, "WIDTHxHEIGHT in pixels")->capture_default_str()->group(look);
+
+    app.add_flag("--evaluate", o.evaluate, "measure the skeleton: Hausdorff distances in % of the bbox diagonal");
+    app.add_option("--threads", o.threads, "worker threads (0 = all cores)")->capture_default_str()->check(at_least(0));
+}
+
+bool finish_run_options(const CLI::App& app, RunOptions& o, std::string& error) {
+    if (app.count("--scale")) o.select.dilation = CA_DILATE_SCALE;
+    o.select.skip_uncoverable = app.count("--skip-uncoverable") ? 1 : 0;
+    o.select.solver = value_of(kSolvers, o.solver);
+    o.select.effort = value_of(kEfforts, o.effort);
+    o.connect.method = value_of(kRoutes, o.connect_route);
+    if (o.candidate_kind.rfind("random", 0) == 0 && o.candidate_kind.size() > 6) {
+        const std::string n = o.candidate_kind.substr(7);
+        char* end = nullptr;
+        const unsigned long v = o.candidate_kind[6] == ':' && !n.empty() ? std::strtoul(n.c_str(), &end, 10) : 0;
+        if (!end || *end || v < 1 || v > 100000000ul) {
+            error = "--candidates random:N takes a count >= 1";
+            return false;
+        }
+        o.candidates.random_candidates = uint32_t(v);
+        o.candidate_kind = "random";
+    }
+    if (o.candidate_kind == "random") o.candidates.generator = CA_CANDIDATES_RANDOM;
+    o.preview.up = o.up[0];
+    if (o.view != "auto") {
+        char tail = 0;
+        if (std::sscanf(o.view.c_str(), "%lf,%lf%c", &o.preview.azimuth_deg, &o.preview.elevation_deg, &tail) != 2) {
+            error = "--view takes AZIMUTH,ELEVATION in degrees or auto";
+            return false;
+        }
+        o.preview.automatic_view = false;
+    }
+    char tail = 0;
+    if (std::sscanf(o.preview_size.c_str(), "%dx%d%c", &o.preview.width, &o.preview.height, &tail) != 2 ||
+        o.preview.width < 16 || o.preview.height < 16 || o.preview.width > 8192 || o.preview.height > 8192) {
+        error = "--preview-size takes WIDTHxHEIGHT, 16..8192 pixels each";
+        return false;
+    }
+    return true;
+}
+
+Json options_json(const RunOptions& o) {
+    auto file = [](const std::string& path) -> Json {
+        if (path.empty()) return nullptr;
+        return Json{{"path", path}, {"hash", file_hash(path)}};
+    };
+    const ca_select_options& s = o.select;
+    return Json{{"candidates", o.candidate_kind == "voronoi" || o.candidate_kind == "random" ? Json(o.candidate_kind)
+                                                                                            : file(o.candidate_kind)},
+                {"samples", o.candidates.cover_samples},
+                {"voronoi_samples", o.candidates.voronoi_samples},
+                {"random_candidates", o.candidates.random_candidates},
+                {"connect_samples", o.candidates.connect_samples},
+                {"seed", o.candidates.seed},
+                {"surface_samples", file(o.surface_samples_file)},
+                {"dilation", s.dilation == CA_DILATE_SCALE ? "scale" : "offset"},
+                {"delta", s.delta},
+                {"scale", s.scale},
+                {"solver", o.solver},
+                {"effort", o.effort},
+                {"time_limit_s", s.time_limit_s},
+                {"skip_uncoverable", s.skip_uncoverable != 0},
+                {"target_count", s.target_count},
+                {"target_tolerance", s.target_tolerance},
+                {"divide", s.divide_threshold},
+                {"ignore_samples", file(o.ignore_samples_file)},
+                {"force_in", file(o.force_in_file)},
+                {"force_out", file(o.force_out_file)},
+                {"connect", o.connect_route},
+                {"remove_outside", o.connect.remove_outside},
+                {"fill_holes", o.connect.fill_holes},
+                {"reconnect", o.connect.reconnect},
+                {"evaluate", o.evaluate},
+                {"evaluate_samples", {o.evaluation.surface_samples, o.evaluation.envelope_samples, o.evaluation.seed}},
+                {"view", o.view},
+                {"up", o.up},
+                {"preview_size", o.preview_size}};
+}
+
+std::string library_version() {
+    const uint32_t v = ca_version();
+    return std::to_string(v / 10000) + "." + std::to_string(v / 100 % 100) + "." + std::to_string(v % 100);
+}
+
+std::string version_text() {
+    return std::string("coverage-axis ") + CA_TOOL_VERSION + " (library " + library_version() + ", ABI " +
+           std::to_string(ca_abi_version()) + ")";
+}
+
+bool is_mesh_file(const std::string& path) {
+    const size_t dot = path.find_last_of('.');
+    if (dot == std::string::npos) return false;
+    std::string ext = path.substr(dot);
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    for (const char* e : {".obj", ".off", ".ply", ".xyz"})
+        if (ext == e) return true;
+    return false;
+}
+
+std::string extras_error(const CLI::App& app) {
+    const std::vector<std::string> extras = app.remaining();
+    for (const std::string& x : extras)
+        if (x.size() > 1 && x[0] == '-') return "unknown option " + x;
+    if (!extras.empty()) return "more than one input file (" + extras[0] + "); coverage-axis batch runs many";
+    return "";
+}
+
+}  // namespace cli

@@ -1,0 +1,232 @@
+// gltf_writer.cpp: the skeleton as glTF 2.0 (see gltf_writer.h). The JSON is built with
+// nlohmann-json; the binary buffer holds, in order, the unit sphere (positions, normals,
+// indices), the skeleton's vertex positions and radii, its edge and its face indices.
+#include "gltf_writer.h"
+
+#include "output_file.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <exception>
+#include <limits>
+#include <vector>
+
+namespace caio {
+namespace {
+
+using nlohmann::json;
+
+constexpr int kFloat = 5126, kUnsignedShort = 5123, kUnsignedInt = 5125;
+constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963;
+constexpr int kModeLines = 1, kModeTriangles = 4;
+
+// The binary buffer and the bufferViews/accessors that describe it.
+struct Builder {
+    std::string bin;
+    json views = json::array(), accessors = json::array();
+
+    // Appends raw bytes as a new bufferView (4-byte aligned) and returns its index.
+    int view(const void* data, size_t bytes, int target) {
+        while (bin.size() % 4) bin.push_back('\0');
+        json v = {{"buffer", 0}, {"byteOffset", bin.size()}, {"byteLength", bytes}};
+        if (target) v["target"] = target;
+        bin.append(static_cast<const char*>(data), bytes);
+        views.push_back(v);
+        return int(views.size()) - 1;
+    }
+    // float32 VEC3 / SCALAR data with min/max per component.
+    int floats(const std::vector<float>& data, int components) {
+        const size_t count = data.size() / size_t(components);
+        json lo = json::array(), hi = json::array();
+        for (int c = 0; c < components; ++c) {
+            float a = std::numeric_limits<float>::infinity(), b = -a;
+            for (size_t i = 0; i < count; ++i) {
+                a = std::min(a, data[i * components + c]);
+                b = std::max(b, data[i * components + c]);
+            }
+            lo.push_back(a);
+            hi.push_back(b);
+        }
+        const int v = view(data.data(), data.size() * sizeof(float), kArrayBuffer);
+        accessors.push_back({{"bufferView", v}, {"componentType", kFloat}, {"count", count},
+                             {"type", components == 3 ? "VEC3" : "SCALAR"}, {"min", lo}, {"max", hi}});
+        return int(accessors.size()) - 1;
+    }
+    template <class Index>
+    int indices(const std::vector<Index>& data, int component_type) {
+        const int v = view(data.data(), data.size() * sizeof(Index), kElementArrayBuffer);
+        const Index hi = data.empty() ? 0 : *std::max_element(data.begin(), data.end());
+        const Index lo = data.empty() ? 0 : *std::min_element(data.begin(), data.end());
+        accessors.push_back({{"bufferView", v}, {"componentType", component_type}, {"count", data.size()},
+                             {"type", "SCALAR"}, {"min", {lo}}, {"max", {hi}}});
+        return int(accessors.size()) - 1;
+    }
+};
+
+// A UV sphere of radius 1 around the origin (its normals equal its positions).
+void unit_sphere(std::vector<float>& positions, std::vector<uint16_t>& triangles) {
+    const int segments = 24, rings = 12;
+    const double pi = 3.14159265358979323846;
+    for (int r = 0; r <= rings; ++r) {
+        const double theta = pi * r / rings;
+        for (int s = 0; s <= segments; ++s) {
+            const double phi = 2 * pi * s / segments;
+            positions.push_back(float(std::sin(theta) * std::cos(phi)));
+            positions.push_back(float(std::cos(theta)));
+            positions.push_back(float(std::sin(theta) * std::sin(phi)));
+        }
+    }
+    for (int r = 0; r < rings; ++r)
+        for (int s = 0; s < segments; ++s) {
+            const uint16_t a = uint16_t(r * (segments + 1) + s), b = uint16_t(a + segments + 1);
+            if (r > 0) triangles.insert(triangles.end(), {a, uint16_t(a + 1), b});
+            if (r + 1 < rings) triangles.insert(triangles.end(), {uint16_t(a + 1), uint16_t(b + 1), b});
+        }
+}
+
+json material(const char* name, std::initializer_list<double> rgba, bool blend) {
+    json m = {{"name", name}, {"doubleSided", true},
+              {"pbrMetallicRoughness", {{"baseColorFactor", rgba}, {"metallicFactor", 0.0}, {"roughnessFactor", 0.8}}}};
+    if (blend) m["alphaMode"] = "BLEND";
+    return m;
+}
+
+std::string base64(const std::string& bytes) {
+    static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    out.reserve((bytes.size() + 2) / 3 * 4);
+    for (size_t i = 0; i < bytes.size(); i += 3) {
+        const uint32_t b0 = uint8_t(bytes[i]), b1 = i + 1 < bytes.size() ? uint8_t(bytes[i + 1]) : 0,
+                       b2 = i + 2 < bytes.size() ? uint8_t(bytes[i + 2]) : 0;
+        const uint32_t v = (b0 << 16) | (b1 << 8) | b2;
+        out += table[(v >> 18) & 63];
+        out += table[(v >> 12) & 63];
+        out += i + 1 < bytes.size() ? table[(v >> 6) & 63] : '=';
+        out += i + 2 < bytes.size() ? table[v & 63] : '=';
+    }
+    return out;
+}
+
+void append_u32(std::string& s, uint32_t v) {
+    char b[4];
+    std::memcpy(b, &v, 4);  // glTF is little-endian, as is every platform this tool builds on
+    s.append(b, 4);
+}
+
+// The glTF document (without its buffer's uri) and the binary buffer.
+json build(const SkeletonData& s, std::string& bin) {
+    Builder b;
+    std::vector<float> sphere;
+    std::vector<uint16_t> sphere_triangles;
+    unit_sphere(sphere, sphere_triangles);
+    const int sphere_pos = b.floats(sphere, 3);
+    const int sphere_nrm = b.floats(sphere, 3);
+    const int sphere_idx = b.indices(sphere_triangles, kUnsignedShort);
+
+    json meshes = json::array();
+    meshes.push_back({{"name", "ball"},
+                      {"primitives", {{{"attributes", {{"POSITION", sphere_pos}, {"NORMAL", sphere_nrm}}},
+                                       {"indices", sphere_idx}, {"mode", kModeTriangles}, {"material", 0}}}}});
+    json skeleton = {{"name", "skeleton"}};
+    json balls = json::array();
+    const size_t nv = s.radii.size();
+    if (nv > 0) {
+        const std::vector<float> pos(s.centers.begin(), s.centers.end());
+        const std::vector<float> rad(s.radii.begin(), s.radii.end());
+        const json attributes = {{"POSITION", b.floats(pos, 3)}, {"_RADIUS", b.floats(rad, 1)}};
+        json primitives = json::array();
+        if (!s.edges.empty())
+            primitives.push_back({{"attributes", attributes}, {"indices", b.indices(s.edges, kUnsignedInt)},
+                                  {"mode", kModeLines}, {"material", 1}});
+        if (!s.faces.empty())
+            primitives.push_back({{"attributes", attributes}, {"indices", b.indices(s.faces, kUnsignedInt)},
+                                  {"mode", kModeTriangles}, {"material", 2}});
+        if (!primitives.empty()) {
+            meshes.push_back({{"name", "skeleton"}, {"primitives", primitives}});
+            skeleton["mesh"] = 1;
+        }
+        for (size_t i = 0; i < nv; ++i) {
+            const double r = s.radii[i];
+            balls.push_back({{"name", "ball_" + std::to_string(i)}, {"mesh", 0},
+                             {"translation", {s.centers[3 * i], s.centers[3 * i + 1], s.centers[3 * i + 2]}},
+                             {"scale", {r, r, r}}});
+        }
+    }
+    json nodes = json::array({skeleton});
+    json children = json::array();
+    for (auto& n : balls) {
+        children.push_back(nodes.size());
+        nodes.push_back(std::move(n));
+    }
+    if (!children.empty()) nodes[0]["children"] = children;
+
+    bin = std::move(b.bin);
+    while (bin.size() % 4) bin.push_back('\0');
+    return {{"asset", {{"version", "2.0"}, {"generator", "coverage-axis"}}},
+            {"scene", 0},
+            {"scenes", {{{"name", "coverage axis skeleton"}, {"nodes", {0}}}}},
+            {"nodes", nodes},
+            {"meshes", meshes},
+            {"materials", {material("ball", {0.25, 0.45, 0.9, 0.3}, true), material("edge", {0.1, 0.1, 0.1, 1.0}, false),
+                           material("face", {0.9, 0.35, 0.2, 0.6}, true)}},
+            {"accessors", b.accessors},
+            {"bufferViews", b.views},
+            {"buffers", {{{"byteLength", bin.size()}}}}};
+}
+
+bool ends_with(const std::string& s, const char* suffix) {
+    const size_t n = std::strlen(suffix);
+    if (s.size() < n) return false;
+    for (size_t i = 0; i < n; ++i)
+        if (std::tolower(static_cast<unsigned char>(s[s.size() - n + i])) != suffix[i]) return false;
+    return true;
+}
+
+}  // namespace
+
+bool write_gltf(const std::string& path, const SkeletonData& s, std::string& error) {
+    try {
+        const size_t nv = s.radii.size();
+        if (s.centers.size() != 3 * nv || s.edges.size() % 2 || s.faces.size() % 3) {
+            error = path + ": inconsistent skeleton arrays";
+            return false;
+        }
+        for (uint32_t i : s.edges)
+            if (i >= nv) { error = path + ": edge index out of range"; return false; }
+        for (uint32_t i : s.faces)
+            if (i >= nv) { error = path + ": face index out of range"; return false; }
+        const bool glb = ends_with(path, ".glb");
+        if (!glb && !ends_with(path, ".gltf")) {
+            error = path + ": a glTF file ends in .glb or .gltf";
+            return false;
+        }
+        std::string bin;
+        json doc = build(s, bin);
+        if (!glb) {
+            doc["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64(bin);
+            return write_bytes(path, doc.dump(1) + "\n", error);
+        }
+        std::string text = doc.dump();
+        while (text.size() % 4) text.push_back(' ');
+        std::string out;
+        append_u32(out, 0x46546C67u);  // "glTF"
+        append_u32(out, 2);
+        append_u32(out, uint32_t(12 + 8 + text.size() + 8 + bin.size()));
+        append_u32(out, uint32_t(text.size()));
+        append_u32(out, 0x4E4F534Au);  // "JSON"
+        out += text;
+        append_u32(out, uint32_t(bin.size()));
+        append_u32(out, 0x004E4942u);  // "BIN\0"
+        out += bin;
+        return write_bytes(path, out, error);
+    } catch (const std::exception& e) {
+        error = path + ": " + e.what();
+        return false;
+    }
+}
+
+}  // namespace caio
