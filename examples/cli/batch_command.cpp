@@ -138,8 +138,8 @@ int batch_command(int argc, char** argv) {
     app.add_option("-O,--output-dir", outdir, "the folder for the outputs (created if missing)")->required();
     app.add_option("-j,--jobs", jobs, "inputs run at once; each gets max(1, threads / jobs) worker threads")
         ->capture_default_str()->check(CLI::Range(1u, 1024u));
-    app.add_option("--write", extra, "also write per input: obj, ply, glb or gltf, png or svg (comma-separated)")
-        ->delimiter(',')->check(CLI::IsMember({"obj", "ply", "glb", "gltf", "png", "svg"}));
+    std::string write_list;
+    app.add_option("--write", write_list, "also write per input: obj, ply, glb or gltf, png or svg (comma-separated)");
     app.add_flag("--force", force, "redo inputs whose outputs are up to date");
     add_run_options(app, o);
     app.footer("Exit codes: 0 every input succeeded (or was up to date), 1 some input failed (its JSON line has "
@@ -154,6 +154,16 @@ int batch_command(int argc, char** argv) {
         std::fprintf(stderr, "coverage-axis batch: %s (see coverage-axis batch --help)\n", e.what());
         return 2;
     }
+    for (size_t at = 0; at < write_list.size();) {
+        const size_t comma = std::min(write_list.find(',', at), write_list.size());
+        extra.push_back(write_list.substr(at, comma - at));
+        at = comma + 1;
+    }
+    for (const std::string& x : extra)
+        if (x != "obj" && x != "ply" && x != "glb" && x != "gltf" && x != "png" && x != "svg") {
+            std::fprintf(stderr, "coverage-axis batch: --write takes obj, ply, glb, gltf, png, svg, not '%s'\n", x.c_str());
+            return 2;
+        }
     auto has = [&](const char* k) { return std::find(extra.begin(), extra.end(), k) != extra.end(); };
     err = extras_error(app);
     if (!err.empty() || !finish_run_options(app, o, err) || (has("glb") && has("gltf")) || (has("png") && has("svg"))) {
