@@ -3,6 +3,8 @@ BUILD ?= build
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 DEMO_MODEL ?= tests/data/fox.obj
+# the fox stands on the xy plane: z is its up axis
+DEMO_PREVIEW ?= --up z
 DATA ?= ../shared/data
 
 .PHONY: all deps configure build demo test bench install clean fuzz blender-addon test-blender
@@ -20,7 +22,8 @@ build: configure
 
 demo: build
 	@mkdir -p demo-output
-	./$(BUILD)/coverage-axis $(DEMO_MODEL) -o demo-output/skeleton.ma --obj demo-output/skeleton.obj --ply demo-output/skeleton.ply
+	./$(BUILD)/coverage-axis $(DEMO_MODEL) -o demo-output/skeleton.ma --obj demo-output/skeleton.obj --ply demo-output/skeleton.ply \
+	  --gltf demo-output/skeleton.glb --preview demo-output/skeleton.png $(DEMO_PREVIEW)
 
 test: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)

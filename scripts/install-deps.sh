@@ -4,12 +4,14 @@
 # usage: install-deps.sh [EXTRA_PACKAGE...]
 set -euo pipefail
 # The library needs the first line. The binding tests add: python3 with numpy, setuptools and pip
-# (Python binding, its pip install, the layout checks), cargo (Rust binding; Debian's cargo brings
-# rustc), mono-mcs, mono-runtime and libmono-system-core4.0-cil (C# binding: compiler, runtime, LINQ).
+# (Python binding, its pip install, the layout checks, the CLI's tests), cargo (Rust binding;
+# Debian's cargo brings rustc), mono-mcs, mono-runtime and libmono-system-core4.0-cil (C# binding:
+# compiler, runtime, LINQ).
 packages=(build-essential cmake pkg-config libeigen3-dev libnanoflann-dev coinor-libcbc-dev libqhull-dev doctest-dev
           python3 python3-numpy python3-setuptools python3-pip cargo mono-mcs mono-runtime libmono-system-core4.0-cil)
-# the file readers of the tool (examples/io): glTF (tinygltf with its JSON library) and assimp
-packages+=(libtinygltf-dev nlohmann-json3-dev libassimp-dev)
+# the command-line tool (examples/): libcli11-dev (arguments), nlohmann-json3-dev (JSON, glTF),
+# libstb-dev (PNG), libtinygltf-dev (glTF reader) and libassimp-dev (FBX, DAE, 3DS, ...)
+packages+=(libcli11-dev nlohmann-json3-dev libstb-dev libtinygltf-dev libassimp-dev)
 # extra packages a make target needs (make test-blender: blender; make fuzz: clang libclang-rt-14-dev)
 packages+=("$@")
 missing=()
