@@ -145,15 +145,9 @@ int batch_command(int argc, char** argv) {
     app.footer("Exit codes: 0 every input succeeded (or was up to date), 1 some input failed (its JSON line has "
                "\"error\"), 2 bad command line, 3 OUTDIR cannot be created. See docs/cli.md.");
     std::string err;
-    app.allow_extras();
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        std::fprintf(stderr, "coverage-axis batch: %s (see coverage-axis batch --help)\n", e.what());
-        return 2;
-    }
+    const int parsed = parse_command_line(app, argc, argv, err);
+    if (parsed == 2) std::fprintf(stderr, "coverage-axis batch: %s\n", err.c_str());
+    if (parsed >= 0) return parsed;
     for (size_t at = 0; at < write_list.size();) {
         const size_t comma = std::min(write_list.find(',', at), write_list.size());
         extra.push_back(write_list.substr(at, comma - at));
@@ -165,8 +159,7 @@ int batch_command(int argc, char** argv) {
             return 2;
         }
     auto has = [&](const char* k) { return std::find(extra.begin(), extra.end(), k) != extra.end(); };
-    err = extras_error(app);
-    if (!err.empty() || !finish_run_options(app, o, err) || (has("glb") && has("gltf")) || (has("png") && has("svg"))) {
+    if (!finish_run_options(app, o, err) || (has("glb") && has("gltf")) || (has("png") && has("svg"))) {
         if (err.empty()) err = "--write takes one of glb/gltf and one of png/svg";
         std::fprintf(stderr, "coverage-axis batch: %s (see coverage-axis batch --help)\n", err.c_str());
         return 2;

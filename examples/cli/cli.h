@@ -85,9 +85,9 @@ std::string library_version();
 std::string file_hash(const std::string& path);
 // Readable mesh files: the extensions a folder given to batch expands to.
 bool is_mesh_file(const std::string& path);
-// The message for arguments left over after parsing (the apps allow extras so that an unknown
-// option and a second input get a clear one-line message); "" if none.
-std::string extras_error(const CLI::App& app);
+// Parses a command line: -1 to go on; the exit code after --help or --version (printed); or 2
+// for a bad command line, with a one-line `error` (unknown option, a second input, a bad value).
+int parse_command_line(CLI::App& app, int argc, char** argv, std::string& error);
 
 int evaluate_command(int argc, char** argv);
 int batch_command(int argc, char** argv);

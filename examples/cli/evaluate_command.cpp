@@ -35,17 +35,10 @@ int evaluate_command(int argc, char** argv) {
         }
         return f.exit_code;
     };
-    app.allow_extras();
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        return fail({"USAGE_ERROR", -1, std::string(e.what()) + " (see coverage-axis evaluate --help)", 2});
-    }
-
-    const std::string extras = extras_error(app);
-    if (!extras.empty()) return fail({"USAGE_ERROR", -1, extras + " (see coverage-axis evaluate --help)", 2});
+    std::string usage;
+    const int parsed = parse_command_line(app, argc, argv, usage);
+    if (parsed == 2) return fail({"USAGE_ERROR", -1, usage, 2});
+    if (parsed >= 0) return parsed;
 
     caio::MeshData mesh;
     caio::SkeletonData sk;

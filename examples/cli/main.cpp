@@ -119,21 +119,11 @@ int single_run(int argc, char** argv) {
     app.footer("Exit codes: 0 success, 1 the library refused or failed, 2 bad command line, 3 a file could not be "
                "read or written. Fields and formats: docs/cli.md.");
     json = std::any_of(argv + 1, argv + argc, [](const char* a) { return std::strcmp(a, "--json") == 0; });
-    app.allow_extras();
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForAllHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForVersion& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        cli::Failure f{"USAGE_ERROR", -1, std::string(e.what()) + " (see coverage-axis --help)", 2};
-        return report_failure(f, json, input);
-    }
-    std::string err = cli::extras_error(app);
-    if (!err.empty() || !cli::finish_run_options(app, o, err)) return report_failure({"USAGE_ERROR", -1, err + " (see coverage-axis --help)", 2}, json, input);
+    std::string err;
+    const int parsed = cli::parse_command_line(app, argc, argv, err);
+    if (parsed == 2) return report_failure({"USAGE_ERROR", -1, err, 2}, json, input);
+    if (parsed >= 0) return parsed;
+    if (!cli::finish_run_options(app, o, err)) return report_failure({"USAGE_ERROR", -1, err + " (see coverage-axis --help)", 2}, json, input);
     if (out.ma.empty()) out.ma = default_ma_path(input);
 
     ProgressBar bar;

@@ -235,12 +235,38 @@ bool is_mesh_file(const std::string& path) {
     return false;
 }
 
+namespace {
+
+// Arguments left over after parsing: an unknown option or a second input.
 std::string extras_error(const CLI::App& app) {
     const std::vector<std::string> extras = app.remaining();
     for (const std::string& x : extras)
         if (x.size() > 1 && x[0] == '-') return "unknown option " + x;
-    if (!extras.empty()) return "more than one input file (" + extras[0] + "); coverage-axis batch runs many";
+    if (!extras.empty() && app.get_name() == "coverage-axis")
+        return "more than one input file (" + extras[0] + "); coverage-axis batch runs many";
+    if (!extras.empty()) return "unexpected argument " + extras[0];
     return "";
+}
+
+}  // namespace
+
+int parse_command_line(CLI::App& app, int argc, char** argv, std::string& error) {
+    app.allow_extras();  // so that leftovers get a clear one-line message instead of CLI11's
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        error = e.what();
+    }
+    if (error.empty()) error = extras_error(app);
+    if (error.empty()) return -1;
+    error += " (see " + app.get_name() + " --help)";
+    return 2;
 }
 
 }  // namespace cli

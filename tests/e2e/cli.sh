@@ -4,16 +4,7 @@
 # bad input, and no crash on any bundled model (poor ones included).
 # usage: cli.sh PATH/TO/coverage-axis PATH/TO/tests/data
 set -u
-tool=$1
-data=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-pass=0
-fail=0
-check() {  # check "description" command...
-  local what=$1; shift
-  if "$@"; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAILED: $what"; fi
-}
+source "$(dirname "$0")/check.bash" "$@"
 
 # 1. a normal run: files written, JSON consistent with the .ma header
 "$tool" "$data/fox.obj" -o "$tmp/fox.ma" --obj "$tmp/fox.obj" --ply "$tmp/fox.ply" --json > "$tmp/fox.json" 2> "$tmp/err"
@@ -153,5 +144,4 @@ for m in "$data"/*.obj; do
   if [ "$code" -eq 1 ]; then check "$(basename "$m"): one-line message" test "$(wc -l < "$tmp/err")" -eq 1; fi
 done
 
-echo "cli: $pass passed, $fail failed"
-test "$fail" -eq 0
+finish cli

@@ -5,16 +5,7 @@
 # or an option changes, --force), the glTF writer read back, and the preview picture's size.
 # usage: pipeline_manners.sh PATH/TO/coverage-axis PATH/TO/tests/data
 set -u
-tool=$1
-data=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-pass=0
-fail=0
-check() {  # check "description" command...
-  local what=$1; shift
-  if "$@"; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "FAILED: $what"; fi
-}
+source "$(dirname "$0")/check.bash" "$@"
 # py 'python expression over the JSON object j' FILE: exit status of the boolean
 py() { python3 -c "import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if ($1) else 1)" "$2"; }
 # pylines 'expression over the list of line objects L' FILE
@@ -164,5 +155,4 @@ check "SVG: one circle per ball" test "$(grep -c 'url(#ball)' "$tmp/p.svg")" -eq
 "$tool" "$data/fox.obj" --preview "$tmp/p.png" --preview-size 10x10 --quiet 2> "$tmp/err"
 check "--preview-size below 16: exit 2" test $? -eq 2
 
-echo "pipeline_manners: $pass passed, $fail failed"
-test "$fail" -eq 0
+finish pipeline_manners
