@@ -99,7 +99,8 @@ class CommonTest(unittest.TestCase):
                 self.assertIn(p.default, (inspect.Parameter.empty, None), (fn.__name__, p.name))
         # the library's defaults, as the CLI's usage text (made from the same functions) prints them
         usage = subprocess.run([os.environ["CA_CLI"], "--help"], capture_output=True, text=True).stdout
-        printed = {flag: re.search(r"%s \S+ .*\(default (\S+?)[ )]" % flag, usage).group(1)
+        # (CLI11's format: "--delta FLOAT:>= 0=0.02", the default after the last "=" of the option's column)
+        printed = {flag: re.search(r"(?m)^\s*%s \S[^\n]*?=(\S+)\s" % flag, usage).group(1)
                    for flag in ("--delta", "--samples", "--voronoi-samples", "--seed", "--time-limit")}
         d = dict(ca.defaults("candidates"), **ca.defaults("select"))
         self.assertEqual(printed, {"--delta": repr(d["delta"]), "--samples": str(d["cover_samples"]),
