@@ -24,6 +24,7 @@ struct RunOptions {
     ca_select_options select;
     ca_connect_options connect;
     ca_evaluate_options evaluation;
+    std::string format;                      // input format name; "" = by extension
     std::string candidate_kind = "voronoi";  // voronoi | random | a ball file
     std::string solver, effort, connect_route;
     std::string surface_samples_file, ignore_samples_file, force_in_file, force_out_file;

@@ -104,7 +104,7 @@ int single_run(int argc, char** argv) {
                  "  coverage-axis evaluate INPUT SKELETON.ma [--json]         (see coverage-axis evaluate --help)",
                  "coverage-axis"};
     app.set_version_flag("--version", cli::version_text());
-    app.add_option("INPUT", input, ".obj .off .ply (mesh) or .xyz / .obj with vn (oriented point cloud)")->required();
+    app.add_option("INPUT", input, "a mesh or oriented point cloud file (- = standard input, with --format)")->required();
     const std::string files = "Output files";
     app.add_option("-o,--output", out.ma, "the skeleton as .ma (default: INPUT's stem + .ma)")->group(files);
     app.add_option("--obj", out.obj, "also write .obj (v, l, f; no radii)")->group(files);
@@ -124,6 +124,8 @@ int single_run(int argc, char** argv) {
     if (parsed == 2) return report_failure({"USAGE_ERROR", -1, err, 2}, json, input);
     if (parsed >= 0) return parsed;
     if (!cli::finish_run_options(app, o, err)) return report_failure({"USAGE_ERROR", -1, err + " (see coverage-axis --help)", 2}, json, input);
+    if (out.ma.empty() && input == "-")
+        return report_failure({"USAGE_ERROR", -1, "reading standard input needs -o OUT.ma", 2}, json, input);
     if (out.ma.empty()) out.ma = default_ma_path(input);
 
     ProgressBar bar;

@@ -96,6 +96,9 @@ RunOptions::RunOptions() {
 void add_run_options(CLI::App& app, RunOptions& o) {
     const std::string sampling = "Sampling and candidates", cover = "Cover (set cover of the samples)",
                       connect = "Connection", control = "User control", look = "Preview picture";
+    app.add_option("--format", o.format, "input format instead of the extension (needed for - = standard input): " +
+                                            caio::readable_formats())
+        ->group(sampling);
     app.add_option("--samples", o.candidates.cover_samples, "surface samples to cover")
         ->capture_default_str()->check(CLI::Range(1u, 100000000u))->group(sampling);
     app.add_option("--voronoi-samples", o.candidates.voronoi_samples, "samples whose inner Voronoi vertices are candidates")
@@ -183,7 +186,8 @@ Json options_json(const RunOptions& o) {
         return Json{{"path", path}, {"hash", file_hash(path)}};
     };
     const ca_select_options& s = o.select;
-    return Json{{"candidates", o.candidate_kind == "voronoi" || o.candidate_kind == "random" ? Json(o.candidate_kind)
+    return Json{{"format", o.format},
+                {"candidates", o.candidate_kind == "voronoi" || o.candidate_kind == "random" ? Json(o.candidate_kind)
                                                                                             : file(o.candidate_kind)},
                 {"samples", o.candidates.cover_samples},
                 {"voronoi_samples", o.candidates.voronoi_samples},
@@ -228,11 +232,10 @@ std::string version_text() {
 bool is_mesh_file(const std::string& path) {
     const size_t dot = path.find_last_of('.');
     if (dot == std::string::npos) return false;
-    std::string ext = path.substr(dot);
+    // .ma is this tool's own output (assimp would take it for something else): never an input
+    std::string ext = path.substr(dot + 1);
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    for (const char* e : {".obj", ".off", ".ply", ".xyz"})
-        if (ext == e) return true;
-    return false;
+    return ext != "ma" && caio::is_readable_format(ext);
 }
 
 namespace {

@@ -44,6 +44,8 @@ bool read_mesh(const std::string& path, MeshData& out, std::string& error);
 bool read_mesh_buffer(const std::string& bytes, const std::string& format, MeshData& out, std::string& error);
 // One line naming every readable format, for --help: "obj off ply ...; through assimp: 3ds ...".
 std::string readable_formats();
+// Whether read_mesh reads this format name or extension (with or without the dot, any case).
+bool is_readable_format(const std::string& format);
 
 // Point/ball files: lines "v x y z [r]" (obj style) or plain "x y z [r]"; '#' comments and
 // other obj records (vn, f, ...) are skipped. `radii` is filled only if every point has one

@@ -89,6 +89,11 @@ bool read_mesh_buffer(const std::string& buf, const std::string& format_name, Me
     return ok;
 }
 
+bool is_readable_format(const std::string& format_name) {
+    const std::string format = normalise_format(format_name);
+    return !format.empty() && (own_format(format) || assimp_can_read(format));
+}
+
 std::string readable_formats() {
     std::string s;
     for (const char* f : kOwnFormats) s += (s.empty() ? "" : " ") + std::string(f);

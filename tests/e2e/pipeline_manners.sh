@@ -19,6 +19,18 @@ tool_version=$(cut -d' ' -f2 "$tmp/v")
 "$tool" "$data/torus.obj" -o "$tmp/t.ma" --json > "$tmp/t.json"
 check "JSON has format_version 1 and the tool version" py "j['format_version'] == 1 and j['tool_version'] == '$tool_version'" "$tmp/t.json"
 
+# 1b. standard input with --format, a glTF input, and folder expansion by readable format
+"$tool" "$data/fox.obj" -o "$tmp/fox_file.ma" --quiet
+"$tool" - --format obj -o "$tmp/fox_stdin.ma" --quiet < "$data/fox.obj"
+check "- with --format obj reads standard input: the same .ma as the file" cmp -s "$tmp/fox_file.ma" "$tmp/fox_stdin.ma"
+"$tool" - --json < "$data/fox.obj" > "$tmp/e0.json"
+check "- without -o is a usage error (exit 2, JSON error)" test $? -eq 2
+check "the stdin usage error names -o" py "'-o' in j['error']['message']" "$tmp/e0.json"
+"$tool" "$data/formats/fox.glb" -o "$tmp/fox_glb.ma" --json > "$tmp/glb.json"
+check "fox.glb (float32 positions) gives fox.obj's 63 balls" py "j['selected'] == 63" "$tmp/glb.json"
+"$tool" --help > "$tmp/help"
+check "--help lists the glTF and assimp formats" grep -q "glb; through assimp:.*fbx" "$tmp/help"
+
 # 2. --json failures: one JSON error object on stdout, non-zero exit
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n' > "$tmp/flat.obj"
 "$tool" "$tmp/flat.obj" -o "$tmp/flat.ma" --json > "$tmp/e1.json" 2> "$tmp/err"
