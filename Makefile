@@ -7,7 +7,7 @@ DEMO_MODEL ?= tests/data/fox.obj
 DEMO_PREVIEW ?= --up z
 DATA ?= ../shared/data
 
-.PHONY: all deps configure build demo test bench install clean fuzz blender-addon test-blender
+.PHONY: all deps configure build demo test bench install clean fuzz blender-addon test-blender test-distributed
 
 all: build
 
@@ -36,6 +36,12 @@ blender-addon: build
 test-blender: build
 	@bash scripts/install-deps.sh blender
 	@bash bindings/blender/tests/run_test.sh $(BUILD) .
+
+# the cluster route (examples/distributed) on a 2-worker Dask LocalCluster over TLS on 127.0.0.1
+# (installs Debian's python3-distributed and python3-cryptography first)
+test-distributed: build
+	@bash scripts/install-deps.sh python3-distributed python3-cryptography
+	@bash examples/distributed/tests/run_test.sh $(BUILD) .
 
 # every bench program, its output written to docs/benchmarks.md (stamped with date, machine, commit)
 bench: build

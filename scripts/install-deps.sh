@@ -12,7 +12,8 @@ packages=(build-essential cmake pkg-config libeigen3-dev libnanoflann-dev coinor
 # the command-line tool (examples/): libcli11-dev (arguments), nlohmann-json3-dev (JSON, glTF),
 # libstb-dev (PNG), libtinygltf-dev (glTF reader) and libassimp-dev (FBX, DAE, 3DS, ...)
 packages+=(libcli11-dev nlohmann-json3-dev libstb-dev libtinygltf-dev libassimp-dev)
-# extra packages a make target needs (make test-blender: blender; make fuzz: clang libclang-rt-14-dev)
+# extra packages a make target needs (make test-blender: blender; make test-distributed:
+# python3-distributed python3-cryptography; make fuzz: clang libclang-rt-14-dev)
 packages+=("$@")
 missing=()
 for p in "${packages[@]}"; do

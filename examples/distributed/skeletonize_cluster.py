@@ -54,8 +54,7 @@ def task_threads(requested):
     if requested > 0:
         return requested
     from distributed import get_worker
-    cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1
-    return max(1, cores // max(1, get_worker().nthreads))
+    return max(1, local_cores() // max(1, get_worker().nthreads))
 
 
 def skeletonize_asset(path, options, threads=0):
@@ -167,6 +166,17 @@ def security_from(args):
     return Security.temporary()
 
 
+def start_local_cluster(workers, worker_threads, security):
+    """A LocalCluster on 127.0.0.1 only, over TLS: `workers` processes of `worker_threads` threads."""
+    from distributed import LocalCluster
+    return LocalCluster(n_workers=workers, threads_per_worker=worker_threads, processes=True, protocol="tls://",
+                        host="127.0.0.1", dashboard_address=None, security=security)
+
+
+def local_cores():
+    return len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1
+
+
 def parse_args(argv):
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0], formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("inputs", nargs="+", metavar="INPUT", help="mesh files (.obj .off .ply) or folders of them")
@@ -194,18 +204,16 @@ def parse_args(argv):
 
 def main(argv=None):
     args = parse_args(argv)
-    from distributed import Client, LocalCluster
+    from distributed import Client
     inputs = list_inputs(args.inputs)
     options = {k: getattr(args, k) for k in RUN_OPTIONS if getattr(args, k) is not None}
     security = security_from(args)
     cluster = None
     threads = args.threads
     if args.local_workers:
-        cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1
         if threads <= 0:
-            threads = max(1, cores // (args.local_workers * args.worker_threads))
-        cluster = LocalCluster(n_workers=args.local_workers, threads_per_worker=args.worker_threads, processes=True,
-                               protocol="tls://", host="127.0.0.1", dashboard_address=None, security=security)
+            threads = max(1, local_cores() // (args.local_workers * args.worker_threads))
+        cluster = start_local_cluster(args.local_workers, args.worker_threads, security)
     failed = 0
     try:
         with Client(cluster if cluster else args.scheduler, security=security) as client:

@@ -1,0 +1,210 @@
+"""test_distributed.py: the cluster route on a 2-worker LocalCluster over TLS on 127.0.0.1 (test
+certificates made here with python3-cryptography). Checks: every input is in the report once, in
+input order; the broken files are error lines with the tool's failure (a file error, the library's
+status); every .ma is byte-identical to the coverage-axis tool's on the same file; a worker killed
+while it runs an asset does not lose it (run again, same result); an asset whose workers keep dying
+ends as an error line; the script's command line against the running scheduler; a client whose
+certificate another CA signed is refused.
+
+usage: test_distributed.py CLI TEST_DATA  (PYTHONPATH: the binding and examples/distributed)"""
+import datetime
+import ipaddress
+import json
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+import unittest
+
+import dask
+from cryptography import x509
+from cryptography.hazmat.primitives import hashes, serialization
+from cryptography.hazmat.primitives.asymmetric import ec
+from cryptography.x509.oid import NameOID
+from distributed import Client
+
+import skeletonize_cluster as sc
+
+CLI, DATA = sys.argv[1], sys.argv[2]
+MODELS = ["fox.obj", "hourglass.obj", "wall.obj", "cow_spot.obj", "torus.obj", "chair_soup.obj"]
+HOLD_ONCE, HOLD_ALWAYS = "fox", "doomed"  # stems whose task waits to be killed: first attempt / every attempt
+
+
+def make_certificates(folder, name):
+    """A CA and a certificate it signs for 127.0.0.1 (PEM files in `folder`): (ca, cert, key) paths."""
+    def write(path, data):
+        with open(path, "wb") as f:
+            f.write(data)
+        return path
+    now = datetime.datetime.utcnow()
+    ca_key = ec.generate_private_key(ec.SECP256R1())
+    ca_name = x509.Name([x509.NameAttribute(NameOID.COMMON_NAME, name + " test CA")])
+    ca = (x509.CertificateBuilder().subject_name(ca_name).issuer_name(ca_name).public_key(ca_key.public_key())
+          .serial_number(x509.random_serial_number()).not_valid_before(now - datetime.timedelta(hours=1))
+          .not_valid_after(now + datetime.timedelta(days=1))
+          .add_extension(x509.BasicConstraints(ca=True, path_length=None), critical=True).sign(ca_key, hashes.SHA256()))
+    key = ec.generate_private_key(ec.SECP256R1())
+    cert = (x509.CertificateBuilder().subject_name(x509.Name([x509.NameAttribute(NameOID.COMMON_NAME, "127.0.0.1")]))
+            .issuer_name(ca_name).public_key(key.public_key()).serial_number(x509.random_serial_number())
+            .not_valid_before(now - datetime.timedelta(hours=1)).not_valid_after(now + datetime.timedelta(days=1))
+            .add_extension(x509.SubjectAlternativeName([x509.IPAddress(ipaddress.ip_address("127.0.0.1")),
+                                                        x509.DNSName("localhost")]), critical=False)
+            .sign(ca_key, hashes.SHA256()))
+    pem = serialization.Encoding.PEM
+    return (write(os.path.join(folder, name + "-ca.pem"), ca.public_bytes(pem)),
+            write(os.path.join(folder, name + "-cert.pem"), cert.public_bytes(pem)),
+            write(os.path.join(folder, name + "-key.pem"), key.private_bytes(
+                pem, serialization.PrivateFormat.PKCS8, serialization.NoEncryption())))
+
+
+def held_task(path, options, threads):
+    """Runs on a worker: for the HOLD_* stems, writes MARKERS/<stem>.<attempt>.pid with this worker's
+    pid and waits to be killed (HOLD_ONCE on its first attempt only), then skeletonize_asset()."""
+    stem = os.path.splitext(os.path.basename(path))[0]
+    markers = os.environ["CA_TEST_MARKERS"]
+    attempt = 1 + sum(n.startswith(stem + ".") for n in os.listdir(markers))
+    if stem == HOLD_ALWAYS or (stem == HOLD_ONCE and attempt == 1):
+        with open(os.path.join(markers, "%s.%d.pid.part" % (stem, attempt)), "w") as f:
+            f.write(str(os.getpid()))
+        os.replace(os.path.join(markers, "%s.%d.pid.part" % (stem, attempt)), os.path.join(markers, "%s.%d.pid" % (stem, attempt)))
+        threading.Event().wait()  # until the test kills this worker process
+    with open(os.path.join(markers, "%s.%d.ran" % (stem, attempt)), "w") as f:
+        f.write(str(os.getpid()))
+    return sc.skeletonize_asset(path, options, threads)
+
+
+class Killer(threading.Thread):
+    """Kills (SIGKILL) the worker process named by each new MARKERS/*.pid file."""
+
+    def __init__(self, markers):
+        super().__init__(daemon=True)
+        self.markers, self.killed, self.stop = markers, [], threading.Event()
+
+    def run(self):
+        while not self.stop.is_set():
+            for name in sorted(os.listdir(self.markers)):
+                if name.endswith(".pid") and name not in self.killed:
+                    with open(os.path.join(self.markers, name)) as f:
+                        os.kill(int(f.read()), signal.SIGKILL)
+                    self.killed.append(name)
+            self.stop.wait(0.05)
+
+
+class ClusterRoute(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.mkdtemp(prefix="ca-distributed-")
+        cls.markers = os.environ["CA_TEST_MARKERS"] = os.path.join(cls.tmp, "markers")
+        os.makedirs(cls.markers)
+        cls.ca, cls.cert, cls.key = make_certificates(cls.tmp, "cluster")
+        inputs = [os.path.join(DATA, m) for m in MODELS] + [os.path.join(DATA, "moebius.obj")]
+        broken = os.path.join(cls.tmp, "broken.obj")  # a face refers to a vertex the file lacks
+        with open(broken, "w") as f:
+            f.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n")
+        doomed = os.path.join(cls.tmp, HOLD_ALWAYS + ".obj")
+        shutil.copy(os.path.join(DATA, "hourglass.obj"), doomed)
+        cls.inputs = inputs[:3] + [broken] + inputs[3:] + [doomed]
+        args = sc.parse_args(["-O", "x", "--local-workers", "2", "--tls-ca-file", cls.ca, "--tls-cert", cls.cert,
+                              "--tls-key", cls.key, "unused"])
+        cls.security = sc.security_from(args)
+        # The scheduler gives a task up at its first dead worker (KilledWorker), so the script's own
+        # resubmission is what is tested; one task per worker at a time, so a kill hits only the
+        # asset it is aimed at.
+        cls.config = dask.config.set({"distributed.scheduler.allowed-failures": 0,
+                                      "distributed.scheduler.worker-saturation": 1.0})
+        cls.cluster = sc.start_local_cluster(2, 1, cls.security)
+        cls.client = Client(cls.cluster, security=cls.security)
+        cls.outdir = os.path.join(cls.tmp, "out")
+        killer = Killer(cls.markers)
+        killer.start()
+        cls.lines = list(sc.run_batch(cls.client, cls.inputs, cls.outdir, {}, threads=1, attempts=2, task=held_task))
+        killer.stop.set()
+        killer.join()
+        cls.killed = killer.killed
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.client.close()
+        cls.cluster.close()
+        cls.config.__exit__(None, None, None)
+        shutil.rmtree(cls.tmp)
+
+    def cli(self, path):
+        """The tool's exit code and .ma bytes (None when it failed) on `path`."""
+        out = os.path.join(self.tmp, "cli-" + os.path.basename(path) + ".ma")
+        r = subprocess.run([CLI, path, "-o", out, "--quiet"], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+        if r.returncode:
+            return r.returncode, None
+        with open(out, "rb") as f:
+            return 0, f.read()
+
+    def test_every_input_once_in_order(self):
+        self.assertEqual([line["input"] for line in self.lines], self.inputs)
+        for line in self.lines:
+            self.assertEqual(line["format_version"], 1)
+
+    def test_results_equal_the_tool(self):
+        for path, line in zip(self.inputs, self.lines):
+            if os.path.basename(path) == HOLD_ALWAYS + ".obj":
+                continue
+            code, ma = self.cli(path)
+            with self.subTest(path=path):
+                if ma is None:
+                    self.assertIn("error", line)
+                    # the tool's exit codes: 3 a file it cannot read, 1 the library refused
+                    self.assertEqual(code, 3 if line["error"]["status"] == "FILE_ERROR" else 1)
+                    continue
+                self.assertNotIn("error", line)
+                with open(line["output"], "rb") as f:
+                    self.assertEqual(f.read(), ma)
+                self.assertEqual(line["selected"], int(ma.split(b" ", 1)[0]))
+
+    def test_broken_files_are_error_lines(self):
+        by_name = {os.path.basename(line["input"]): line for line in self.lines}
+        self.assertEqual(by_name["broken.obj"]["error"]["status"], "FILE_ERROR")
+        self.assertIn("out of range", by_name["broken.obj"]["error"]["message"])
+        self.assertEqual(by_name["moebius.obj"]["error"]["status"], "CA_ERROR_UNCOVERABLE")
+        self.assertEqual(by_name["moebius.obj"]["error"]["code"], 6)
+
+    def test_killed_worker_does_not_lose_its_asset(self):
+        self.assertIn(HOLD_ONCE + ".1.pid", self.killed)  # its first run was killed ...
+        self.assertTrue(os.path.exists(os.path.join(self.markers, HOLD_ONCE + ".2.ran")))  # ... it ran again
+        line = next(line for line in self.lines if line["input"].endswith(HOLD_ONCE + ".obj"))
+        self.assertNotIn("error", line)
+
+    def test_asset_whose_workers_keep_dying_is_an_error_line(self):
+        self.assertIn(HOLD_ALWAYS + ".1.pid", self.killed)
+        self.assertIn(HOLD_ALWAYS + ".2.pid", self.killed)
+        self.assertEqual(self.lines[-1]["error"]["status"], "WORKER_DIED")
+
+    def test_command_line_against_the_running_scheduler(self):
+        outdir = os.path.join(self.tmp, "cmdline")
+        inputs = [os.path.join(DATA, "hourglass.obj"), os.path.join(DATA, "wall.obj")]
+        r = subprocess.run([sys.executable, sc.__file__, "-O", outdir, "--scheduler", self.cluster.scheduler_address,
+                            "--tls-ca-file", self.ca, "--tls-cert", self.cert, "--tls-key", self.key, "--threads", "1"]
+                           + inputs, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        lines = [json.loads(s) for s in r.stdout.splitlines()]
+        self.assertEqual([line["input"] for line in lines], inputs)
+        for path, line in zip(inputs, lines):
+            with open(line["output"], "rb") as f:
+                self.assertEqual(f.read(), self.cli(path)[1])
+
+    def test_scheduler_listens_on_loopback_over_tls(self):
+        self.assertTrue(self.cluster.scheduler_address.startswith("tls://127.0.0.1:"))
+
+    def test_certificate_of_another_ca_is_refused(self):
+        other = os.path.join(self.tmp, "other")
+        os.makedirs(other)
+        ca, cert, key = make_certificates(other, "other")
+        args = sc.parse_args(["-O", "x", "--scheduler", "x", "--tls-ca-file", ca, "--tls-cert", cert, "--tls-key", key, "x"])
+        with self.assertRaises(Exception):
+            Client(self.cluster.scheduler_address, security=sc.security_from(args), timeout=10)
+
+
+if __name__ == "__main__":
+    unittest.main(argv=sys.argv[:1], verbosity=2)
