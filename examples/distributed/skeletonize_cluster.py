@@ -15,6 +15,7 @@ import argparse
 import json
 import os
 import sys
+import uuid
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
@@ -115,6 +116,7 @@ def run_batch(client, inputs, outdir, options, threads=0, attempts=3, task=skele
     from distributed import as_completed
     from distributed.scheduler import KilledWorker
     os.makedirs(outdir, exist_ok=True)
+    batch = uuid.uuid4().hex  # task keys unique to this batch: other clients may share the scheduler
     lines, pending, tries, stems = {}, {}, {}, {}
     for i, path in enumerate(inputs):
         stem = os.path.splitext(os.path.basename(path))[0]
@@ -126,7 +128,7 @@ def run_batch(client, inputs, outdir, options, threads=0, attempts=3, task=skele
 
     def submit(i):
         tries[i] = tries.get(i, 0) + 1
-        future = client.submit(task, inputs[i], options, threads, pure=False, key="coverage-axis-%d-%d" % (i, tries[i]))
+        future = client.submit(task, inputs[i], options, threads, pure=False, key="coverage-axis-%s-%d-%d" % (batch, i, tries[i]))
         pending[future.key] = i
         return future
 
@@ -204,6 +206,8 @@ def parse_args(argv):
 
 def main(argv=None):
     args = parse_args(argv)
+    if args.local_workers is not None and args.local_workers < 1:
+        raise SystemExit("skeletonize_cluster.py: --local-workers takes a count >= 1")
     from distributed import Client
     inputs = list_inputs(args.inputs)
     options = {k: getattr(args, k) for k in RUN_OPTIONS if getattr(args, k) is not None}

@@ -13,11 +13,11 @@ import json
 import os
 import shutil
 import signal
+import struct
 import subprocess
 import sys
 import tempfile
 import threading
-import time
 import unittest
 
 import dask
@@ -27,6 +27,8 @@ from cryptography.hazmat.primitives.asymmetric import ec
 from cryptography.x509.oid import NameOID
 from distributed import Client
 
+import coverage_axis as ca
+import mesh_files
 import skeletonize_cluster as sc
 
 CLI, DATA = sys.argv[1], sys.argv[2]
@@ -77,6 +79,22 @@ def held_task(path, options, threads):
     return sc.skeletonize_asset(path, options, threads)
 
 
+def write_off_and_ply(source, off, ply):
+    """`source` (OBJ) as ASCII OFF and as binary little-endian PLY (double coordinates, uchar/int
+    face lists), for the readers of those formats."""
+    v, t = mesh_files.read_mesh(source)
+    with open(off, "w") as f:
+        f.write("OFF\n%d %d 0\n" % (len(v), len(t)))
+        f.writelines("%.17g %.17g %.17g\n" % tuple(p) for p in v.tolist())
+        f.writelines("3 %d %d %d\n" % tuple(tri) for tri in t.tolist())
+    with open(ply, "wb") as f:
+        f.write(("ply\nformat binary_little_endian 1.0\nelement vertex %d\nproperty double x\nproperty double y\n"
+                 "property double z\nelement face %d\nproperty list uchar int vertex_indices\nend_header\n"
+                 % (len(v), len(t))).encode("ascii"))
+        f.write(b"".join(struct.pack("<3d", *p) for p in v.tolist()))
+        f.write(b"".join(struct.pack("<B3i", 3, *tri) for tri in t.tolist()))
+
+
 class Killer(threading.Thread):
     """Kills (SIGKILL) the worker process named by each new MARKERS/*.pid file."""
 
@@ -107,7 +125,10 @@ class ClusterRoute(unittest.TestCase):
             f.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n")
         doomed = os.path.join(cls.tmp, HOLD_ALWAYS + ".obj")
         shutil.copy(os.path.join(DATA, "hourglass.obj"), doomed)
-        cls.inputs = inputs[:3] + [broken] + inputs[3:] + [doomed]
+        off, ply = os.path.join(cls.tmp, "fox_off.off"), os.path.join(cls.tmp, "cow_ply.ply")
+        write_off_and_ply(os.path.join(DATA, "fox.obj"), off, os.path.join(cls.tmp, "fox_unused.ply"))
+        write_off_and_ply(os.path.join(DATA, "cow_spot.obj"), os.path.join(cls.tmp, "cow_unused.off"), ply)
+        cls.inputs = inputs[:3] + [broken] + inputs[3:] + [off, ply, doomed]
         args = sc.parse_args(["-O", "x", "--local-workers", "2", "--tls-ca-file", cls.ca, "--tls-cert", cls.cert,
                               "--tls-key", cls.key, "unused"])
         cls.security = sc.security_from(args)
@@ -162,6 +183,13 @@ class ClusterRoute(unittest.TestCase):
                 with open(line["output"], "rb") as f:
                     self.assertEqual(f.read(), ma)
                 self.assertEqual(line["selected"], int(ma.split(b" ", 1)[0]))
+
+    def test_ma_lists_every_face_edge(self):
+        # a face whose edges the skeleton does not list: they follow its edges, in face order
+        sk = ca.Skeleton([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], [0.5, 0.25, 0.125, 1e-10],
+                         edges=[[1, 0], [2, 3]], faces=[[0, 1, 2]])
+        self.assertEqual(mesh_files.ma_bytes(sk), b"4 4 1\nv 0 0 0 0.5\nv 1 0 0 0.25\nv 0 1 0 0.125\nv 0 0 1 1e-10\n"
+                                                  b"e 1 0\ne 2 3\ne 1 2\ne 2 0\nf 0 1 2\n")
 
     def test_broken_files_are_error_lines(self):
         by_name = {os.path.basename(line["input"]): line for line in self.lines}
