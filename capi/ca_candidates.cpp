@@ -50,6 +50,8 @@ ca_status ca_candidates(ca_context* ctx, const ca_surface_view* surface, const c
         if (surf.flipped) ctx->log(2, "the mesh faces inward (negative signed volume); it was flipped");
         if (surf.dropped_triangles)
             ctx->log(1, std::to_string(surf.dropped_triangles) + " zero-area triangles were ignored");
+        if (surf.duplicate_triangles)
+            ctx->log(1, std::to_string(surf.duplicate_triangles) + " repeated triangles were merged");
 
         ca::CandidateOptions co;
         co.generator = static_cast<ca::Generator>(o.generator);

@@ -9,6 +9,7 @@
 #include "candidates.h"
 
 #include "distance.h"
+#include "duplicates.h"
 #include "parallel.h"
 #include "union_find.h"
 
@@ -18,21 +19,8 @@
 namespace ca {
 
 Mesh hole_caps(const Mesh& mesh) {
-    // weld vertices with identical coordinates (split seams are not holes): each takes the
-    // smallest index with its coordinates (sorted arrays, cheaper than a map)
-    const size_t nv = mesh.vertices.size();
-    std::vector<uint32_t> order(nv), weld(nv);
-    for (size_t i = 0; i < nv; ++i) order[i] = uint32_t(i);
-    auto key = [&](uint32_t i) {
-        const Vec3& v = mesh.vertices[i];
-        return std::array<double, 3>{v.x(), v.y(), v.z()};
-    };
-    std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
-        const auto ka = key(a), kb = key(b);
-        return ka != kb ? ka < kb : a < b;
-    });
-    for (size_t k = 0; k < nv; ++k)
-        weld[order[k]] = (k > 0 && key(order[k]) == key(order[k - 1])) ? weld[order[k - 1]] : order[k];
+    // vertices with identical coordinates are one vertex (split seams are not holes)
+    const std::vector<uint32_t> weld = weld_map(mesh.vertices);
     // edges used by one triangle only, ascending
     std::vector<std::array<uint32_t, 2>> edges;
     edges.reserve(3 * mesh.triangles.size());

@@ -1,5 +1,6 @@
 // surface.cpp: validation and normalisation of the caller's mesh or oriented point cloud.
 #include "surface.h"
+#include "duplicates.h"
 #include "winding.h"
 
 #include <Eigen/Dense>
@@ -40,6 +41,12 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
                 return fail(Code::invalid_input, "triangle " + std::to_string(t) + " references vertex " +
                                                      std::to_string(v) + " of " + std::to_string(nv));
     const bool cloud = raw.triangles.empty();
+    if (!cloud) {
+        // repeated geometry would only repeat work (duplicates.h)
+        const MergeCounts merged = merge_duplicate_geometry(raw);
+        out.dropped_triangles = merged.degenerate;
+        out.duplicate_triangles = merged.duplicate;
+    }
     if (cloud && !require_normals) normals.clear();
     if (cloud && require_normals) {
         if (normals.size() != nv)
@@ -87,7 +94,7 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
             const double area2 = (raw.vertices[t[1]] - a).cross(raw.vertices[t[2]] - a).norm();
             if (area2 > 1e-14) kept.push_back(t);
         }
-        out.dropped_triangles = raw.triangles.size() - kept.size();
+        out.dropped_triangles += raw.triangles.size() - kept.size();
         if (kept.empty()) return fail(Code::degenerate_input, "every triangle has zero area");
         raw.triangles = std::move(kept);
         // an inward-facing mesh has negative signed volume: flip it so inside means w > 1/2

@@ -19,6 +19,7 @@ struct Surface {
     bool point_cloud = false;
     bool flipped = false;         // the mesh faced inward and was flipped
     size_t dropped_triangles = 0; // zero-area triangles ignored
+    size_t duplicate_triangles = 0; // repeats of a kept triangle merged into it (duplicates.h)
     Normalization norm;
 };
 

@@ -1,0 +1,91 @@
+// duplicates.cpp: welding of equal vertices and merging of repeated triangles (duplicates.h).
+#include "duplicates.h"
+
+#include <algorithm>
+
+namespace ca {
+
+std::vector<uint32_t> weld_map(const std::vector<Vec3>& vertices) {
+    struct Key {
+        double x, y, z;
+        uint32_t index;
+    };
+    const size_t nv = vertices.size();
+    std::vector<Key> keys(nv);
+    for (size_t i = 0; i < nv; ++i) keys[i] = {vertices[i].x(), vertices[i].y(), vertices[i].z(), uint32_t(i)};
+    auto same = [](const Key& a, const Key& b) { return a.x == b.x && a.y == b.y && a.z == b.z; };
+    std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) {
+        if (a.x != b.x) return a.x < b.x;
+        if (a.y != b.y) return a.y < b.y;
+        if (a.z != b.z) return a.z < b.z;
+        return a.index < b.index;
+    });
+    std::vector<uint32_t> weld(nv);
+    for (size_t k = 0; k < nv; ++k)
+        weld[keys[k].index] = (k > 0 && same(keys[k], keys[k - 1])) ? weld[keys[k - 1].index] : keys[k].index;
+    return weld;
+}
+
+MergeCounts merge_duplicate_geometry(Mesh& mesh) {
+    MergeCounts counts;
+    const std::vector<uint32_t> weld = weld_map(mesh.vertices);
+    const size_t nt = mesh.triangles.size();
+    // welded corners; triangles with a repeated corner are dropped here
+    std::vector<Tri> tris;
+    tris.reserve(nt);
+    for (const Tri& t : mesh.triangles) {
+        const Tri w = {weld[t[0]], weld[t[1]], weld[t[2]]};
+        if (w[0] == w[1] || w[1] == w[2] || w[0] == w[2]) ++counts.degenerate;
+        else tris.push_back(w);
+    }
+    // Group the triangles by their sorted corners (open-addressing hash table of first members);
+    // `even` says whether a triangle's corner order is an even permutation of its sorted corners.
+    const size_t n = tris.size();
+    auto sorted = [](const Tri& t) {
+        Tri s = t;
+        if (s[0] > s[1]) std::swap(s[0], s[1]);
+        if (s[1] > s[2]) std::swap(s[1], s[2]);
+        if (s[0] > s[1]) std::swap(s[0], s[1]);
+        return s;
+    };
+    auto even = [](const Tri& t) {   // cyclic rotations of an ascending triple are even
+        return (t[0] < t[1] && t[1] < t[2]) || (t[1] < t[2] && t[2] < t[0]) || (t[2] < t[0] && t[0] < t[1]);
+    };
+    size_t size = 16;
+    while (size < 2 * n) size *= 2;
+    constexpr uint32_t kEmpty = UINT32_MAX;
+    std::vector<uint32_t> table(size, kEmpty), group(n);
+    std::vector<uint32_t> same_way(n, 0), other_way(n, 0);   // per group (its first member)
+    for (size_t i = 0; i < n; ++i) {
+        const Tri s = sorted(tris[i]);
+        uint64_t h = (uint64_t(s[0]) * 0x9E3779B97F4A7C15ull) ^ (uint64_t(s[1]) * 0xC2B2AE3D27D4EB4Full) ^
+                     (uint64_t(s[2]) * 0x165667B19E3779F9ull);
+        h ^= h >> 29;
+        size_t slot = size_t(h) & (size - 1);
+        while (table[slot] != kEmpty && sorted(tris[table[slot]]) != s) slot = (slot + 1) & (size - 1);
+        if (table[slot] == kEmpty) table[slot] = uint32_t(i);
+        const uint32_t g = table[slot];
+        group[i] = g;
+        (even(tris[i]) == even(tris[g]) ? same_way : other_way)[g]++;
+    }
+    // keep the first member in each orientation that is kept
+    std::vector<uint8_t> kept_same(n, 0), kept_other(n, 0);
+    std::vector<Tri> out;
+    out.reserve(n);
+    for (size_t i = 0; i < n; ++i) {
+        const uint32_t g = group[i];
+        const bool same = even(tris[i]) == even(tris[g]);
+        const bool keep_same = same_way[g] >= other_way[g], keep_other = other_way[g] >= same_way[g];
+        uint8_t& done = same ? kept_same[g] : kept_other[g];
+        if ((same ? keep_same : keep_other) && !done) {
+            done = 1;
+            out.push_back(tris[i]);
+        } else {
+            ++counts.duplicate;
+        }
+    }
+    mesh.triangles = std::move(out);
+    return counts;
+}
+
+}  // namespace ca
