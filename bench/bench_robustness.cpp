@@ -1,7 +1,121 @@
 // bench_robustness.cpp: runs the whole pipeline on every mesh under <data>/meshes (paper, extra,
 // poor, thin) and prints, per model, the skeleton or the clear error it failed with. Nothing may
-// crash, hang or abort. usage: bench_robustness [DATA_ROOT]
+// crash, hang or abort. Then hostile generated inputs (repeated geometry, a huge polygon,
+// duplicated vertices, a 2 M-triangle mesh, a 50 MB single-line OBJ), each read and run in its
+// own process for its time and peak memory, beside a clean 40 k-triangle mesh (horse).
+// usage: bench_robustness [DATA_ROOT]
 #include "bench_common.h"
+#include "bench_inputs.h"
+
+#include <cstring>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace {
+
+struct Outcome {
+    ca_status status = CA_OK;
+    double seconds = 0;
+    size_t triangles = 0, balls = 0;
+    bool read_ok = false;
+    char message[240] = {};
+};
+
+// Reads `path` and runs the pipeline in a child process; its peak RSS is the child's alone.
+Outcome run_isolated(const std::string& path, const ca_candidate_options& co, const ca_select_options& so,
+                     const ca_connect_options& cop, double& peak_mb) {
+    Outcome o;
+    int fd[2];
+    peak_mb = 0;
+    if (pipe(fd) != 0) return o;
+    const pid_t pid = fork();
+    if (pid == 0) {
+        close(fd[0]);
+        const auto t = std::chrono::steady_clock::now();
+        caio::MeshData mesh;
+        std::string err;
+        o.read_ok = caio::read_mesh(path, mesh, err);
+        if (o.read_ok) {
+            o.triangles = mesh.triangles.size() / 3;
+            bench::PipelineRun r = bench::run_pipeline(mesh, co, so, cop);
+            o.status = r.status;
+            o.balls = r.balls;
+            err = r.message;
+        }
+        o.seconds = bench::seconds_since(t);
+        std::snprintf(o.message, sizeof o.message, "%s", err.c_str());
+        const ssize_t wrote = write(fd[1], &o, sizeof o);
+        _exit(wrote == ssize_t(sizeof o) ? 0 : 1);
+    }
+    close(fd[1]);
+    Outcome got;
+    const bool complete = pid > 0 && read(fd[0], &got, sizeof got) == ssize_t(sizeof got);
+    close(fd[0]);
+    int wstatus = 0;
+    rusage u{};
+    if (pid > 0) wait4(pid, &wstatus, 0, &u);
+    peak_mb = double(u.ru_maxrss) / 1024.0;
+    if (!complete) std::snprintf(got.message, sizeof got.message, "the run died (wait status %d)", wstatus);
+    return got;
+}
+
+void generated_inputs(const std::string& root, const ca_candidate_options& co, const ca_select_options& so,
+                      const ca_connect_options& cop) {
+    char dir_template[] = "/tmp/bench_robustness.XXXXXX";
+    const char* dir_c = mkdtemp(dir_template);
+    if (!dir_c) { std::printf("\nbench_robustness: no temporary folder, generated inputs skipped\n"); return; }
+    const std::string dir = dir_c;
+    auto write_obj = [](const std::string& path, const caio::MeshData& m) {
+        std::string s;
+        char line[96];
+        for (size_t i = 0; i + 2 < m.positions.size(); i += 3) {
+            std::snprintf(line, sizeof line, "v %.17g %.17g %.17g\n", m.positions[i], m.positions[i + 1], m.positions[i + 2]);
+            s += line;
+        }
+        for (size_t i = 0; i + 2 < m.triangles.size(); i += 3) {
+            std::snprintf(line, sizeof line, "f %u %u %u\n", m.triangles[i] + 1, m.triangles[i + 1] + 1, m.triangles[i + 2] + 1);
+            s += line;
+        }
+        return bench::write_text(path, s);
+    };
+    std::string cycle = "";
+    for (int k = 0; k < 8; ++k)
+        cycle += "v " + std::to_string(k & 1) + " " + std::to_string((k >> 1) & 1) + " " + std::to_string(k >> 2) + "\n";
+    cycle += "f";
+    for (int i = 0; i < 100000; ++i) cycle += " " + std::to_string(1 + i % 8);
+    cycle += "\n";
+    struct Row { const char* what; std::string path; bool made; };
+    std::vector<Row> rows = {
+        {"clean mesh (horse, reference)", root + "/meshes/paper/horse.obj", true},
+        {"30 000 coincident triangles (7 500 copies of a tetrahedron)", dir + "/tetra.obj",
+         write_obj(dir + "/tetra.obj", bench::tetrahedron_copies(7500))},
+        {"one polygon of 100 000 vertices on 8 positions (200 KB)", dir + "/polygon.obj", bench::write_text(dir + "/polygon.obj", cycle)},
+        {"333 000 triangles on 8 positions", dir + "/soup.obj", write_obj(dir + "/soup.obj", bench::soup_on_cube_corners(333000))},
+        {"1 000 000 vertices, each position 8 times (250 000-triangle torus)", dir + "/dupverts.ply",
+         bench::write_binary_ply(dir + "/dupverts.ply", bench::duplicated_vertices(bench::torus(500, 250), 8))},
+        {"2 000 000-triangle torus (binary PLY)", dir + "/torus.ply", bench::write_binary_ply(dir + "/torus.ply", bench::torus(2000, 500))},
+        {"50 MB OBJ of one face line", dir + "/line.obj", bench::write_text(dir + "/line.obj", bench::single_line_obj(50u << 20))},
+    };
+    std::printf("\n## Generated inputs (defaults; each read and run in its own process)\n\n");
+    std::printf("| input | triangles read | outcome | s (read + pipeline) | x horse | peak RSS MB |\n|---|---|---|---|---|---|\n");
+    double reference = 0;
+    for (const Row& row : rows) {
+        if (!row.made) { std::printf("| %s | | not written | | | |\n", row.what); continue; }
+        double peak = 0;
+        const Outcome o = run_isolated(row.path, co, so, cop, peak);
+        if (reference == 0) reference = o.seconds;
+        const std::string outcome = !o.read_ok ? std::string("read error: ") + o.message
+                                    : o.status == CA_OK ? std::to_string(o.balls) + " balls"
+                                                        : std::string(ca_status_string(o.status)) + ": " + o.message;
+        std::printf("| %s | %zu | %s | %.2f | %.1f | %.0f |\n", row.what, o.triangles, outcome.c_str(), o.seconds,
+                    reference > 0 ? o.seconds / reference : 0.0, peak);
+        std::fflush(stdout);
+        std::remove(row.path.c_str());
+    }
+    rmdir(dir.c_str());
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
     const std::string root = argc > 1 ? argv[1] : "../shared/data";
@@ -40,5 +154,7 @@ int main(int argc, char** argv) {
         }
     }
     std::printf("\n%zu meshes: %d skeletons, %d clear refusals, 0 crashes\n", models.size(), ok, refused);
+    std::fflush(stdout);
+    generated_inputs(root, co, so, cop);
     return 0;
 }

@@ -35,43 +35,59 @@ inline std::vector<uint32_t> valid_triangles(const Mesh& mesh) {
     return ids;
 }
 
+// Each node's box is the union of its children's (leaves: of their triangles' corners), and
+// the split compares precomputed centroids, so a build costs O(F log F) comparisons of doubles.
 inline Bvh build_bvh(const Mesh& mesh, std::vector<uint32_t> ids, uint32_t leaf_size = 8) {
     Bvh bvh;
-    bvh.order = std::move(ids);
-    if (bvh.order.empty()) return bvh;
+    if (ids.empty()) return bvh;
     const auto& V = mesh.vertices;
     const auto& T = mesh.triangles;
-    auto centroid = [&](uint32_t t) { return Vec3((V[T[t][0]] + V[T[t][1]] + V[T[t][2]]) / 3.0); };
-    bvh.nodes.reserve(2 * (bvh.order.size() / std::max<uint32_t>(leaf_size, 1)) + 1);
+    struct Item {
+        Vec3 centroid;
+        uint32_t id;
+    };
+    std::vector<Item> items(ids.size());
+    for (size_t i = 0; i < ids.size(); ++i) {
+        const Tri& f = T[ids[i]];
+        items[i] = {Vec3((V[f[0]] + V[f[1]] + V[f[2]]) / 3.0), ids[i]};
+    }
+    ids = std::vector<uint32_t>();
+    const uint32_t leaf = std::max<uint32_t>(leaf_size, 1);
+    bvh.nodes.reserve(2 * (items.size() / leaf) + 1);
 
     // Recursion depth is about log2(F / leaf_size): the split is always at the median.
     auto build = [&](auto&& self, uint32_t begin, uint32_t end) -> uint32_t {
         const uint32_t id = uint32_t(bvh.nodes.size());
         bvh.nodes.emplace_back();
         const double inf = std::numeric_limits<double>::infinity();
-        Vec3 lo = Vec3::Constant(inf), hi = Vec3::Constant(-inf);
-        Vec3 clo = lo, chi = hi;
-        for (uint32_t i = begin; i < end; ++i) {
-            const Tri& f = T[bvh.order[i]];
-            for (uint32_t k : f) { lo = lo.cwiseMin(V[k]); hi = hi.cwiseMax(V[k]); }
-            const Vec3 c = centroid(bvh.order[i]);
-            clo = clo.cwiseMin(c); chi = chi.cwiseMax(c);
-        }
         BvhNode node;
-        node.lo = lo; node.hi = hi; node.begin = begin; node.end = end;
-        if (end - begin > std::max<uint32_t>(leaf_size, 1)) {
+        node.begin = begin; node.end = end;
+        node.lo = Vec3::Constant(inf); node.hi = Vec3::Constant(-inf);
+        if (end - begin > leaf) {
+            Vec3 clo = node.lo, chi = node.hi;
+            for (uint32_t i = begin; i < end; ++i) {
+                clo = clo.cwiseMin(items[i].centroid); chi = chi.cwiseMax(items[i].centroid);
+            }
             int axis = 0;
             (chi - clo).maxCoeff(&axis);
             const uint32_t mid = begin + (end - begin) / 2;
-            std::nth_element(bvh.order.begin() + begin, bvh.order.begin() + mid, bvh.order.begin() + end,
-                             [&](uint32_t a, uint32_t b) { return centroid(a)[axis] < centroid(b)[axis]; });
+            std::nth_element(items.begin() + begin, items.begin() + mid, items.begin() + end,
+                             [axis](const Item& a, const Item& b) { return a.centroid[axis] < b.centroid[axis]; });
             node.left = self(self, begin, mid);
             node.right = self(self, mid, end);
+            for (uint32_t c : {node.left, node.right}) {
+                node.lo = node.lo.cwiseMin(bvh.nodes[c].lo); node.hi = node.hi.cwiseMax(bvh.nodes[c].hi);
+            }
+        } else {
+            for (uint32_t i = begin; i < end; ++i)
+                for (uint32_t k : T[items[i].id]) { node.lo = node.lo.cwiseMin(V[k]); node.hi = node.hi.cwiseMax(V[k]); }
         }
         bvh.nodes[id] = node;
         return id;
     };
-    build(build, 0, uint32_t(bvh.order.size()));
+    build(build, 0, uint32_t(items.size()));
+    bvh.order.resize(items.size());
+    for (size_t i = 0; i < items.size(); ++i) bvh.order[i] = items[i].id;
     return bvh;
 }
 

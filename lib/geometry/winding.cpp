@@ -73,39 +73,56 @@ WindingNumber::WindingNumber(const Mesh& mesh, double beta) : impl_(std::make_un
         const Tri& f = mesh.triangles[t];
         m.tris.push_back({mesh.vertices[f[0]], mesh.vertices[f[1]], mesh.vertices[f[2]]});
     }
-    // Per-triangle vector area, centroid and covariance about the centroid.
-    const size_t nt = m.tris.size();
-    std::vector<Vec3> area(nt), cen(nt);
-    std::vector<Eigen::Matrix3d> cov(nt);
-    for (size_t i = 0; i < nt; ++i) {
-        const auto& v = m.tris[i];
-        area[i] = 0.5 * (v[1] - v[0]).cross(v[2] - v[0]);
-        cen[i] = (v[0] + v[1] + v[2]) / 3.0;
-        cov[i].setZero();
-        for (const Vec3& p : v) cov[i] += (p - cen[i]) * (p - cen[i]).transpose();
-        cov[i] /= 12.0;
-    }
-    // Each node sums over its own triangles: O(F log F) overall.
+    // Bottom-up (children follow their parent in bvh.nodes): a leaf sums its triangles' moments
+    // about its centre, a parent shifts its children's moments to its own centre, so the build
+    // is O(F) apart from the radius (the farthest corner from the centre, over the node's triangles).
     m.exp.resize(m.bvh.nodes.size());
-    for (size_t n = 0; n < m.bvh.nodes.size(); ++n) {
+    std::vector<double> weight(m.bvh.nodes.size(), 0.0);   // total area per node
+    std::vector<Vec3> weighted(m.bvh.nodes.size());        // area-weighted centroid sum per node
+    for (size_t n = m.bvh.nodes.size(); n-- > 0;) {
         const detail::BvhNode& node = m.bvh.nodes[n];
         Expansion& e = m.exp[n];
-        double wsum = 0;
-        Vec3 csum = Vec3::Zero();
-        for (uint32_t i = node.begin; i < node.end; ++i) {
-            const double a = area[i].norm();
-            wsum += a;
-            csum += a * cen[i];
+        if (node.leaf()) {
+            weighted[n].setZero();
+            for (uint32_t i = node.begin; i < node.end; ++i) {
+                const auto& v = m.tris[i];
+                const Vec3 a = 0.5 * (v[1] - v[0]).cross(v[2] - v[0]);
+                const Vec3 c = (v[0] + v[1] + v[2]) / 3.0;
+                weight[n] += a.norm();
+                weighted[n] += a.norm() * c;
+            }
+            e.centre = weight[n] > 0 ? Vec3(weighted[n] / weight[n]) : Vec3(0.5 * (node.lo + node.hi));
+            for (uint32_t i = node.begin; i < node.end; ++i) {
+                const auto& v = m.tris[i];
+                const Vec3 a = 0.5 * (v[1] - v[0]).cross(v[2] - v[0]);
+                const Vec3 c = (v[0] + v[1] + v[2]) / 3.0;
+                Eigen::Matrix3d S = Eigen::Matrix3d::Zero();   // E[(x - centre)(x - centre)^T] over the triangle
+                for (const Vec3& p : v) S += (p - c) * (p - c).transpose();
+                const Vec3 d = c - e.centre;
+                S = S / 12.0 + d * d.transpose();
+                e.N += a;
+                e.M += a * d.transpose();
+                for (int k = 0; k < 3; ++k) e.Q[k] += a[k] * S;
+            }
+        } else {
+            weight[n] = weight[node.left] + weight[node.right];
+            weighted[n] = weighted[node.left] + weighted[node.right];
+            e.centre = weight[n] > 0 ? Vec3(weighted[n] / weight[n]) : Vec3(0.5 * (node.lo + node.hi));
+            for (uint32_t c : {node.left, node.right}) {
+                const Expansion& ch = m.exp[c];
+                const Vec3 s = ch.centre - e.centre;   // d about the parent = d about the child + s
+                e.N += ch.N;
+                e.M += ch.M + ch.N * s.transpose();
+                for (int k = 0; k < 3; ++k) {
+                    const Vec3 row = ch.M.row(k).transpose();
+                    e.Q[k] += ch.Q[k] + row * s.transpose() + s * row.transpose() + ch.N[k] * (s * s.transpose());
+                }
+            }
         }
-        e.centre = wsum > 0 ? Vec3(csum / wsum) : Vec3(0.5 * (node.lo + node.hi));
-        for (uint32_t i = node.begin; i < node.end; ++i) {
-            const Vec3 d = cen[i] - e.centre;
-            const Eigen::Matrix3d S = d * d.transpose() + cov[i];
-            e.N += area[i];
-            e.M += area[i] * d.transpose();
-            for (int k = 0; k < 3; ++k) e.Q[k] += area[i][k] * S;
-            for (const Vec3& p : m.tris[i]) e.radius = std::max(e.radius, (p - e.centre).norm());
-        }
+        double r2 = 0;
+        for (uint32_t i = node.begin; i < node.end; ++i)
+            for (const Vec3& p : m.tris[i]) r2 = std::max(r2, (p - e.centre).squaredNorm());
+        e.radius = std::sqrt(r2);
     }
 }
 
