@@ -10,6 +10,8 @@
 #include <dirent.h>
 #include <string>
 #include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <vector>
 
 namespace bench {
@@ -139,6 +141,54 @@ inline PipelineRun run_pipeline(const caio::MeshData& mesh, const ca_candidate_o
     ca_candidate_set_destroy(set);
     ca_context_destroy(ctx);
     return r;
+}
+
+// What run_isolated saw (plain data: it crosses a pipe).
+struct Outcome {
+    ca_status status = CA_OK;
+    double seconds = 0;
+    size_t triangles = 0, balls = 0;
+    bool read_ok = false;
+    char message[240] = {};
+};
+
+// Reads `path` and runs the pipeline in a child process (fork): its time (read + pipeline) and
+// peak RSS are its own, whatever ran before in this process.
+inline Outcome run_isolated(const std::string& path, const ca_candidate_options& co, const ca_select_options& so,
+                     const ca_connect_options& cop, double& peak_mb) {
+    Outcome o;
+    int fd[2];
+    peak_mb = 0;
+    if (pipe(fd) != 0) return o;
+    const pid_t pid = fork();
+    if (pid == 0) {
+        close(fd[0]);
+        const auto t = std::chrono::steady_clock::now();
+        caio::MeshData mesh;
+        std::string err;
+        o.read_ok = caio::read_mesh(path, mesh, err);
+        if (o.read_ok) {
+            o.triangles = mesh.triangles.size() / 3;
+            PipelineRun r = run_pipeline(mesh, co, so, cop);
+            o.status = r.status;
+            o.balls = r.balls;
+            err = r.message;
+        }
+        o.seconds = seconds_since(t);
+        std::snprintf(o.message, sizeof o.message, "%s", err.c_str());
+        const ssize_t wrote = write(fd[1], &o, sizeof o);
+        _exit(wrote == ssize_t(sizeof o) ? 0 : 1);
+    }
+    close(fd[1]);
+    Outcome got;
+    const bool complete = pid > 0 && read(fd[0], &got, sizeof got) == ssize_t(sizeof got);
+    close(fd[0]);
+    int wstatus = 0;
+    rusage u{};
+    if (pid > 0) wait4(pid, &wstatus, 0, &u);
+    peak_mb = double(u.ru_maxrss) / 1024.0;
+    if (!complete) std::snprintf(got.message, sizeof got.message, "the run died (wait status %d)", wstatus);
+    return got;
 }
 
 }  // namespace bench

@@ -7,57 +7,8 @@
 #include "bench_common.h"
 #include "bench_inputs.h"
 
-#include <cstring>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace {
-
-struct Outcome {
-    ca_status status = CA_OK;
-    double seconds = 0;
-    size_t triangles = 0, balls = 0;
-    bool read_ok = false;
-    char message[240] = {};
-};
-
-// Reads `path` and runs the pipeline in a child process; its peak RSS is the child's alone.
-Outcome run_isolated(const std::string& path, const ca_candidate_options& co, const ca_select_options& so,
-                     const ca_connect_options& cop, double& peak_mb) {
-    Outcome o;
-    int fd[2];
-    peak_mb = 0;
-    if (pipe(fd) != 0) return o;
-    const pid_t pid = fork();
-    if (pid == 0) {
-        close(fd[0]);
-        const auto t = std::chrono::steady_clock::now();
-        caio::MeshData mesh;
-        std::string err;
-        o.read_ok = caio::read_mesh(path, mesh, err);
-        if (o.read_ok) {
-            o.triangles = mesh.triangles.size() / 3;
-            bench::PipelineRun r = bench::run_pipeline(mesh, co, so, cop);
-            o.status = r.status;
-            o.balls = r.balls;
-            err = r.message;
-        }
-        o.seconds = bench::seconds_since(t);
-        std::snprintf(o.message, sizeof o.message, "%s", err.c_str());
-        const ssize_t wrote = write(fd[1], &o, sizeof o);
-        _exit(wrote == ssize_t(sizeof o) ? 0 : 1);
-    }
-    close(fd[1]);
-    Outcome got;
-    const bool complete = pid > 0 && read(fd[0], &got, sizeof got) == ssize_t(sizeof got);
-    close(fd[0]);
-    int wstatus = 0;
-    rusage u{};
-    if (pid > 0) wait4(pid, &wstatus, 0, &u);
-    peak_mb = double(u.ru_maxrss) / 1024.0;
-    if (!complete) std::snprintf(got.message, sizeof got.message, "the run died (wait status %d)", wstatus);
-    return got;
-}
 
 void generated_inputs(const std::string& root, const ca_candidate_options& co, const ca_select_options& so,
                       const ca_connect_options& cop) {
@@ -102,7 +53,7 @@ void generated_inputs(const std::string& root, const ca_candidate_options& co, c
     for (const Row& row : rows) {
         if (!row.made) { std::printf("| %s | | not written | | | |\n", row.what); continue; }
         double peak = 0;
-        const Outcome o = run_isolated(row.path, co, so, cop, peak);
+        const bench::Outcome o = bench::run_isolated(row.path, co, so, cop, peak);
         if (reference == 0) reference = o.seconds;
         const std::string outcome = !o.read_ok ? std::string("read error: ") + o.message
                                     : o.status == CA_OK ? std::to_string(o.balls) + " balls"

@@ -3,6 +3,7 @@
 // random_candidates.cpp, point_cloud.cpp), then clamps to hole caps and adds fallback balls.
 #include "candidates_internal.h"
 
+#include "bvh.h"
 #include "sampling.h"
 #include "timing.h"
 
@@ -40,8 +41,9 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
         const Mesh& mesh = out.surface.mesh;
         Beside structures(
             [&built, &mesh] {
-                built.winding = std::make_shared<const WindingNumber>(mesh);
-                built.distance = std::make_shared<const MeshDistance>(mesh);
+                const auto tree = detail::build_triangle_tree(mesh);   // one tree for both
+                built.winding = std::make_shared<const WindingNumber>(tree);
+                built.distance = std::make_shared<const MeshDistance>(tree);
                 // open meshes: no ball reaches out through a hole (hole_caps.cpp)
                 const Mesh caps = hole_caps(mesh);
                 if (!caps.triangles.empty()) built.cap_distance = std::make_unique<const MeshDistance>(caps);

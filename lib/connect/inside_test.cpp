@@ -19,7 +19,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
 
 namespace ca {
 
@@ -40,20 +39,22 @@ constexpr size_t kProbeWindow = 48;
 // Whether the boundary of the mesh (as a 2-chain) vanishes: for every undirected edge, as many
 // half-edges a->b as b->a, and every triangle valid. Then the winding number is integer-valued.
 bool closed_mesh(const Mesh& mesh) {
-    std::unordered_map<uint64_t, int> balance;
-    balance.reserve(mesh.triangles.size() * 3);
+    // half-edges a->b with a < b, and b->a ones stored as (b, a): equal multisets iff balanced
+    std::vector<uint64_t> up, down;
+    up.reserve(mesh.triangles.size() * 3 / 2 + 1);
+    down.reserve(mesh.triangles.size() * 3 / 2 + 1);
     for (const Tri& f : mesh.triangles) {
         if (!detail::triangle_ok(mesh, f)) return false;
         for (int i = 0; i < 3; ++i) {
             const uint32_t a = f[size_t(i)], b = f[size_t((i + 1) % 3)];
-            if (a == b) continue;
-            const uint64_t key = a < b ? (uint64_t(a) << 32) | b : (uint64_t(b) << 32) | a;
-            balance[key] += a < b ? 1 : -1;
+            if (a < b) up.push_back((uint64_t(a) << 32) | b);
+            else if (b < a) down.push_back((uint64_t(b) << 32) | a);
         }
     }
-    for (const auto& kv : balance)
-        if (kv.second != 0) return false;
-    return true;
+    if (up.size() != down.size()) return false;
+    std::sort(up.begin(), up.end());
+    std::sort(down.begin(), down.end());
+    return up == down;
 }
 
 }  // namespace

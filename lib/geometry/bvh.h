@@ -1,10 +1,12 @@
 // bvh.h: a small binary bounding-volume hierarchy over triangles, shared by winding.cpp and
-// distance.cpp. Built top-down by a median split (of the triangle centroids) along the longest
+// distance.cpp (one TriangleTree can serve both). Built top-down by a median split (of the triangle centroids) along the longest
 // axis of the centroid box; leaves hold at most `leaf_size` triangles. Internal header.
 #pragma once
 #include "common.h"
 #include <algorithm>
+#include <array>
 #include <limits>
+#include <memory>
 
 namespace ca::detail {
 
@@ -89,6 +91,24 @@ inline Bvh build_bvh(const Mesh& mesh, std::vector<uint32_t> ids, uint32_t leaf_
     bvh.order.resize(items.size());
     for (size_t i = 0; i < items.size(); ++i) bvh.order[i] = items[i].id;
     return bvh;
+}
+
+// The BVH over a mesh's valid triangles and their corners in BVH order: what the winding
+// number and the distance queries both walk, built once for both.
+struct TriangleTree {
+    Bvh bvh;
+    std::vector<std::array<Vec3, 3>> tris;   // triangle corners, in bvh.order
+};
+
+inline std::shared_ptr<const TriangleTree> build_triangle_tree(const Mesh& mesh) {
+    auto tree = std::make_shared<TriangleTree>();
+    tree->bvh = build_bvh(mesh, valid_triangles(mesh));
+    tree->tris.reserve(tree->bvh.order.size());
+    for (uint32_t t : tree->bvh.order) {
+        const Tri& f = mesh.triangles[t];
+        tree->tris.push_back({mesh.vertices[f[0]], mesh.vertices[f[1]], mesh.vertices[f[2]]});
+    }
+    return tree;
 }
 
 }  // namespace ca::detail

@@ -64,8 +64,10 @@ Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, cons
 }
 
 struct MeshDistance::Impl {
-    detail::Bvh bvh;
-    std::vector<std::array<Vec3, 3>> tris;   // triangle corners, in bvh.order
+    std::shared_ptr<const detail::TriangleTree> tree;
+    const detail::Bvh& bvh;
+    const std::vector<std::array<Vec3, 3>>& tris;   // triangle corners, in bvh.order
+    explicit Impl(std::shared_ptr<const detail::TriangleTree> t) : tree(std::move(t)), bvh(tree->bvh), tris(tree->tris) {}
 
     // Squared distance to the closest triangle if it is below best2 (then `found` is set).
     double nearest(const Vec3& p, double best2, Vec3& closest, uint32_t& slot, bool& found) const {
@@ -97,14 +99,10 @@ struct MeshDistance::Impl {
     }
 };
 
-MeshDistance::MeshDistance(const Mesh& mesh) : impl_(std::make_unique<Impl>()) {
-    impl_->bvh = detail::build_bvh(mesh, detail::valid_triangles(mesh));
-    impl_->tris.reserve(impl_->bvh.order.size());
-    for (uint32_t t : impl_->bvh.order) {
-        const Tri& f = mesh.triangles[t];
-        impl_->tris.push_back({mesh.vertices[f[0]], mesh.vertices[f[1]], mesh.vertices[f[2]]});
-    }
-}
+MeshDistance::MeshDistance(const Mesh& mesh) : MeshDistance(detail::build_triangle_tree(mesh)) {}
+
+MeshDistance::MeshDistance(std::shared_ptr<const detail::TriangleTree> tree)
+    : impl_(std::make_unique<Impl>(std::move(tree))) {}
 
 MeshDistance::~MeshDistance() = default;
 MeshDistance::MeshDistance(MeshDistance&&) noexcept = default;

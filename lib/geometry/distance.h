@@ -9,9 +9,13 @@ namespace ca {
 // Exact closest point on one triangle (Ericson, Real-Time Collision Detection, 5.1.5).
 Vec3 closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
 
+namespace detail { struct TriangleTree; }
+
 class MeshDistance {
 public:
     explicit MeshDistance(const Mesh& mesh);   // keeps its own copy of what it needs
+    // On a tree already built over the mesh (shared with WindingNumber; bvh.h).
+    explicit MeshDistance(std::shared_ptr<const detail::TriangleTree> tree);
     ~MeshDistance();
     MeshDistance(MeshDistance&&) noexcept;
     MeshDistance& operator=(MeshDistance&&) noexcept;

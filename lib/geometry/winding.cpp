@@ -59,20 +59,19 @@ struct Expansion {
 
 struct WindingNumber::Impl {
     double beta = 2.0;
-    detail::Bvh bvh;
-    std::vector<Expansion> exp;              // one per BVH node
-    std::vector<std::array<Vec3, 3>> tris;   // triangle corners, in bvh.order
+    std::shared_ptr<const detail::TriangleTree> tree;
+    const detail::Bvh& bvh;
+    const std::vector<std::array<Vec3, 3>>& tris;   // triangle corners, in bvh.order
+    std::vector<Expansion> exp;                     // one per BVH node
+    explicit Impl(std::shared_ptr<const detail::TriangleTree> t) : tree(std::move(t)), bvh(tree->bvh), tris(tree->tris) {}
 };
 
-WindingNumber::WindingNumber(const Mesh& mesh, double beta) : impl_(std::make_unique<Impl>()) {
+WindingNumber::WindingNumber(const Mesh& mesh, double beta) : WindingNumber(detail::build_triangle_tree(mesh), beta) {}
+
+WindingNumber::WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, double beta)
+    : impl_(std::make_unique<Impl>(std::move(tree))) {
     Impl& m = *impl_;
     m.beta = (beta >= 0 && std::isfinite(beta)) ? beta : 2.0;
-    m.bvh = detail::build_bvh(mesh, detail::valid_triangles(mesh));
-    m.tris.reserve(m.bvh.order.size());
-    for (uint32_t t : m.bvh.order) {
-        const Tri& f = mesh.triangles[t];
-        m.tris.push_back({mesh.vertices[f[0]], mesh.vertices[f[1]], mesh.vertices[f[2]]});
-    }
     // Bottom-up (children follow their parent in bvh.nodes): a leaf sums its triangles' moments
     // about its centre, a parent shifts its children's moments to its own centre, so the build
     // is O(F) apart from the radius (the farthest corner from the centre, over the node's triangles).
