@@ -6,6 +6,9 @@
 // instances (the reference code's own samples and candidates) against their known optima.
 // usage: bench_pipeline [DATA_ROOT]   (default ../shared/data; skipped when missing)
 #include "bench_common.h"
+#include "bench_surface.h"
+#include "delaunay.h"
+#include "sampling.h"
 
 #include <algorithm>
 #include <cmath>
@@ -29,11 +32,12 @@ int main(int argc, char** argv) {
     power.method = CA_CONNECT_POWER;
 
     std::printf("\n## Pipeline at the defaults (|S| 1500, Voronoi candidates of 4000 samples, delta 0.02, exact cover with the fast effort (the default), connection auto = medial route)\n\n");
-    std::printf("| model | tris | |S| | |P| | |V| | optimal | gap %% | candidates s | select s | connect s | total s | S->E %% | E->S %% | HD %% | power: HD %% | connect s |\n");
-    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    std::printf("| model | tris | |S| | |P| | |V| | optimal | gap %% | candidates s | select s | connect s | total s | Delaunay s | S->E %% | E->S %% | HD %% | power: HD %% | connect s |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     double sum = 0, worst = 0, hd_sum = 0, hd_power_sum = 0;
     int power_better = 0;
     int n_opt = 0, n = 0;
+    std::vector<double> totals, delaunays;
     for (const std::string& path : models) {
         caio::MeshData mesh;
         std::string err;
@@ -44,6 +48,19 @@ int main(int argc, char** argv) {
             continue;
         }
         const double total = r.t_candidates + r.t_select + r.t_connect;
+        // the Delaunay step alone (Qhull on as many surface samples as the candidate step uses): the
+        // floor of the Voronoi route
+        double t_delaunay = 0;
+        ca::Surface surf;
+        if (bench::load_surface(path, surf)) {
+            const std::vector<ca::Vec3> pts = ca::sample_surface(surf.mesh, co.voronoi_samples, 2);
+            std::vector<ca::Tet> tets;
+            const auto t = std::chrono::steady_clock::now();
+            ca::delaunay_tetrahedra(pts, tets);
+            t_delaunay = bench::seconds_since(t);
+        }
+        totals.push_back(total);
+        delaunays.push_back(t_delaunay);
         sum += total;
         worst = std::max(worst, total);
         n_opt += r.optimal;
@@ -51,9 +68,9 @@ int main(int argc, char** argv) {
         hd_sum += r.eval.hd_two_sided;
         hd_power_sum += r.alt_eval.hd_two_sided;
         power_better += r.alt_eval.hd_two_sided < r.eval.hd_two_sided;
-        std::printf("| %s | %zu | %zu | %zu | %zu | %s | %.2f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f |\n",
+        std::printf("| %s | %zu | %zu | %zu | %zu | %s | %.2f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f |\n",
                     bench::stem(path).c_str(), mesh.triangles.size() / 3, r.samples, r.candidates, r.balls,
-                    r.optimal ? "yes" : "no", 100 * r.gap, r.t_candidates, r.t_select, r.t_connect, total,
+                    r.optimal ? "yes" : "no", 100 * r.gap, r.t_candidates, r.t_select, r.t_connect, total, t_delaunay,
                     r.eval.hd_surface_to_recon, r.eval.hd_recon_to_surface, r.eval.hd_two_sided,
                     r.alt_eval.hd_two_sided, r.t_alt_connect);
     }
@@ -61,6 +78,13 @@ int main(int argc, char** argv) {
                 "(power route on the same balls: %.3f %%, better on %d models); peak RSS %.0f MB\n", n, n_opt,
                 n ? sum / n : 0.0, worst, n ? hd_sum / n : 0.0, n ? hd_power_sum / n : 0.0, power_better,
                 bench::peak_rss_mb());
+    auto median = [](std::vector<double> v) {
+        if (v.empty()) return 0.0;
+        std::sort(v.begin(), v.end());
+        return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+    };
+    std::printf("pipeline median %.3f s; Delaunay step median %.3f s (target: pipeline median <= max(0.2 s, 2 x Delaunay) = %.3f s)\n",
+                median(totals), median(delaunays), std::max(0.2, 2 * median(delaunays)));
 
     // Reference instances: the reference implementation's samples and candidates.
     struct Ref { const char* mesh; const char* samples; const char* candidates; double delta; int known; };
