@@ -87,12 +87,15 @@ int main() {
             (c.array() >= lo.array()).all() && (c.array() <= hi.array()).all())
             centres.push_back(c);
     }
-    size_t inner = 0;
+    std::vector<ca::Vec3> inner;
     std::printf("| inside decisions (winding number) at %zu circumcentres | %.3f |\n", centres.size(), timed([&] {
-        for (const ca::Vec3& c : centres) inner += winding->inside(c);
+        for (const ca::Vec3& c : centres)
+            if (winding->inside(c)) inner.push_back(c);
     }));
-    std::printf("| distances at the same circumcentres | %.3f |\n", timed([&] {
-        for (const ca::Vec3& c : centres) distance->distance(c);
+    // inner points only: outer ones near the torus's axis are equidistant from a whole circle of
+    // triangles, which no box can prune, and the pipeline never measures them
+    std::printf("| distances at the %zu inner circumcentres | %.3f |\n", inner.size(), timed([&] {
+        for (const ca::Vec3& c : inner) distance->distance(c);
     }));
     return 0;
 }
