@@ -7,7 +7,7 @@ DEMO_MODEL ?= tests/data/fox.obj
 DEMO_PREVIEW ?= --up z
 DATA ?= ../shared/data
 
-.PHONY: all deps configure build demo test bench install clean fuzz blender-addon test-blender test-distributed
+.PHONY: all deps configure build demo test bench install clean fuzz fuzz-build fuzz-pipeline fuzz-long blender-addon test-blender test-distributed
 
 all: build
 
@@ -50,22 +50,36 @@ bench: build
 install: build
 	@cmake --install $(BUILD) $(if $(PREFIX),--prefix $(PREFIX),)
 
-# libFuzzer (clang, ASan/UBSan): the C ABI (fuzz_pipeline) and every file reader (fuzz_read_<format>,
-# seeded with the test models of that format), FUZZ_SECONDS each, one after the other
+# libFuzzer (clang, ASan/UBSan): the C ABI (fuzz_pipeline, seeded with the small bundled meshes in
+# its structured format, tests/fuzz/make_seeds.py) and every file reader (fuzz_read_<format>, seeded
+# with the test models of that format), FUZZ_SECONDS each, one after the other
 FUZZ_SECONDS ?= 60
 FUZZ_READERS ?= obj off ply xyz pts stl gltf glb dae
-fuzz:
+FUZZ_SEEDS = tests/data/hourglass.obj tests/data/wall.obj tests/data/desk_table.obj tests/data/fox.obj \
+  tests/data/chair_soup.obj
+fuzz-build:
 	@bash scripts/install-deps.sh clang libclang-rt-14-dev
 	@cmake -S . -B build-fuzz -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCA_FUZZ=ON -DCA_SANITIZE=ON \
 	  -DCA_BUILD_TESTS=OFF -DCA_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
 	@cmake --build build-fuzz -j $(JOBS) --target fuzz_pipeline $(addprefix fuzz_read_,$(FUZZ_READERS))
-	@mkdir -p build-fuzz/corpus && ./build-fuzz/fuzz_pipeline -max_total_time=$(FUZZ_SECONDS) -max_len=512 build-fuzz/corpus
+	@python3 tests/fuzz/make_seeds.py build-fuzz/seeds $(FUZZ_SEEDS)
+	@mkdir -p build-fuzz/corpus
+
+fuzz-pipeline: fuzz-build
+	./build-fuzz/fuzz_pipeline -max_total_time=$(FUZZ_SECONDS) -max_len=16384 -timeout=30 \
+	  -rss_limit_mb=3000 build-fuzz/corpus build-fuzz/seeds
+
+fuzz: fuzz-pipeline
 	@for f in $(FUZZ_READERS); do \
 	  mkdir -p build-fuzz/corpus_$$f build-fuzz/seeds_$$f && \
 	  find tests/data -name "*.$$f" -size -200k -exec cp {} build-fuzz/seeds_$$f/ \; && \
 	  ./build-fuzz/fuzz_read_$$f -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 \
 	    build-fuzz/corpus_$$f build-fuzz/seeds_$$f || exit 1; \
 	done
+
+# ten minutes of the pipeline harness, the run that reaches the deep steps
+fuzz-long:
+	@$(MAKE) --no-print-directory fuzz-pipeline FUZZ_SECONDS=600
 
 clean:
 	@rm -rf $(BUILD) build-fuzz demo-output

@@ -39,6 +39,14 @@ struct ca_select_stats {
 };
 }  // namespace abi1
 
+// ---- ca_context_desc as first published in ABI 2, before time_limit_s was appended ----
+namespace abi2_first {
+struct ca_context_desc {
+    abi1::ca_context_desc abi1_fields;
+    double progress_interval_s;
+};
+}  // namespace abi2_first
+
 // Published sizes of each struct, first (ABI 1) to current. A new ABI version appends its size;
 // appended fields must start at or after the previous size (checked below), so a caller's
 // struct_size tells exactly which fields it has.
@@ -48,7 +56,8 @@ template <class T> struct Published;
         static constexpr const char* name = #T;                       \
         static constexpr uint32_t sizes[] = {__VA_ARGS__};            \
     };
-CA_PUBLISHED(ca_context_desc, sizeof(abi1::ca_context_desc), sizeof(ca_context_desc))
+CA_PUBLISHED(ca_context_desc, sizeof(abi1::ca_context_desc), sizeof(abi2_first::ca_context_desc),
+             sizeof(ca_context_desc))
 CA_PUBLISHED(ca_surface_view, sizeof(ca_surface_view))
 CA_PUBLISHED(ca_candidate_options, sizeof(ca_candidate_options))
 CA_PUBLISHED(ca_select_options, sizeof(ca_select_options))
@@ -63,6 +72,10 @@ CA_PUBLISHED(ca_evaluation, sizeof(ca_evaluation))
 static_assert(offsetof(ca_context_desc, threads) == offsetof(abi1::ca_context_desc, threads) &&
                   offsetof(ca_context_desc, progress_interval_s) >= sizeof(abi1::ca_context_desc),
               "ca_context_desc: ABI 1 is a prefix of ABI 2");
+static_assert(offsetof(ca_context_desc, progress_interval_s) ==
+                      offsetof(abi2_first::ca_context_desc, progress_interval_s) &&
+                  offsetof(ca_context_desc, time_limit_s) >= sizeof(abi2_first::ca_context_desc),
+              "ca_context_desc: its first ABI 2 layout is a prefix of the current one");
 static_assert(offsetof(ca_select_stats, scale_used) == offsetof(abi1::ca_select_stats, scale_used) &&
                   offsetof(ca_select_stats, time_coverage_s) >= sizeof(abi1::ca_select_stats),
               "ca_select_stats: ABI 1 is a prefix of ABI 2");

@@ -92,6 +92,7 @@ typedef int32_t ca_status;
 #define CA_ERROR_BUFFER_TOO_SMALL  11 /* copy-out capacity too small; *count has the size needed */
 #define CA_ERROR_INTERNAL          12 /* a bug: please report it with the input */
 #define CA_ERROR_NO_CANDIDATES     13 /* no inner candidate ball was found */
+#define CA_ERROR_TIME_LIMIT        14 /* ca_context_desc.time_limit_s ran out; the message names the stage */
 
 /* A static English name for a status, e.g. "CA_ERROR_NULL_POINTER: a required pointer is NULL". */
 CA_API const char* ca_status_string(ca_status status);
@@ -124,6 +125,11 @@ typedef struct ca_context_desc {
     double progress_interval_s; /* ABI 2. Least time between two progress calls within a stage
                                    (a stage's first call and calls with fraction 1 always come); default 0 =
                                    every update. Cancel requests are still seen at every update. */
+    double time_limit_s;   /* ABI 2 (appended after progress_interval_s). Wall-clock budget of each
+                              long call (ca_candidates, ca_select, ca_connect, ca_evaluate), checked
+                              by every stage; when it runs out the call returns CA_ERROR_TIME_LIMIT
+                              naming the stage (nothing allocated), except the exact solver, which
+                              returns its best cover so far, not proven. Default 0 = unlimited. */
 } ca_context_desc;
 
 /* Sets struct_size and the defaults (all zero/NULL, threads 0) of the first struct_size bytes of
