@@ -109,7 +109,7 @@ ca_status ca_candidates_from_arrays(ca_context* ctx, const double* samples, size
         core.surface.norm.scale = length;
         for (const Vec3& p : s) core.cover_samples.push_back(core.surface.norm.to_internal(p));
         for (size_t i = 0; i < c.size(); ++i) {
-            const double r = *at(radii, rs, i);
+            const double r = read_element<double, 1>(radii, rs, i)[0];
             if (!(std::isfinite(r) && r >= 0))
                 return ca::fail(Code::invalid_input, "ball " + std::to_string(i) + " has a negative, NaN or infinite radius");
             core.balls.push_back({core.surface.norm.to_internal(c[i]), r / length});

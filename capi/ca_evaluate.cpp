@@ -48,6 +48,8 @@ ca_status ca_evaluate(ca_context* ctx, const ca_surface_view* surface, const ca_
         if (!skeleton->radii) return null_pointer("skeleton->radii");
         if (skeleton->edge_count && !skeleton->edges) return null_pointer("skeleton->edges");
         if (skeleton->face_count && !skeleton->faces) return null_pointer("skeleton->faces");
+        if (nv > UINT32_MAX || skeleton->edge_count > UINT32_MAX || skeleton->face_count > UINT32_MAX)
+            return ca::fail(Code::invalid_argument, "skeleton: more than 2^32 - 1 vertices, edges or faces");
         ca::Skeleton sk;
         const ca::Normalization& n = surf.norm;
         for (size_t i = 0; i < nv; ++i) {

@@ -21,6 +21,9 @@ ca_status record_exception(ca_context* ctx) noexcept {
     } catch (const std::bad_alloc&) {
         try { ctx->last_error = "out of memory"; } catch (...) {}
         return CA_ERROR_OUT_OF_MEMORY;
+    } catch (const std::length_error&) {  // a container asked for more than it can hold
+        try { ctx->last_error = "out of memory: a size too large to allocate"; } catch (...) {}
+        return CA_ERROR_OUT_OF_MEMORY;
     } catch (const std::exception& e) {
         try { ctx->last_error = std::string("internal error: ") + e.what(); } catch (...) {}
         return CA_ERROR_INTERNAL;
@@ -45,6 +48,7 @@ std::string struct_size_message(const char* name, uint32_t size, const uint32_t*
 ca::Monitor ca_context::monitor() const {
     ca::Monitor m;
     m.cancel_flag = &cancel;
+    m.deadline = ca::Deadline::after(desc.time_limit_s);  // the budget of this call, from now
     if (desc.progress) {
         using Clock = std::chrono::steady_clock;
         ca_progress_fn fn = desc.progress;
@@ -87,6 +91,7 @@ const char* ca_status_string(ca_status s) {
         case CA_ERROR_BUFFER_TOO_SMALL: return "CA_ERROR_BUFFER_TOO_SMALL: the output buffer is too small";
         case CA_ERROR_INTERNAL: return "CA_ERROR_INTERNAL: internal error";
         case CA_ERROR_NO_CANDIDATES: return "CA_ERROR_NO_CANDIDATES: no inner candidate ball was found";
+        case CA_ERROR_TIME_LIMIT: return "CA_ERROR_TIME_LIMIT: the context's time limit ran out";
         default: return "unknown ca_status";
     }
 }
@@ -100,6 +105,7 @@ ca_status ca_context_create(const ca_context_desc* desc, ca_context** out) {
     if ((d.alloc == nullptr) != (d.free == nullptr)) return CA_ERROR_INVALID_ARGUMENT;
     if (d.threads < 0) return CA_ERROR_INVALID_ARGUMENT;
     if (!(d.progress_interval_s >= 0) || d.progress_interval_s > 1e9) return CA_ERROR_INVALID_ARGUMENT;
+    if (!(d.time_limit_s >= 0)) return CA_ERROR_INVALID_ARGUMENT;  // NaN or negative; +Inf = unlimited
     ca_context* ctx = new (std::nothrow) ca_context();
     if (!ctx) return CA_ERROR_OUT_OF_MEMORY;
     ctx->desc = d;

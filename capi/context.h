@@ -10,6 +10,7 @@
 #include <atomic>
 #include <cstdlib>
 #include <new>
+#include <stdexcept>
 #include <string>
 
 struct ca_context {
@@ -110,6 +111,8 @@ ca_status guarded_status(F&& f) noexcept {
     try {
         return static_cast<ca_status>(f().code);
     } catch (const std::bad_alloc&) {
+        return CA_ERROR_OUT_OF_MEMORY;
+    } catch (const std::length_error&) {
         return CA_ERROR_OUT_OF_MEMORY;
     } catch (...) {
         return CA_ERROR_INTERNAL;

@@ -25,7 +25,7 @@ Status read_points(const double* base, size_t count, size_t stride, const char* 
     if (!st.ok()) return st;
     out.resize(count);
     for (size_t i = 0; i < count; ++i) {
-        const double* p = at(base, s, i);
+        const std::array<double, 3> p = read_element<double, 3>(base, s, i);
         out[i] = Vec3(p[0], p[1], p[2]);
     }
     return Status::success();
@@ -38,6 +38,7 @@ Status read_surface(const ca_surface_view* in, bool want_normals, ca::Mesh& raw,
     if (surface.vertex_count > 0 && !surface.positions) return null_pointer("surface->positions");
     if (surface.triangle_count > 0 && !surface.triangles) return null_pointer("surface->triangles");
     if (surface.vertex_count > UINT32_MAX) return ca::fail(Code::invalid_argument, "more than 2^32 - 1 vertices");
+    if (surface.triangle_count > UINT32_MAX) return ca::fail(Code::invalid_argument, "more than 2^32 - 1 triangles");
     st = read_points(surface.positions, surface.vertex_count, surface.position_stride, "surface->position_stride",
                      raw.vertices);
     if (!st.ok()) return st;
@@ -45,10 +46,7 @@ Status read_surface(const ca_surface_view* in, bool want_normals, ca::Mesh& raw,
     st = check_stride(surface.triangle_stride, 3 * sizeof(uint32_t), "surface->triangle_stride", ts);
     if (!st.ok()) return st;
     raw.triangles.resize(surface.triangle_count);
-    for (size_t t = 0; t < surface.triangle_count; ++t) {
-        const uint32_t* f = reinterpret_cast<const uint32_t*>(reinterpret_cast<const char*>(surface.triangles) + t * ts);
-        raw.triangles[t] = {f[0], f[1], f[2]};
-    }
+    for (size_t t = 0; t < surface.triangle_count; ++t) raw.triangles[t] = read_element<uint32_t, 3>(surface.triangles, ts, t);
     if (want_normals && surface.triangle_count == 0 && surface.normals)
         return read_points(surface.normals, surface.vertex_count, surface.normal_stride, "surface->normal_stride", normals);
     return Status::success();

@@ -6,18 +6,25 @@
 
 #include "surface.h"
 
+#include <array>
+#include <cstring>
 #include <vector>
 
 namespace capi {
 
 ca::Status null_pointer(const char* what);
 
-// A byte stride: 0 means packed (min); otherwise at least one element.
+// A byte stride: 0 means packed (min); otherwise at least one element. Any byte count works:
+// elements are read with memcpy (read_element), so a stride need not keep them aligned.
 ca::Status check_stride(size_t stride, size_t min, const char* name, size_t& out);
 
-// The i-th element of a strided array of doubles.
-inline const double* at(const double* base, size_t stride, size_t i) {
-    return reinterpret_cast<const double*>(reinterpret_cast<const char*>(base) + i * stride);
+// The i-th element (N values of T) of a strided array, copied byte-wise: no aligned load of an
+// element a stride left misaligned.
+template <class T, size_t N>
+std::array<T, N> read_element(const T* base, size_t stride, size_t i) {
+    std::array<T, N> v;
+    std::memcpy(v.data(), reinterpret_cast<const char*>(base) + i * stride, sizeof v);
+    return v;
 }
 
 // x y z per item from a strided array (values are not checked).

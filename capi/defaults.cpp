@@ -17,6 +17,7 @@ template <> ca_context_desc defaults<ca_context_desc>() {
     ca_context_desc d = zeroed<ca_context_desc>();
     d.threads = 0;                 // all cores
     d.progress_interval_s = 0;     // every update
+    d.time_limit_s = 0;            // unlimited
     return d;
 }
 

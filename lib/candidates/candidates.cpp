@@ -29,7 +29,7 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
     const int threads = resolve_threads(opt.threads);
 
     auto t0 = Clock::now();
-    if (!monitor.report("sampling", 0)) return cancelled();
+    if (!monitor.report("sampling", 0)) return monitor.stop_status("sampling");
     Status st;
     if (out.surface.point_cloud) {
         out.time_sampling_s = seconds_since(t0);
@@ -55,7 +55,7 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
                                                  : mesh_random_candidates(opt, monitor, structures, built, threads, out);
         structures.wait();
         const MeshDistance* cap_distance = built.cap_distance.get();
-        if (st.ok() && cap_distance && !clamp_to_hole_caps(out, *cap_distance, threads, monitor)) st = cancelled();
+        if (st.ok() && cap_distance && !clamp_to_hole_caps(out, *cap_distance, threads, monitor)) st = monitor.stop_status("hole caps");
         if (st.ok()) {
             out.fallback_balls = add_fallback_balls(out, *built.winding, *built.distance, cap_distance, threads);
             out.winding = std::move(built.winding);

@@ -21,7 +21,6 @@ inline uint64_t stream_seed(uint64_t seed, uint64_t stream) { return seed * 0x9E
 
 constexpr double kDuplicateTolerance = 1e-7;   // internal units (1e-7 of the longest bbox side)
 
-inline Status cancelled() { return fail(Code::cancelled, "cancelled"); }
 
 // The surface structures (winding numbers, distances, hole caps) are built beside the sampling
 // and the Delaunay step; `structures.wait()` gives them.

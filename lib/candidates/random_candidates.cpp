@@ -31,7 +31,7 @@ Status mesh_random_candidates(const CandidateOptions& opt, const Monitor& monito
         if (!parallel_for(batch, threads, 8192, monitor, "inside", [&](size_t b, size_t e) {
                 for (size_t i = b; i < e; ++i) in[i] = winding.inside(pts[i]);
             }))
-            return cancelled();
+            return monitor.stop_status("inside");
         for (size_t i = 0; i < batch && inner.size() < want; ++i)
             if (in[i]) inner.push_back(pts[i]);
     }
@@ -40,7 +40,7 @@ Status mesh_random_candidates(const CandidateOptions& opt, const Monitor& monito
     if (!parallel_for(inner.size(), threads, 4096, monitor, "candidates", [&](size_t b, size_t e) {
             for (size_t i = b; i < e; ++i) out.balls[i] = {inner[i], distance.distance(inner[i])};
         }))
-        return cancelled();
+        return monitor.stop_status("candidates");
     out.balls.erase(std::remove_if(out.balls.begin(), out.balls.end(), [](const Ball& x) { return !(x.radius > 0); }),
                     out.balls.end());
     out.dense_samples = sample_surface(mesh, opt.voronoi_samples, stream_seed(opt.seed, 2));

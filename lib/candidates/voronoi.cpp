@@ -22,10 +22,10 @@ bool in_box(const Vec3& p, const Vec3& lo, const Vec3& hi) {
 
 Status voronoi_vertices(const std::vector<Vec3>& pts, int threads, const Monitor& monitor, const AcceptVertices& accept,
                         std::vector<Ball>& balls, std::vector<Tet>& tets) {
-    if (!monitor.report("delaunay", 0)) return cancelled();
+    if (!monitor.report("delaunay", 0)) return monitor.stop_status("delaunay");
     Status st = delaunay_tetrahedra(pts, tets);
     if (!st.ok()) return st;
-    if (!monitor.report("delaunay", 1)) return cancelled();
+    if (!monitor.report("delaunay", 1)) return monitor.stop_status("delaunay");
     auto [lo, hi] = bounding_box(pts);
     const double margin = 1e-3 * (hi - lo).maxCoeff();
     lo.array() -= margin;
@@ -51,7 +51,7 @@ Status voronoi_vertices(const std::vector<Vec3>& pts, int threads, const Monitor
                     raw[i].radius = std::min(raw[i].radius, std::sqrt(d2));
             }
         }))
-        return cancelled();
+        return monitor.stop_status("delaunay");
     std::vector<Vec3> centers(raw.size());
     for (size_t i = 0; i < raw.size(); ++i) centers[i] = raw[i].center;
     // cospherical sample sets give the same Voronoi vertex several times
@@ -84,7 +84,7 @@ Status mesh_voronoi_candidates(const CandidateOptions& opt, const Monitor& monit
             const bool done = parallel_for(raw.size(), threads, 8192, monitor, "inside", [&](size_t b, size_t e) {
                 for (size_t k = b; k < e; ++k) raw_inner[k] = winding.inside(raw[k].center);
             });
-            if (!done) return cancelled();
+            if (!done) return monitor.stop_status("inside");
             for (size_t k = 0; k < ids.size(); ++k) keep[k] = raw_inner[ids[k]];
             raw_tets_kept = raw_tets;
             return Status::success();

@@ -10,7 +10,6 @@ namespace ca {
 
 namespace {
 
-Status cancelled() { return fail(Code::cancelled, "cancelled"); }
 
 }  // namespace
 
@@ -34,7 +33,7 @@ Status connect_balls(const CandidateSet& set, const Selection& sel, const Connec
     }
     if (!st.ok()) return st;
     canonicalize(out);
-    if (!monitor.report("connect", 0.5)) return cancelled();
+    if (!monitor.report("connect", 0.5)) return monitor.stop_status("connect");
     if ((opt.remove_outside || opt.fill_holes || opt.reconnect) && out.balls.size() > 1) {
         const InsideTest test(set);
         const double h = (sel.delta > 0 ? sel.delta : 0.02) / 4;
@@ -45,20 +44,20 @@ Status connect_balls(const CandidateSet& set, const Selection& sel, const Connec
         const double tol = opt.method == ConnectMethod::medial ? (sel.delta > 0 ? sel.delta : 0.02) : -1;
         std::vector<Tri> failed;   // faces that failed the removal test
         const long raw_b1 = opt.method == ConnectMethod::medial && opt.fill_holes ? topology(out).betti1 : 0;
-        if (opt.remove_outside && !remove_outside(test, h, tol, opt.method == ConnectMethod::medial, threads, monitor, out, failed)) return cancelled();
-        if (!monitor.report("connect", 0.75)) return cancelled();
+        if (opt.remove_outside && !remove_outside(test, h, tol, opt.method == ConnectMethod::medial, threads, monitor, out, failed)) return monitor.stop_status("connect");
+        if (!monitor.report("connect", 0.75)) return monitor.stop_status("connect");
         if (opt.fill_holes) {
             const bool medial = opt.method == ConnectMethod::medial;
             const Skeleton before = medial ? out : Skeleton{};
             // loops of the medial mesh that survived removal (not those that removal added)
             const long target = medial ? std::min(raw_b1, topology(out).betti1) : 0;
-            if (!fill_small_holes(test, h, tol, threads, monitor, failed, out)) return cancelled();
+            if (!fill_small_holes(test, h, tol, threads, monitor, failed, out)) return monitor.stop_status("connect");
             if (medial) keep_loops(before, target, out);
         }
         if (opt.reconnect) reconnect(test, h, tol, out);
         canonicalize(out);
     }
-    if (!monitor.report("connect", 1)) return cancelled();
+    if (!monitor.report("connect", 1)) return monitor.stop_status("connect");
     return Status::success();
 }
 

@@ -22,7 +22,6 @@ namespace ca {
 
 namespace {
 
-Status cancelled() { return fail(Code::cancelled, "cancelled"); }
 
 constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
 
@@ -58,7 +57,7 @@ Status voronoi_diagram(const CandidateSet& set, int threads, const Monitor& moni
             inner[t] = circumcenter(pts[q[0]], pts[q[1]], pts[q[2]], pts[q[3]], c) && winding.inside(c);
         }
     });
-    return done ? Status::success() : cancelled();
+    return done ? Status::success() : monitor.stop_status("connect");
 }
 
 // The medial mesh from the tetrahedra around each sample: per sample u (ascending), the faces and
@@ -172,7 +171,7 @@ namespace detail {
 Status connect_medial(const CandidateSet& set, const Selection& sel, int threads, const Monitor& monitor, Skeleton& out) {
     const size_t k = sel.indices.size();
     if (k < 2) return Status::success();
-    if (!monitor.report("connect", 0)) return cancelled();
+    if (!monitor.report("connect", 0)) return monitor.stop_status("connect");
     std::vector<Vec3> pts;
     std::vector<Tet> tets;
     std::vector<uint8_t> inner;
@@ -180,7 +179,7 @@ Status connect_medial(const CandidateSet& set, const Selection& sel, int threads
     if (!st.ok()) return st;
     const MedialMesh m = build_medial_mesh(pts, tets, inner);
     if (m.vertices.empty()) return fail(Code::geometry_failure, "the inner Voronoi diagram has no vertex");
-    if (!monitor.report("connect", 0.2)) return cancelled();
+    if (!monitor.report("connect", 0.2)) return monitor.stop_status("connect");
 
     // anchors: the medial vertex nearest to each selected ball
     const PointTree tree(m.vertices);
@@ -230,7 +229,7 @@ Status connect_medial(const CandidateSet& set, const Selection& sel, int threads
             }
         }
     }
-    if (!monitor.report("connect", 0.4)) return cancelled();
+    if (!monitor.report("connect", 0.4)) return monitor.stop_status("connect");
     out.edges.insert(out.edges.end(), shared.begin(), shared.end());
     for (const auto& e : m.edges) {
         const uint32_t a = label[e[0]], b = label[e[1]];

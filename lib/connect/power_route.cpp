@@ -21,7 +21,6 @@ namespace detail {
 
 namespace {
 
-Status cancelled() { return fail(Code::cancelled, "cancelled"); }
 
 }  // namespace
 
@@ -47,7 +46,7 @@ Status connect_power(const CandidateSet& set, const Selection& sel, const Monito
         pts.push_back(s + 1e-6 * Vec3(rng.uniform() - 0.5, rng.uniform() - 0.5, rng.uniform() - 0.5));
         weights.push_back(sel.delta * sel.delta);
     }
-    if (!monitor.report("connect", 0)) return cancelled();
+    if (!monitor.report("connect", 0)) return monitor.stop_status("connect");
     std::vector<Tet> cells;
     Status st = regular_triangulation(pts, weights, cells);
     if (!st.ok()) return st;

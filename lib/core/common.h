@@ -1,6 +1,8 @@
 // common.h: the small vocabulary every pipeline step shares: points, meshes, balls, the
 // status a step returns (the core never throws and never prints), and cancellation/progress.
 #pragma once
+#include "timing.h"
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <array>
@@ -42,6 +44,7 @@ enum class Code : int32_t {
     buffer_too_small = 11,
     internal = 12,
     no_candidates = 13,
+    time_limit = 14,        // the call's time budget ran out
 };
 
 struct Status {
@@ -52,18 +55,31 @@ struct Status {
 };
 inline Status fail(Code c, std::string msg) { return Status{c, std::move(msg)}; }
 
-// Progress and cancellation. `report` is called on the caller's thread only; it returns
-// false when the work must stop (the caller's progress callback asked for it, or another
-// thread requested a cancel). Steps check it between chunks of work.
+// Progress, cancellation and the call's time budget. `report` is called on the caller's thread
+// only; it returns false when the work must stop (the caller's progress callback asked for it,
+// another thread requested a cancel, or the deadline passed). Steps check it between chunks of
+// work; loops that run without reporting call `stopped()` every `kCheckEvery` items, which costs
+// an atomic load and a clock read. A step that stopped returns `stop_status(stage)`.
 struct Monitor {
+    static constexpr size_t kCheckEvery = 4096;
     std::function<bool(const char* stage, double fraction)> progress;  // may be empty
     const std::atomic<int>* cancel_flag = nullptr;                        // may be null
+    Deadline deadline;                                                    // the whole call's budget
     bool report(const char* stage, double fraction) const {
-        if (cancel_flag && cancel_flag->load(std::memory_order_relaxed)) return false;
+        if (stopped()) return false;
         if (progress) return progress(stage, fraction);
         return true;
     }
     bool cancelled() const { return cancel_flag && cancel_flag->load(std::memory_order_relaxed); }
+    bool stopped() const { return cancelled() || deadline.expired(); }
+    // True every kCheckEvery-th item i when the work must stop (for loops over many items).
+    bool stopped_at(size_t i) const { return i % kCheckEvery == 0 && stopped(); }
+    // Why a step stopped: the time limit (naming the stage) or a cancel (callback or request).
+    Status stop_status(const char* stage) const {
+        if (!cancelled() && deadline.expired())
+            return fail(Code::time_limit, std::string("time limit reached in ") + stage);
+        return fail(Code::cancelled, std::string(stage) + ": cancelled");
+    }
 };
 
 }  // namespace ca

@@ -45,6 +45,13 @@ public:
         return d;
     }
 
+    // The earlier of this deadline and `other`.
+    Deadline earliest(const Deadline& other) const {
+        if (!other.limited_) return *this;
+        if (!limited_ || other.at_ < at_) return other;
+        return *this;
+    }
+
 private:
     bool limited_ = false;
     Clock::time_point at_ = Clock::time_point::max();

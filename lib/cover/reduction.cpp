@@ -581,7 +581,7 @@ Status reduce_fixpoint(Reducer& red, const Monitor& monitor) {
     // removes most columns, which makes every later phase cheap.
     bool need_balls = true, need_samples = true;
     for (;;) {
-        if (monitor.cancelled()) return fail(Code::cancelled, "set cover: cancelled");
+        if (monitor.stopped()) return monitor.stop_status("reduction");
         if (red.force_degree_one()) {
             red.update();
             need_balls = need_samples = true;

@@ -225,7 +225,12 @@ Status select_balls(const CandidateSet& set, const SelectOptions& opt, const Mon
             out.scale = dil == Dilation::scale ? value : 0;
             out.time_total_s = seconds_since(t0);
         };
-        if (!monitor.report("selection", 0)) return fail(Code::cancelled, "cancelled");
+        // Once a cover is solved, a budget that ran out meanwhile leaves it the result (the
+        // solver stopped early with its best cover); only a cancel discards it.
+        auto solved_report = [&] {
+            return monitor.deadline.expired() ? !monitor.cancelled() : monitor.report("selection", 1);
+        };
+        if (!monitor.report("selection", 0)) return monitor.stop_status("selection");
 
         if (opt.target_count == 0) {
             const double value = dil == Dilation::offset ? opt.delta : opt.scale;
@@ -234,11 +239,11 @@ Status select_balls(const CandidateSet& set, const SelectOptions& opt, const Mon
             Status st = build_coverage(set.cover_samples, centers, dilated, monitor, cov, opt.threads);
             if (!st.ok()) return st;
             out.time_coverage_s = seconds_since(t0);
-            if (monitor.cancelled()) return fail(Code::cancelled, "cancelled");
+            if (monitor.cancelled()) return monitor.stop_status("selection");
             st = solve_coverage(cov, set, opt, cover, monitor, out.cover, out.parts);
             if (!st.ok()) return st;
             out.probes = 1;
-            if (!monitor.report("selection", 1)) return fail(Code::cancelled, "cancelled");
+            if (!solved_report()) return monitor.stop_status("selection");
             finish(value, dilated);
             return Status::success();
         }
@@ -257,7 +262,7 @@ Status select_balls(const CandidateSet& set, const SelectOptions& opt, const Mon
         double best_value = -1;
         std::vector<double> best_radii;
         auto probe = [&](double value, bool rebuild, bool& fits) -> Status {
-            if (monitor.cancelled()) return fail(Code::cancelled, "cancelled");
+            if (monitor.stopped()) return monitor.stop_status("selection");
             make_radii(value);
             const auto tc = Clock::now();
             Coverage cov;
@@ -315,7 +320,7 @@ Status select_balls(const CandidateSet& set, const SelectOptions& opt, const Mon
         out.cover = std::move(best);
         out.parts = best_parts;
         out.time_coverage_s = t_cov;
-        if (!monitor.report("selection", 1)) return fail(Code::cancelled, "cancelled");
+        if (!solved_report()) return monitor.stop_status("selection");
         finish(best_value, best_radii);
         return Status::success();
     } catch (const std::bad_alloc&) {

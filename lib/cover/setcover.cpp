@@ -423,7 +423,7 @@ Status solve_impl(const Coverage& cov, const CoverOptions& opt, bool skip_uncove
     result.uncovered = pr.uncovered;
     result.rows_before = pr.rows_before;
     result.cols_before = pr.cols_before;
-    if (monitor.cancelled()) return fail(Code::cancelled, "set cover: cancelled");
+    if (monitor.stopped()) return monitor.stop_status("reduction");
 
     std::vector<uint32_t> forced;
     Problem P;
@@ -433,7 +433,7 @@ Status solve_impl(const Coverage& cov, const CoverOptions& opt, bool skip_uncove
     result.cols_after = P.C;
     result.forced = forced.size();
     result.time_reduce_s = seconds_since(t0);
-    if (monitor.cancelled()) return fail(Code::cancelled, "set cover: cancelled");
+    if (monitor.stopped()) return monitor.stop_status("reduction");
 
     // Kernel solve.
     const auto t1 = Clock::now();
@@ -445,7 +445,9 @@ Status solve_impl(const Coverage& cov, const CoverOptions& opt, bool skip_uncove
         remove_redundant(P.cptr, P.crow, P.R, nullptr, nullptr, ksel);
     } else {
         if (opt.solver == Solver::exact) {
-            const Deadline deadline = Deadline::after(opt.time_limit_s, t0);
+            // The solver's own limit or the call's budget, whichever ends first: either way
+            // the best cover found so far is the result, not proven.
+            const Deadline deadline = Deadline::after(opt.time_limit_s, t0).earliest(monitor.deadline);
             proven = true;
             klb = 0;
             for (const Problem& Q : split_components(P)) {

@@ -62,7 +62,7 @@ Status evaluate_impl(const Mesh& surface, const Skeleton& skeleton_in, const Eva
     const double tol = 1e-9 * diag;
     const auto& balls = sk.balls;
     const int threads = resolve_threads(opt.threads);
-    auto cancelled = [] { return fail(Code::cancelled, "evaluate: cancelled"); };
+    auto cancelled = [&] { return monitor.stop_status("evaluate"); };
     if (!monitor.report("evaluate", 0.0)) return cancelled();
 
     // ---- primitives of F: every face as a slab, every edge in no face as a cone, every ball

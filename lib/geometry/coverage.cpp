@@ -87,7 +87,7 @@ Status build_coverage(const std::vector<Vec3>& samples, const std::vector<Vec3>&
                     for (size_t i = rg.begin; i < rg.end; ++i) cov.ball_ptr[i + 1] = (at += rg.sizes[i - rg.begin]);
                 }
                 if (!monitor.report("coverage", double(stop) / double(cov.n_balls)))
-                    return fail(Code::cancelled, "build_coverage: cancelled");
+                    return monitor.stop_status("coverage");
             }
         }
         // The ball lists are in k-d tree order: the sample lists built from them come out
@@ -100,7 +100,7 @@ Status build_coverage(const std::vector<Vec3>& samples, const std::vector<Vec3>&
                 for (uint32_t k = cov.sample_ptr[j]; k < cov.sample_ptr[j + 1]; ++k)
                     cov.ball_samples[next[cov.sample_balls[k]]++] = uint32_t(j);
         }
-        if (!monitor.report("coverage", 1.0)) return fail(Code::cancelled, "build_coverage: cancelled");
+        if (!monitor.report("coverage", 1.0)) return monitor.stop_status("coverage");
         out = std::move(cov);
     } catch (const std::bad_alloc&) {
         return fail(Code::out_of_memory, "build_coverage: out of memory");

@@ -16,16 +16,21 @@ std::pair<Vec3, Vec3> bounding_box(const std::vector<Vec3>& pts) {
     return {lo, hi};
 }
 
-static bool all_in_one_plane(const std::vector<Vec3>& pts, double longest) {
+// On coordinates normalised to the bounding box (origin lo, longest side 1), so boxes near the
+// ends of the double range (1e300, 1e-300) neither overflow nor underflow the covariance.
+static bool all_in_one_plane(const std::vector<Vec3>& pts, const Vec3& lo, double longest) {
     Vec3 mean = Vec3::Zero();
-    for (const Vec3& p : pts) mean += p;
+    for (const Vec3& p : pts) mean += (p - lo) / longest;
     mean /= double(pts.size());
     Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-    for (const Vec3& p : pts) cov += (p - mean) * (p - mean).transpose();
+    for (const Vec3& p : pts) {
+        const Vec3 q = (p - lo) / longest - mean;
+        cov += q * q.transpose();
+    }
     cov /= double(pts.size());
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
     // smallest standard deviation relative to the size of the model
-    return std::sqrt(std::max(0.0, es.eigenvalues()[0])) <= 1e-9 * longest;
+    return std::sqrt(std::max(0.0, es.eigenvalues()[0])) <= 1e-9;
 }
 
 Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool require_normals) {
@@ -78,7 +83,7 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
     if (!(longest > 0)) return fail(Code::degenerate_input, "all input points coincide");
     if (!std::isfinite(longest))
         return fail(Code::invalid_input, "the input's bounding box is too large to represent");
-    if (all_in_one_plane(used, longest))
+    if (all_in_one_plane(used, lo, longest))
         return fail(Code::degenerate_input, "all input points lie in one plane: a medial skeleton needs a solid");
 
     out.norm.origin = lo;

@@ -32,6 +32,7 @@ int main(void) {
     FIELD(ca_context_desc, progress_user);
     FIELD(ca_context_desc, threads);
     FIELD(ca_context_desc, progress_interval_s);
+    FIELD(ca_context_desc, time_limit_s);
     STRUCT(ca_surface_view);
     FIELD(ca_surface_view, struct_size);
     FIELD(ca_surface_view, positions);

@@ -235,3 +235,34 @@ TEST_CASE("winding: far field, degenerate triangles, empty mesh, move") {
     moved = WindingNumber(empty);
     CHECK(moved(Vec3(0.5, 0.5, 0.5)) == 0.0);
 }
+
+TEST_CASE("winding: open meshes decide inside at w > 1/2, also where w lies in (0.3, 0.5)") {
+    // A cube without its top face and the lower half of a sphere: above the hole the winding
+    // number falls through (0.3, 0.5) and (0.5, 0.7), so a threshold other than 1/2 shows.
+    Mesh cube = unit_cube();
+    std::vector<Tri> sides;
+    for (const Tri& f : cube.triangles)
+        if (cube.vertices[f[0]].z() + cube.vertices[f[1]].z() + cube.vertices[f[2]].z() < 3) sides.push_back(f);
+    cube.triangles = sides;
+    REQUIRE(cube.triangles.size() == 10);
+    Mesh bowl = icosphere(3, Vec3(0, 0, 0), 1.0);
+    std::vector<Tri> lower;
+    for (const Tri& f : bowl.triangles)
+        if ((bowl.vertices[f[0]] + bowl.vertices[f[1]] + bowl.vertices[f[2]]).z() < 0) lower.push_back(f);
+    bowl.triangles = lower;
+    struct Case { const Mesh* mesh; Vec3 axis_point; };
+    for (const Case& c : {Case{&cube, Vec3(0.5, 0.5, 0)}, Case{&bowl, Vec3(0, 0, 0)}}) {
+        const WindingNumber w(*c.mesh);
+        int low = 0, high = 0;
+        for (int i = 0; i <= 200; ++i) {
+            // along the axis through the hole, from inside to above it, and slightly off-axis
+            const Vec3 q = c.axis_point + Vec3(0.05, -0.03, -0.4 + 2.0 * i / 200.0);
+            const double exact = winding_number_brute_force(*c.mesh, q);
+            CHECK(w.inside(q) == (exact > 0.5));
+            low += exact > 0.3 && exact < 0.49;
+            high += exact > 0.51 && exact < 0.7;
+        }
+        CHECK(low >= 3);
+        CHECK(high >= 3);
+    }
+}
