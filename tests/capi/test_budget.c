@@ -191,7 +191,7 @@ static void test_counts_and_strides(void) {
     ca_evaluation e;
     const double center[] = {1, 0.5, 0.5}, radius[] = {0.5};
     const uint32_t edge[] = {0, 0};
-    unsigned char* buf;
+    unsigned char *buf, *tbuf;
     size_t i;
     const size_t odd = 3 * sizeof(double) + 1, odd_tri = 3 * sizeof(uint32_t) + 3;
 
@@ -221,12 +221,13 @@ static void test_counts_and_strides(void) {
     sk.vertex_count = SIZE_MAX;
     CHECK(ca_evaluate(ctx, &v, &sk, NULL, &e) == CA_ERROR_INVALID_ARGUMENT);
 
-    /* Strides that are no multiple of the alignment: the box at odd byte offsets gives the same
-       candidates as the packed box. */
-    buf = (unsigned char*)malloc(8 * odd + 12 * odd_tri + 1);
-    for (i = 0; i < 8; ++i) memcpy(buf + 1 + i * odd, box_v + 3 * i, 3 * sizeof(double));
+    /* Strides that are no multiple of the alignment (the arrays start aligned, as C requires;
+       every later element is misaligned): the same candidates as the packed box. */
+    buf = (unsigned char*)malloc(8 * odd);
+    tbuf = (unsigned char*)malloc(12 * odd_tri);
+    for (i = 0; i < 8; ++i) memcpy(buf + i * odd, box_v + 3 * i, 3 * sizeof(double));
     v = box_view();
-    v.positions = (const double*)(const void*)(buf + 1);
+    v.positions = (const double*)(const void*)buf;
     v.position_stride = odd;
     CHECK(ca_candidates(ctx, &v, &o, &set) == CA_OK && set != NULL);
     v = box_view();
@@ -234,14 +235,15 @@ static void test_counts_and_strides(void) {
     CHECK(ca_candidate_set_count(set) == ca_candidate_set_count(packed));
     ca_candidate_set_destroy(set);
     set = NULL;
-    for (i = 0; i < 12; ++i) memcpy(buf + 2 + i * odd_tri, box_f + 3 * i, 3 * sizeof(uint32_t));
-    v.triangles = (const uint32_t*)(const void*)(buf + 2);
+    for (i = 0; i < 12; ++i) memcpy(tbuf + i * odd_tri, box_f + 3 * i, 3 * sizeof(uint32_t));
+    v.triangles = (const uint32_t*)(const void*)tbuf;
     v.triangle_stride = odd_tri;
     CHECK(ca_candidates(ctx, &v, &o, &set) == CA_OK && set != NULL);
     CHECK(ca_candidate_set_count(set) == ca_candidate_set_count(packed));
     ca_candidate_set_destroy(set);
     set = NULL;
     free(buf);
+    free(tbuf);
 
     /* The box scaled by 1e300 and by 1e-300 is a box: same candidates, reference length scaled. */
     {
