@@ -15,7 +15,7 @@ namespace CoverageAxis
     {
         Ok = 0, InvalidArgument = 1, NullPointer = 2, StructSize = 3, InvalidInput = 4,
         DegenerateInput = 5, Uncoverable = 6, Geometry = 7, Solver = 8, Cancelled = 9,
-        OutOfMemory = 10, BufferTooSmall = 11, Internal = 12, NoCandidates = 13,
+        OutOfMemory = 10, BufferTooSmall = 11, Internal = 12, NoCandidates = 13, TimeLimit = 14,
     }
 
     public enum Generator { Voronoi = 0, Random = 1 }
@@ -43,6 +43,7 @@ namespace CoverageAxis
             public IntPtr alloc, free, alloc_user, log, log_user, progress, progress_user;
             public int threads;
             public double progress_interval_s; // ABI 2
+            public double time_limit_s; // ABI 2, appended after progress_interval_s
         }
 
         [StructLayout(LayoutKind.Sequential)]

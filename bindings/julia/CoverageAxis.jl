@@ -29,6 +29,7 @@ struct ContextDesc
     progress_user::Ptr{Cvoid}
     threads::Int32
     progress_interval_s::Float64  # ABI 2
+    time_limit_s::Float64  # ABI 2, appended after progress_interval_s
 end
 
 struct SurfaceView

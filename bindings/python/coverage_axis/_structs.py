@@ -10,7 +10,7 @@ from ctypes import Structure, c_double, c_int32, c_int64, c_size_t, c_uint32, c_
 class _ContextDesc(Structure):
     _fields_ = [("struct_size", c_uint32), ("alloc", c_void_p), ("free", c_void_p), ("alloc_user", c_void_p),
                 ("log", c_void_p), ("log_user", c_void_p), ("progress", c_void_p), ("progress_user", c_void_p),
-                ("threads", c_int32), ("progress_interval_s", c_double)]
+                ("threads", c_int32), ("progress_interval_s", c_double), ("time_limit_s", c_double)]
 
 
 class _SurfaceView(Structure):

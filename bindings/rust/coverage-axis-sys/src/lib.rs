@@ -25,6 +25,7 @@ pub const CA_ERROR_OUT_OF_MEMORY: ca_status = 10;
 pub const CA_ERROR_BUFFER_TOO_SMALL: ca_status = 11;
 pub const CA_ERROR_INTERNAL: ca_status = 12;
 pub const CA_ERROR_NO_CANDIDATES: ca_status = 13;
+pub const CA_ERROR_TIME_LIMIT: ca_status = 14;
 
 pub const CA_CANDIDATES_VORONOI: i32 = 0;
 pub const CA_CANDIDATES_RANDOM: i32 = 1;
@@ -112,6 +113,8 @@ ca_struct!(ca_context_desc {
     threads: i32,
     /// ABI 2
     progress_interval_s: f64,
+    /// ABI 2, appended after progress_interval_s
+    time_limit_s: f64,
 });
 
 ca_struct!(ca_surface_view {
