@@ -1,0 +1,195 @@
+// point_winding.cpp: the point-cloud winding number (point_winding.h). Every point is a dipole of
+// moment a_i n_i at p_i. The tree is the mesh BVH (bvh.h) built over degenerate triangles (i, i, i),
+// so the points are grouped exactly as triangles are; every node stores N = sum a_i n_i,
+// M = sum a_i n_i d_i^T and Q[k] = sum a_i n_i,k d_i d_i^T (d_i = p_i - centre, centre = the
+// area-weighted mean) and is used when the
+// query is farther than beta * radius from its centre; leaves are summed exactly.
+#include "point_winding.h"
+#include "bvh.h"
+#include "kdtree.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ca {
+namespace {
+
+constexpr double kFourPi = 4.0 * 3.14159265358979323846;
+
+// One dipole's field at q (not yet divided by 4 pi).
+double dipole(const Vec3& q, const Vec3& p, const Vec3& moment) {
+    const Vec3 r = p - q;
+    const double r2 = r.squaredNorm();
+    if (!(r2 > 0)) return 0.0;
+    return moment.dot(r) / (r2 * std::sqrt(r2));
+}
+
+struct Expansion {
+    Vec3 centre = Vec3::Zero();
+    double radius = 0;
+    Vec3 N = Vec3::Zero();
+    Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
+    Eigen::Matrix3d Q[3] = {Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
+    // K(r).N + J(r):M + 1/2 H(r):Q with K(r) = r / |r|^3, r = centre - q (the terms of the mesh
+    // expansion in winding.cpp, with point dipoles: S_i = d_i d_i^T).
+    double eval(const Vec3& q) const {
+        const Vec3 r = centre - q;
+        const double r2 = r.squaredNorm();
+        const double inv = 1.0 / std::sqrt(r2), inv3 = inv * inv * inv, inv5 = inv3 * inv * inv;
+        const double inv7 = inv5 * inv * inv;
+        double rrrQ = 0, diagQ = 0, trQ = 0;
+        for (int i = 0; i < 3; ++i) {
+            const Vec3 Qr = Q[i] * r;
+            rrrQ += r[i] * r.dot(Qr);
+            diagQ += Qr[i];
+            trQ += r[i] * Q[i].trace();
+        }
+        return N.dot(r) * inv3 + M.trace() * inv3 - 3.0 * r.dot(M * r) * inv5 +
+               0.5 * (15.0 * rrrQ * inv7 - 3.0 * (2.0 * diagQ + trQ) * inv5);
+    }
+};
+
+// Area of the convex polygon `poly` (2-D, counter-clockwise or not).
+double polygon_area(const std::vector<Eigen::Vector2d>& poly) {
+    double a = 0;
+    for (size_t i = 0; i < poly.size(); ++i) {
+        const Eigen::Vector2d& u = poly[i];
+        const Eigen::Vector2d& v = poly[(i + 1) % poly.size()];
+        a += u.x() * v.y() - u.y() * v.x();
+    }
+    return 0.5 * std::abs(a);
+}
+
+// Keeps the part of `poly` with x.dir <= offset.
+void clip(std::vector<Eigen::Vector2d>& poly, const Eigen::Vector2d& dir, double offset) {
+    std::vector<Eigen::Vector2d> out;
+    for (size_t i = 0; i < poly.size(); ++i) {
+        const Eigen::Vector2d& u = poly[i];
+        const Eigen::Vector2d& v = poly[(i + 1) % poly.size()];
+        const double su = u.dot(dir) - offset, sv = v.dot(dir) - offset;
+        if (su <= 0) out.push_back(u);
+        if ((su < 0) != (sv < 0) && su != sv) out.push_back(u + (v - u) * (su / (su - sv)));
+    }
+    poly.swap(out);
+}
+
+}  // namespace
+
+std::vector<double> tangent_voronoi_areas(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, size_t k) {
+    std::vector<double> areas(pts.size(), 0.0);
+    if (pts.size() < 2) return areas;
+    PointTree tree(pts);
+    const size_t want = std::min(k + 1, pts.size());
+    std::vector<size_t> idx(want);
+    std::vector<double> d2(want);
+    for (size_t i = 0; i < pts.size(); ++i) {
+        const size_t found = tree.nearest(pts[i], want, idx.data(), d2.data());
+        const Vec3& n = normals[i];
+        // tangent frame
+        Vec3 u = n.unitOrthogonal(), v = n.cross(u);
+        double half = 0;
+        for (size_t j = 0; j < found; ++j) half = std::max(half, std::sqrt(d2[j]));
+        if (!(half > 0)) continue;
+        std::vector<Eigen::Vector2d> poly = {{-half, -half}, {half, -half}, {half, half}, {-half, half}};
+        for (size_t j = 0; j < found && !poly.empty(); ++j) {
+            if (idx[j] == i) continue;
+            const Vec3 d = pts[idx[j]] - pts[i];
+            const Eigen::Vector2d e(d.dot(u), d.dot(v));
+            const double len2 = e.squaredNorm();
+            if (!(len2 > 1e-24)) continue;   // a duplicate (or a neighbour straight above): no bisector
+            clip(poly, e, 0.5 * len2);       // x.e <= |e|^2 / 2: the side of the bisector nearer to point i
+        }
+        areas[i] = poly.size() >= 3 ? polygon_area(poly) : 0.0;
+    }
+    return areas;
+}
+
+struct PointCloudWinding::Impl {
+    double beta = 2.0;
+    detail::Bvh bvh;
+    std::vector<Expansion> exp;     // one per BVH node
+    std::vector<Vec3> pos, moment;  // points and a_i n_i, in bvh.order
+    std::vector<double> areas;      // per input point
+};
+
+PointCloudWinding::PointCloudWinding(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, double beta)
+    : impl_(std::make_unique<Impl>()) {
+    Impl& m = *impl_;
+    m.beta = (beta >= 0 && std::isfinite(beta)) ? beta : 2.0;
+    if (pts.empty() || normals.size() != pts.size()) return;
+    m.areas = tangent_voronoi_areas(pts, normals);
+    Mesh dots;
+    dots.vertices = pts;
+    std::vector<uint32_t> ids(pts.size());
+    for (uint32_t i = 0; i < pts.size(); ++i) {
+        dots.triangles.push_back({i, i, i});
+        ids[i] = i;
+    }
+    m.bvh = detail::build_bvh(dots, std::move(ids));
+    for (uint32_t i : m.bvh.order) {
+        m.pos.push_back(pts[i]);
+        m.moment.push_back(m.areas[i] * normals[i]);
+    }
+    m.exp.resize(m.bvh.nodes.size());
+    for (size_t n = 0; n < m.bvh.nodes.size(); ++n) {
+        const detail::BvhNode& node = m.bvh.nodes[n];
+        Expansion& e = m.exp[n];
+        double wsum = 0;
+        Vec3 csum = Vec3::Zero();
+        for (uint32_t i = node.begin; i < node.end; ++i) {
+            const double a = m.moment[i].norm();
+            wsum += a;
+            csum += a * m.pos[i];
+        }
+        e.centre = wsum > 0 ? Vec3(csum / wsum) : Vec3(0.5 * (node.lo + node.hi));
+        for (uint32_t i = node.begin; i < node.end; ++i) {
+            const Vec3 d = m.pos[i] - e.centre;
+            e.N += m.moment[i];
+            e.M += m.moment[i] * d.transpose();
+            const Eigen::Matrix3d S = d * d.transpose();
+            for (int k = 0; k < 3; ++k) e.Q[k] += m.moment[i][k] * S;
+            e.radius = std::max(e.radius, d.norm());
+        }
+    }
+}
+
+PointCloudWinding::~PointCloudWinding() = default;
+PointCloudWinding::PointCloudWinding(PointCloudWinding&&) noexcept = default;
+PointCloudWinding& PointCloudWinding::operator=(PointCloudWinding&&) noexcept = default;
+
+const std::vector<double>& PointCloudWinding::areas() const { return impl_->areas; }
+
+double PointCloudWinding::operator()(const Vec3& q) const {
+    if (!impl_ || impl_->bvh.nodes.empty()) return 0.0;
+    const Impl& m = *impl_;
+    double omega = 0;
+    uint32_t stack[128];   // median-split tree: depth + 1 entries at most
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const uint32_t n = stack[--top];
+        const Expansion& e = m.exp[n];
+        if ((q - e.centre).squaredNorm() > m.beta * m.beta * e.radius * e.radius) {
+            omega += e.eval(q);
+            continue;
+        }
+        const detail::BvhNode& node = m.bvh.nodes[n];
+        if (node.leaf()) {
+            for (uint32_t i = node.begin; i < node.end; ++i) omega += dipole(q, m.pos[i], m.moment[i]);
+        } else {
+            stack[top++] = node.left;
+            stack[top++] = node.right;
+        }
+    }
+    return omega / kFourPi;
+}
+
+double point_winding_brute_force(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals,
+                                 const std::vector<double>& areas, const Vec3& q) {
+    double omega = 0;
+    for (size_t i = 0; i < pts.size() && i < normals.size() && i < areas.size(); ++i)
+        omega += dipole(q, pts[i], areas[i] * normals[i]);
+    return omega / kFourPi;
+}
+
+}  // namespace ca
