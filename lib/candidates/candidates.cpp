@@ -24,8 +24,6 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
         return fail(Code::invalid_argument, "voronoi_samples must be at least 5");
     if (opt.generator == Generator::random && opt.random_candidates == 0)
         return fail(Code::invalid_argument, "random_candidates must be at least 1");
-    if (out.surface.point_cloud && opt.generator != Generator::voronoi)
-        return fail(Code::invalid_argument, "point clouds support the Voronoi candidate generator only");
     const int threads = resolve_threads(opt.threads);
 
     auto t0 = Clock::now();

@@ -31,6 +31,7 @@ struct CandidateOptions {
 // Everything later steps need, in internal (unit-cube) units.
 class WindingNumber;
 class MeshDistance;
+class PointCloudWinding;
 
 struct CandidateSet {
     Surface surface;                      // empty mesh when built from caller arrays
@@ -47,6 +48,9 @@ struct CandidateSet {
     // surface.mesh afterwards must reset them.
     std::shared_ptr<const WindingNumber> winding;
     std::shared_ptr<const MeshDistance> distance;
+    // Point clouds: the winding number of the (de-duplicated, oriented) points, the inside test
+    // of the candidates, the fallback balls and the connection step.
+    std::shared_ptr<const PointCloudWinding> cloud_winding;
     std::vector<Ball> balls;              // P, undilated medial radii
     size_t fallback_balls = 0;            // of which added by add_fallback_balls (at the end)
     size_t hole_clamped = 0;              // radii clamped by clamp_to_hole_caps (open meshes)
@@ -63,6 +67,12 @@ constexpr double kFallbackReach = 0.005;   // unit-cube units (0.5 % of the long
 // `threads`: for the coverage queries (0 = all cores).
 size_t add_fallback_balls(CandidateSet& set, const WindingNumber& winding, const MeshDistance& distance,
                           const MeshDistance* caps = nullptr, int threads = 0);
+
+// Point clouds: the same balls, grown along the cover samples' unit outward normals
+// (`normals[j]` for cover_samples[j]), inside by the cloud's winding number, radius = distance
+// to the nearest point of dense_samples.
+size_t add_cloud_fallback_balls(CandidateSet& set, const PointCloudWinding& winding, const std::vector<Vec3>& normals,
+                                int threads = 0);
 
 // Open meshes (hole_caps.cpp): every closed boundary loop is capped by a fan from its
 // centroid (for distances only) and every candidate's radius is clamped to its distance to the

@@ -43,7 +43,7 @@ Status mesh_voronoi_candidates(const CandidateOptions& opt, const Monitor& monit
 // random_candidates.cpp: random inner points of the bounding box, with their distances to the surface.
 Status mesh_random_candidates(const CandidateOptions& opt, const Monitor& monitor, Beside& structures,
                               const SurfaceStructures& built, int threads, CandidateSet& out);
-// point_cloud.cpp: inner Voronoi vertices of an oriented point cloud, isolated ones dropped.
+// point_cloud.cpp: the candidates (Voronoi or random) and fallback balls of an oriented point cloud.
 Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monitor, int threads, CandidateSet& out);
 
 }  // namespace cand

@@ -2,21 +2,84 @@
 // sharp ears) can have no inner Voronoi vertex near them, so no dilated candidate reaches some
 // samples and the set cover is infeasible. Under each sample that no candidate reaches within
 // kFallbackReach (in unit-cube units) this adds an inner ball touching the surface at that sample:
-// its centre moves inward along the normal of the nearest triangle, doubling the depth t while
-// the exact distance to the mesh stays within kFallbackReach / 2 of t (the ball still touches the
-// surface at the sample and nowhere nearer), so the ball grows towards the medial axis (like the
-// shrinking-ball construction of the medial axis). Its dilated radius reaches the sample for every
-// offset delta >= kFallbackReach / 2, so a cover exists for every delta >= kFallbackReach. The
-// optimiser uses such balls only where nothing else covers the sample. Samples where no point below the surface is inside (open
-// sheets, non-orientable strips) get no ball and are still reported as uncoverable. On an open
-// mesh the radius is also the distance to the hole caps (hole_caps.cpp).
+// its centre moves inward along the normal (of the nearest triangle on a mesh, of the sample on a
+// point cloud), doubling the depth t while the distance to the surface stays within
+// kFallbackReach / 2 of t (the ball still touches the surface at the sample and nowhere nearer),
+// so the ball grows towards the medial axis (like the shrinking-ball construction of the medial
+// axis). Its dilated radius reaches the sample for every offset delta >= kFallbackReach / 2, so a
+// cover exists for every delta >= kFallbackReach. The optimiser uses such balls only where nothing
+// else covers the sample. Samples where no point below the surface is inside (open sheets, open
+// scans, non-orientable strips) get no ball and are still reported as uncoverable. On an open
+// mesh the radius is also the distance to the hole caps (hole_caps.cpp); on a point cloud it is
+// the distance to the nearest cloud point, and inside means point-cloud winding number > 1/2.
 #include "candidates.h"
 
 #include "coverage.h"
 #include "distance.h"
+#include "kdtree.h"
+#include "point_winding.h"
 #include "winding.h"
 
+#include <functional>
+
 namespace ca {
+namespace {
+
+// The samples no candidate reaches within kFallbackReach.
+std::vector<size_t> unreached_samples(const CandidateSet& set, int threads) {
+    std::vector<Vec3> centers(set.balls.size());
+    std::vector<double> reach(set.balls.size());
+    for (size_t i = 0; i < set.balls.size(); ++i) {
+        centers[i] = set.balls[i].center;
+        reach[i] = set.balls[i].radius + kFallbackReach;
+    }
+    Coverage cov;
+    if (!build_coverage(set.cover_samples, centers, reach, Monitor{}, cov, threads).ok()) return {};
+    if (cov.sample_ptr.size() != set.cover_samples.size() + 1) cov.build_transpose();
+    std::vector<size_t> out;
+    for (size_t j = 0; j < set.cover_samples.size(); ++j)
+        if (cov.sample_ptr[j + 1] == cov.sample_ptr[j]) out.push_back(j);
+    return out;
+}
+
+// The ball under sample s (unit inward direction -n): false if no point below s is inside.
+bool grow_ball(const Vec3& s, const Vec3& n, const std::function<bool(const Vec3&)>& inside,
+               const std::function<double(const Vec3&)>& radius_at, Ball& best) {
+    // first depth inside the shape: half the reach, smaller for thinner parts
+    best = {s, -1};
+    double depth = 0.5 * kFallbackReach;
+    for (; depth > 1e-4 * kFallbackReach; depth *= 0.25) {
+        const Vec3 c = s - depth * n;
+        if (!inside(c)) continue;
+        best = {c, radius_at(c)};
+        break;
+    }
+    if (!(best.radius > 0)) return false;
+    // grow towards the medial axis while the ball still touches the surface at s only:
+    // double the depth, then bisect between the last good and the first bad depth
+    auto touches_at_s = [&](double t, Ball& ball) {
+        const Vec3 c = s - t * n;
+        if (!inside(c)) return false;
+        const double r = radius_at(c);
+        if (t - r > 0.5 * kFallbackReach) return false;
+        ball = {c, r};
+        return true;
+    };
+    double good = depth, bad = 0;
+    for (double t = 2 * depth; t < 1.0; t *= 2) {
+        if (!touches_at_s(t, best)) { bad = t; break; }
+        good = t;
+    }
+    for (int step = 0; step < 6 && bad > 0; ++step) {
+        const double mid = 0.5 * (good + bad);
+        if (touches_at_s(mid, best)) good = mid;
+        else bad = mid;
+    }
+    touches_at_s(good, best);
+    return true;
+}
+
+}  // namespace
 
 size_t add_fallback_balls(CandidateSet& set, const WindingNumber& winding, const MeshDistance& distance,
                           const MeshDistance* caps, int threads) {
@@ -26,20 +89,11 @@ size_t add_fallback_balls(CandidateSet& set, const WindingNumber& winding, const
         const double r = distance.distance(c);
         return caps ? caps->distance_below(c, r) : r;
     };
+    auto inside = [&](const Vec3& c) { return winding.inside(c); };
     const Mesh& mesh = set.surface.mesh;
     if (mesh.triangles.empty() || set.cover_samples.empty()) return 0;
-    std::vector<Vec3> centers(set.balls.size());
-    std::vector<double> reach(set.balls.size());
-    for (size_t i = 0; i < set.balls.size(); ++i) {
-        centers[i] = set.balls[i].center;
-        reach[i] = set.balls[i].radius + kFallbackReach;
-    }
-    Coverage cov;
-    if (!build_coverage(set.cover_samples, centers, reach, Monitor{}, cov, threads).ok()) return 0;
-    if (cov.sample_ptr.size() != set.cover_samples.size() + 1) cov.build_transpose();
     size_t added = 0;
-    for (size_t j = 0; j < set.cover_samples.size(); ++j) {
-        if (cov.sample_ptr[j + 1] > cov.sample_ptr[j]) continue;  // some candidate reaches it
+    for (size_t j : unreached_samples(set, threads)) {
         const Vec3& s = set.cover_samples[j];
         Vec3 closest;
         uint32_t tri = 0;
@@ -48,37 +102,24 @@ size_t add_fallback_balls(CandidateSet& set, const WindingNumber& winding, const
         Vec3 n = (mesh.vertices[f[1]] - mesh.vertices[f[0]]).cross(mesh.vertices[f[2]] - mesh.vertices[f[0]]);
         if (!(n.norm() > 0)) continue;
         n.normalize();
-        // first depth inside the shape: half the reach, smaller for thinner parts
-        Ball best{s, -1};
-        double depth = 0.5 * kFallbackReach;
-        for (; depth > 1e-4 * kFallbackReach; depth *= 0.25) {
-            const Vec3 c = s - depth * n;
-            if (!winding.inside(c)) continue;
-            best = {c, radius_at(c)};
-            break;
-        }
-        if (!(best.radius > 0)) continue;
-        // grow towards the medial axis while the ball still touches the surface at s only:
-        // double the depth, then bisect between the last good and the first bad depth
-        auto touches_at_s = [&](double t, Ball& ball) {
-            const Vec3 c = s - t * n;
-            if (!winding.inside(c)) return false;
-            const double r = radius_at(c);
-            if (t - r > 0.5 * kFallbackReach) return false;
-            ball = {c, r};
-            return true;
-        };
-        double good = depth, bad = 0;
-        for (double t = 2 * depth; t < 1.0; t *= 2) {
-            if (!touches_at_s(t, best)) { bad = t; break; }
-            good = t;
-        }
-        for (int step = 0; step < 6 && bad > 0; ++step) {
-            const double mid = 0.5 * (good + bad);
-            if (touches_at_s(mid, best)) good = mid;
-            else bad = mid;
-        }
-        touches_at_s(good, best);
+        Ball best;
+        if (!grow_ball(s, n, inside, radius_at, best)) continue;
+        set.balls.push_back(best);
+        ++added;
+    }
+    return added;
+}
+
+size_t add_cloud_fallback_balls(CandidateSet& set, const PointCloudWinding& winding, const std::vector<Vec3>& normals,
+                                int threads) {
+    if (set.cover_samples.empty() || set.dense_samples.empty() || normals.size() != set.cover_samples.size()) return 0;
+    const PointTree tree(set.dense_samples);
+    auto radius_at = [&](const Vec3& c) { return tree.distance(c); };
+    auto inside = [&](const Vec3& c) { return winding.inside(c); };
+    size_t added = 0;
+    for (size_t j : unreached_samples(set, threads)) {
+        Ball best;
+        if (!grow_ball(set.cover_samples[j], normals[j], inside, radius_at, best)) continue;
         set.balls.push_back(best);
         ++added;
     }

@@ -1,9 +1,16 @@
-// point_cloud.cpp: candidates of an oriented point cloud: the Voronoi vertices on the inner side of
-// their samples' normals, with the isolated ones (outliers) dropped.
+// point_cloud.cpp: candidates of an oriented point cloud. The points (de-duplicated) get their
+// winding number (point_winding.h); its sign fixes the orientation (normals pointing inward are
+// flipped); candidates are the Voronoi vertices with winding number > 1/2 (isolated ones dropped,
+// as in the paper), or random points of the bounding box with winding number > 1/2 and their
+// distance to the nearest point as radius; then fallback balls make every sample coverable.
 #include "candidates_internal.h"
 
 #include "kdtree.h"
+#include "point_winding.h"
+#include "rng.h"
 #include "sampling.h"
+
+#include <algorithm>
 
 namespace ca {
 namespace cand {
@@ -31,33 +38,101 @@ std::vector<Ball> cluster_filter(const std::vector<Ball>& balls) {
     return out;
 }
 
+// Depth (internal units) at which the orientation probes sit below and above the points.
+constexpr double kOrientationProbe = 0.01;
+
+// Mean winding number at points pushed a little along their normals, to either side, over up to
+// 500 points: about (1 + 0) / 2 for outward normals and (0 - 1) / 2 for inward ones (reversing
+// every normal negates the winding number).
+double orientation_score(const PointCloudWinding& w, const std::vector<Vec3>& pts, const std::vector<Vec3>& nrm) {
+    const size_t step = std::max<size_t>(1, pts.size() / 500);
+    double sum = 0;
+    size_t n = 0;
+    for (size_t i = 0; i < pts.size(); i += step, ++n)
+        sum += 0.5 * (w(pts[i] - kOrientationProbe * nrm[i]) + w(pts[i] + kOrientationProbe * nrm[i]));
+    return n ? sum / double(n) : 0.0;
+}
+
+Status voronoi_cloud_candidates(const std::vector<Vec3>& upts, const PointCloudWinding& winding, int threads,
+                                const Monitor& monitor, std::vector<Ball>& out) {
+    std::vector<Ball> balls;
+    std::vector<Tet> tets_unused;
+    Status st = voronoi_vertices(upts, threads, monitor,
+        [&](const std::vector<uint32_t>& ids, const std::vector<Ball>& raw, const std::vector<Tet>&,
+            std::vector<uint8_t>& keep) {
+            const bool done = parallel_for(ids.size(), threads, 8192, monitor, "inside", [&](size_t b, size_t e) {
+                for (size_t k = b; k < e; ++k) keep[k] = winding.inside(raw[ids[k]].center);
+            });
+            return done ? Status::success() : cancelled();
+        }, balls, tets_unused);
+    if (!st.ok()) return st;
+    out = cluster_filter(balls);
+    return Status::success();
+}
+
+Status random_cloud_candidates(const CandidateOptions& opt, const std::vector<Vec3>& upts,
+                               const PointCloudWinding& winding, int threads, const Monitor& monitor,
+                               std::vector<Ball>& out) {
+    auto [lo, hi] = bounding_box(upts);
+    const Vec3 extent = hi - lo;
+    Rng rng(stream_seed(opt.seed, 3));
+    const size_t want = opt.random_candidates;
+    const size_t max_attempts = std::max<size_t>(want * 200, 100000);
+    std::vector<Vec3> inner;
+    size_t attempts = 0;
+    while (inner.size() < want && attempts < max_attempts) {
+        const size_t batch = std::min<size_t>(std::max<size_t>(2 * (want - inner.size()), 4096), max_attempts - attempts);
+        std::vector<Vec3> pts(batch);
+        for (Vec3& p : pts) p = lo + Vec3(rng.uniform(), rng.uniform(), rng.uniform()).cwiseProduct(extent);
+        attempts += batch;
+        std::vector<uint8_t> in(batch, 0);
+        if (!parallel_for(batch, threads, 8192, monitor, "inside", [&](size_t b, size_t e) {
+                for (size_t i = b; i < e; ++i) in[i] = winding.inside(pts[i]);
+            }))
+            return cancelled();
+        for (size_t i = 0; i < batch && inner.size() < want; ++i)
+            if (in[i]) inner.push_back(pts[i]);
+    }
+    const PointTree tree(upts);
+    out.resize(inner.size());
+    if (!parallel_for(inner.size(), threads, 4096, monitor, "candidates", [&](size_t b, size_t e) {
+            for (size_t i = b; i < e; ++i) out[i] = {inner[i], tree.distance(inner[i])};
+        }))
+        return cancelled();
+    out.erase(std::remove_if(out.begin(), out.end(), [](const Ball& x) { return !(x.radius > 0); }), out.end());
+    return Status::success();
+}
+
 }  // namespace
 
 
 Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monitor, int threads, CandidateSet& out) {
     const std::vector<Vec3>& pts = out.surface.mesh.vertices;
-    const std::vector<Vec3>& nrm = out.surface.normals;
-    for (uint32_t i : random_subset(pts.size(), opt.cover_samples, stream_seed(opt.seed, 1)))
-        out.cover_samples.push_back(pts[i]);
+    std::vector<Vec3>& nrm = out.surface.normals;
     std::vector<uint32_t> unique = remove_near_duplicates(pts, kDuplicateTolerance);
     std::vector<Vec3> upts(unique.size()), unrm(unique.size());
     for (size_t i = 0; i < unique.size(); ++i) { upts[i] = pts[unique[i]]; unrm[i] = nrm[unique[i]]; }
+    if (!monitor.report("inside", 0)) return cancelled();
+    auto winding = std::make_shared<PointCloudWinding>(upts, unrm);
+    if (orientation_score(*winding, upts, unrm) < 0) {
+        // inward normals: flip them all (the winding number changes sign)
+        for (Vec3& n : nrm) n = -n;
+        for (Vec3& n : unrm) n = -n;
+        winding = std::make_shared<PointCloudWinding>(upts, unrm);
+        out.surface.flipped = true;
+    }
+    std::vector<Vec3> sample_normals;
+    for (uint32_t i : random_subset(pts.size(), opt.cover_samples, stream_seed(opt.seed, 1))) {
+        out.cover_samples.push_back(pts[i]);
+        sample_normals.push_back(nrm[i]);
+    }
     out.dense_samples = upts;
-    std::vector<Ball> balls;
-    std::vector<Tet> tets_unused;
-    Status st = voronoi_vertices(upts, threads, monitor,
-        [&](const std::vector<uint32_t>& ids, const std::vector<Ball>& raw, const std::vector<Tet>& tets,
-            std::vector<uint8_t>& keep) {
-            for (size_t k = 0; k < ids.size(); ++k) {
-                const Vec3& c = raw[ids[k]].center;
-                bool inner = true;
-                for (uint32_t v : tets[ids[k]]) inner = inner && (upts[v] - c).dot(unrm[v]) > 0;
-                keep[k] = inner;
-            }
-            return Status::success();
-        }, balls, tets_unused);
+    Status st = opt.generator == Generator::voronoi
+                    ? voronoi_cloud_candidates(upts, *winding, threads, monitor, out.balls)
+                    : random_cloud_candidates(opt, upts, *winding, threads, monitor, out.balls);
     if (!st.ok()) return st;
-    out.balls = cluster_filter(balls);
+    out.fallback_balls = add_cloud_fallback_balls(out, *winding, sample_normals, threads);
+    out.cloud_winding = std::move(winding);
     return Status::success();
 }
 

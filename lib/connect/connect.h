@@ -21,8 +21,9 @@
 //    scale dilation), edges at h along the segment, triangles on a barycentric grid whose
 //    sub-edges are <= h; a point inside the undilated ball of one of the element's own vertices
 //    counts as inside (those balls are inner balls); any other point must be inside the shape:
-//    generalised winding number > 1/2 for meshes; for point clouds, inside 0.95 x one of its 16
-//    nearest candidate balls.
+//    generalised winding number > 1/2 for meshes, point-cloud winding number > 1/2 for point
+//    clouds (point_winding.h; a candidate set without one: inside 0.95 x one of the 16 nearest
+//    candidate balls).
 //    On the medial route the removals are replayed as elementary collapses: a removed triangle
 //    whose removed edges were all used by earlier removed triangles also loses its longest edge
 //    that is on no kept triangle, so removal adds no loop (the medial mesh has the shape's
@@ -81,7 +82,7 @@ public:
     ~InsideTest();
     InsideTest(InsideTest&&) noexcept;
     InsideTest& operator=(InsideTest&&) noexcept;
-    bool inside(const Vec3& p) const;   // winding number > 1/2 (meshes), in a candidate ball (clouds)
+    bool inside(const Vec3& p) const;   // (point-cloud) winding number > 1/2
     // Edge (a, b) / triangle (a, b, c) of balls: every test point at spacing h passes. With
     // envelope_tol >= 0 (meshes), the interpolated ball at each test point must also stay inside
     // the shape up to envelope_tol (distance to the surface >= interpolated radius - envelope_tol):

@@ -15,6 +15,7 @@
 #include "bvh.h"
 #include "distance.h"
 #include "kdtree.h"
+#include "point_winding.h"
 #include "winding.h"
 
 #include <algorithm>
@@ -63,7 +64,8 @@ struct InsideTest::Impl {
     std::shared_ptr<const WindingNumber> winding;   // meshes only (the candidate set's, if it has them)
     std::shared_ptr<const MeshDistance> distance;   // meshes only (envelope rule, shortcuts)
     bool closed = false;                      // winding number integer-valued (shortcut allowed)
-    std::vector<Vec3> centers;                // the candidate balls (point clouds)
+    std::shared_ptr<const PointCloudWinding> cloud_winding;   // point clouds (the candidate set's)
+    std::vector<Vec3> centers;                // the candidate balls (point clouds without a winding number)
     std::vector<double> radii;
     std::unique_ptr<PointTree> tree;
 };
@@ -134,6 +136,8 @@ InsideTest::InsideTest(const CandidateSet& set) : impl_(std::make_unique<Impl>()
         impl_->closed = closed_mesh(set.surface.mesh);
         return;
     }
+    impl_->cloud_winding = set.cloud_winding;
+    if (impl_->cloud_winding) return;
     for (const Ball& b : set.balls) {
         impl_->centers.push_back(b.center);
         impl_->radii.push_back(b.radius);
@@ -146,7 +150,8 @@ InsideTest& InsideTest::operator=(InsideTest&&) noexcept = default;
 
 bool InsideTest::inside(const Vec3& p) const {
     if (impl_->winding) return impl_->winding->inside(p);
-    // Point clouds: inside one of the 16 nearest candidate balls (shrunk by kBallTrust). Not used
+    if (impl_->cloud_winding) return impl_->cloud_winding->inside(p);
+    // Point clouds without their winding number: inside one of the 16 nearest candidate balls (shrunk by kBallTrust). Not used
     // for meshes: Voronoi balls clamped to the nearest sample can graze thin features.
     constexpr size_t k = 16;
     size_t idx[k];

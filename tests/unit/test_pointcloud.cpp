@@ -1,0 +1,109 @@
+// test_pointcloud.cpp: the pipeline on point clouds sampled from shapes with known medial axes:
+// a sphere (one ball at its centre), a torus (a ring with b1 = 1); flipped normals give the same
+// skeleton size; the random generator works on clouds; an outlier point creates no ball outside
+// the shape.
+#include <doctest/doctest.h>
+
+#include "candidates.h"
+#include "connect.h"
+#include "selection.h"
+#include "support/clouds.h"
+#include "support/shapes.h"
+
+#include <cmath>
+
+namespace {
+
+struct Run {
+    ca::CandidateSet set;
+    ca::Selection sel;
+    ca::Skeleton skeleton;
+};
+
+// Runs the three steps on a cloud; balls come back in the cloud's own units.
+Run run(shapes::Cloud cloud, ca::CandidateOptions copt = {}) {
+    Run r;
+    ca::SelectOptions sopt;
+    sopt.cover.time_limit_s = 0;
+    ca::Surface surface;
+    ca::Status st = ca::prepare_surface(ca::Mesh{std::move(cloud.points), {}}, std::move(cloud.normals), surface);
+    REQUIRE_MESSAGE(st.ok(), st.message);
+    ca::Monitor monitor;
+    st = ca::generate_candidates(std::move(surface), copt, monitor, r.set);
+    REQUIRE_MESSAGE(st.ok(), st.message);
+    st = ca::select_balls(r.set, sopt, monitor, r.sel);
+    REQUIRE_MESSAGE(st.ok(), st.message);
+    st = ca::connect_balls(r.set, r.sel, {}, monitor, r.skeleton);
+    REQUIRE_MESSAGE(st.ok(), st.message);
+    for (ca::Ball& b : r.skeleton.balls) {
+        b.center = r.set.surface.norm.to_user(b.center);
+        b.radius *= r.set.surface.norm.scale;
+    }
+    return r;
+}
+
+shapes::Cloud sphere_cloud(double R, size_t n) { return shapes::sample_cloud(shapes::sphere(R, 96, 192), n); }
+
+// The ring test of test_pipeline.cpp: every ball near the core circle, b1 = 1.
+void check_ring(const Run& r, double R, double tube) {
+    REQUIRE(r.skeleton.balls.size() >= 4);
+    for (const ca::Ball& b : r.skeleton.balls) {
+        const double from_core = std::hypot(std::hypot(b.center.x(), b.center.y()) - R, b.center.z());
+        CHECK(from_core < 0.3 * tube);
+    }
+    CHECK(ca::topology(r.skeleton).betti1 == 1);
+    CHECK(ca::topology(r.skeleton).components == 1);
+}
+
+}  // namespace
+
+TEST_CASE("point cloud: a sampled sphere gives one ball at its centre") {
+    const double R = 2.0;
+    Run r = run(sphere_cloud(R, 5000));
+    CHECK(!r.set.surface.flipped);
+    REQUIRE(r.skeleton.balls.size() == 1);
+    CHECK(r.skeleton.balls[0].center.norm() < 0.03 * R);
+    CHECK(std::abs(r.skeleton.balls[0].radius - R) < 0.05 * R);
+}
+
+TEST_CASE("point cloud: inward normals are flipped; same skeleton size") {
+    const double R = 2.0;
+    shapes::Cloud c = sphere_cloud(R, 5000);
+    for (ca::Vec3& n : c.normals) n = -n;
+    Run r = run(c);
+    CHECK(r.set.surface.flipped);
+    REQUIRE(r.skeleton.balls.size() == 1);
+    CHECK(r.skeleton.balls[0].center.norm() < 0.03 * R);
+}
+
+TEST_CASE("point cloud: a sampled torus gives a ring with b1 = 1, outward or inward normals") {
+    const double R = 1.0, tube = 0.3;
+    shapes::Cloud c = shapes::sample_cloud(shapes::torus(R, tube, 128, 48), 8000);
+    Run a = run(c);
+    check_ring(a, R, tube);
+    for (ca::Vec3& n : c.normals) n = -n;
+    Run b = run(c);
+    check_ring(b, R, tube);
+    const double na = double(a.skeleton.balls.size()), nb = double(b.skeleton.balls.size());
+    CHECK(std::abs(na - nb) <= 0.1 * na);
+}
+
+TEST_CASE("point cloud: the random generator keeps points with winding number > 1/2") {
+    const double R = 2.0;
+    ca::CandidateOptions copt;
+    copt.generator = ca::Generator::random;
+    copt.random_candidates = 3000;
+    Run r = run(sphere_cloud(R, 4000), copt);
+    for (const ca::Ball& b : r.set.balls) CHECK(ca::Vec3(b.center - ca::Vec3::Constant(0.5)).norm() < 0.505);   // the cloud spans the unit cube
+    REQUIRE(!r.skeleton.balls.empty());
+    for (const ca::Ball& b : r.skeleton.balls) CHECK(b.center.norm() + b.radius < 1.02 * R);
+}
+
+TEST_CASE("point cloud: an outlier point creates no ball outside the shape") {
+    const double R = 2.0;
+    shapes::Cloud c = sphere_cloud(R, 5000);
+    c.points.push_back(ca::Vec3(3.0 * R, 0, 0));
+    c.normals.push_back(ca::Vec3(1, 0, 0));
+    Run r = run(c);
+    for (const ca::Ball& b : r.skeleton.balls) CHECK(b.center.norm() + b.radius < 1.02 * R);
+}
