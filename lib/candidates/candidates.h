@@ -51,6 +51,7 @@ struct CandidateSet {
     // Point clouds: the winding number of the (de-duplicated, oriented) points, the inside test
     // of the candidates, the fallback balls and the connection step.
     std::shared_ptr<const PointCloudWinding> cloud_winding;
+    double orientation_inconsistent = 0;  // point clouds: fraction of orientation probes failing (point_cloud.cpp)
     std::vector<Ball> balls;              // P, undilated medial radii
     size_t fallback_balls = 0;            // of which added by add_fallback_balls (at the end)
     size_t hole_clamped = 0;              // radii clamped by clamp_to_hole_caps (open meshes)

@@ -11,6 +11,8 @@
 #include "sampling.h"
 
 #include <algorithm>
+#include <cmath>
+#include <string>
 
 namespace ca {
 namespace cand {
@@ -40,17 +42,29 @@ std::vector<Ball> cluster_filter(const std::vector<Ball>& balls) {
 
 // Depth (internal units) at which the orientation probes sit below and above the points.
 constexpr double kOrientationProbe = 0.01;
+// Above this fraction of inconsistent probes the orientation is not trusted (the cloud is refused).
+constexpr double kMaxInconsistent = 0.3;
 
-// Mean winding number at points pushed a little along their normals, to either side, over up to
-// 500 points: about (1 + 0) / 2 for outward normals and (0 - 1) / 2 for inward ones (reversing
-// every normal negates the winding number).
-double orientation_score(const PointCloudWinding& w, const std::vector<Vec3>& pts, const std::vector<Vec3>& nrm) {
+// Winding numbers at up to 500 points pushed a little along their normals, to either side.
+// `mean`: the mean over both sides, about (1 + 0) / 2 for outward normals and (0 - 1) / 2 for
+// inward ones (reversing every normal negates the winding number). `inconsistent`: the fraction of
+// points where w jumps by less than 1/2 across the surface (1 for consistently oriented normals,
+// on closed and open clouds alike).
+struct OrientationProbes {
+    double mean = 0, inconsistent = 0;
+};
+OrientationProbes probe_orientation(const PointCloudWinding& w, const std::vector<Vec3>& pts,
+                                    const std::vector<Vec3>& nrm) {
     const size_t step = std::max<size_t>(1, pts.size() / 500);
-    double sum = 0;
+    OrientationProbes out;
     size_t n = 0;
-    for (size_t i = 0; i < pts.size(); i += step, ++n)
-        sum += 0.5 * (w(pts[i] - kOrientationProbe * nrm[i]) + w(pts[i] + kOrientationProbe * nrm[i]));
-    return n ? sum / double(n) : 0.0;
+    for (size_t i = 0; i < pts.size(); i += step, ++n) {
+        const double in = w(pts[i] - kOrientationProbe * nrm[i]), outside = w(pts[i] + kOrientationProbe * nrm[i]);
+        out.mean += 0.5 * (in + outside);
+        out.inconsistent += std::abs(in - outside) < 0.5;
+    }
+    if (n) out.mean /= double(n), out.inconsistent /= double(n);
+    return out;
 }
 
 Status voronoi_cloud_candidates(const std::vector<Vec3>& upts, const PointCloudWinding& winding, int threads,
@@ -114,7 +128,17 @@ Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monito
     for (size_t i = 0; i < unique.size(); ++i) { upts[i] = pts[unique[i]]; unrm[i] = nrm[unique[i]]; }
     if (!monitor.report("inside", 0)) return cancelled();
     auto winding = std::make_shared<PointCloudWinding>(upts, unrm);
-    if (orientation_score(*winding, upts, unrm) < 0) {
+    const OrientationProbes probes = probe_orientation(*winding, upts, unrm);
+    out.orientation_inconsistent = probes.inconsistent;
+    if (probes.inconsistent > kMaxInconsistent)
+        return fail(Code::invalid_input,
+                    "the point cloud's normals are not consistently oriented: the winding number jumps by less than "
+                    "1/2 across the surface at " + std::to_string(int(std::lround(100 * probes.inconsistent))) +
+                    "% of the probe points" +
+                    (out.surface.normals_source == NormalSource::given
+                         ? std::string(" (pass the normals as unoriented to re-orient them, or omit them)")
+                         : std::string(" even after orientation (too sparse or too noisy for its thin parts?)")));
+    if (probes.mean < 0) {
         // inward normals: flip them all (the winding number changes sign)
         for (Vec3& n : nrm) n = -n;
         for (Vec3& n : unrm) n = -n;

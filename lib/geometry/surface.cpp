@@ -1,6 +1,7 @@
 // surface.cpp: validation and normalisation of the caller's mesh or oriented point cloud.
 #include "surface.h"
 #include "duplicates.h"
+#include "normals.h"
 #include "winding.h"
 
 #include <Eigen/Dense>
@@ -33,7 +34,7 @@ static bool all_in_one_plane(const std::vector<Vec3>& pts, const Vec3& lo, doubl
     return std::sqrt(std::max(0.0, es.eigenvalues()[0])) <= 1e-9;
 }
 
-Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool require_normals) {
+Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool require_normals, bool normals_oriented) {
     out = Surface{};
     const size_t nv = raw.vertices.size();
     if (nv == 0) return fail(Code::degenerate_input, "the input has no vertices");
@@ -53,7 +54,7 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
         out.duplicate_triangles = merged.duplicate;
     }
     if (cloud && !require_normals) normals.clear();
-    if (cloud && require_normals) {
+    if (cloud && require_normals && !normals.empty()) {
         if (normals.size() != nv)
             return fail(Code::invalid_input, "a point cloud (no triangles) needs one normal per point (" +
                                                  std::to_string(normals.size()) + " normals for " +
@@ -106,6 +107,19 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
         if (signed_volume(raw) < 0) {
             for (Tri& t : raw.triangles) std::swap(t[1], t[2]);
             out.flipped = true;
+        }
+    }
+    if (cloud && require_normals) {
+        // missing normals are estimated, unoriented ones oriented (normals.h); the outward sign
+        // is fixed by the winding number when the candidates are built
+        out.normals_source = NormalSource::given;
+        if (normals.empty()) {
+            normals = estimate_normals(raw.vertices);
+            orient_normals(raw.vertices, normals);
+            out.normals_source = NormalSource::estimated;
+        } else if (!normals_oriented) {
+            orient_normals(raw.vertices, normals);
+            out.normals_source = NormalSource::oriented;
         }
     }
     out.mesh = std::move(raw);

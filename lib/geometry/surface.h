@@ -13,10 +13,15 @@ struct Normalization {
     Vec3 to_user(const Vec3& p) const { return origin + p * scale; }
 };
 
+// Where a point cloud's normals come from: the caller's (oriented), the caller's re-oriented
+// (normals.h), or estimated from the points. Meshes: none.
+enum class NormalSource : int32_t { none = 0, given = 1, oriented = 2, estimated = 3 };
+
 struct Surface {
     Mesh mesh;                    // internal units; empty triangles for a point cloud
     std::vector<Vec3> normals;    // point clouds: unit outward normals, one per vertex
     bool point_cloud = false;
+    NormalSource normals_source = NormalSource::none;
     bool flipped = false;         // the mesh faced inward and was flipped
     size_t dropped_triangles = 0; // zero-area triangles ignored
     size_t duplicate_triangles = 0; // repeats of a kept triangle merged into it (duplicates.h)
@@ -25,9 +30,11 @@ struct Surface {
 
 // Validates raw caller data (finite coordinates, indices in range, non-degenerate, not all in
 // one plane, unit normals for point clouds) and normalises it. `mesh.triangles` empty means a
-// point cloud, which needs `normals` (one per vertex) unless `require_normals` is false (the
-// evaluation only measures distances). Takes its arguments by value (moved in).
-Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool require_normals = true);
+// point cloud, which takes `normals` (one per vertex; empty: estimated by PCA and oriented; with
+// `normals_oriented` false: re-oriented) unless `require_normals` is false (the evaluation only
+// measures distances: normals are dropped). Takes its arguments by value (moved in).
+Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool require_normals = true,
+                       bool normals_oriented = true);
 
 // Axis-aligned bounding box of points (min, max); empty input gives (0, 0).
 std::pair<Vec3, Vec3> bounding_box(const std::vector<Vec3>& pts);

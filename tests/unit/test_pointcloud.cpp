@@ -21,12 +21,12 @@ struct Run {
 };
 
 // Runs the three steps on a cloud; balls come back in the cloud's own units.
-Run run(shapes::Cloud cloud, ca::CandidateOptions copt = {}) {
+Run run(shapes::Cloud cloud, ca::CandidateOptions copt = {}, bool oriented = true) {
     Run r;
     ca::SelectOptions sopt;
     sopt.cover.time_limit_s = 0;
     ca::Surface surface;
-    ca::Status st = ca::prepare_surface(ca::Mesh{std::move(cloud.points), {}}, std::move(cloud.normals), surface);
+    ca::Status st = ca::prepare_surface(ca::Mesh{std::move(cloud.points), {}}, std::move(cloud.normals), surface, true, oriented);
     REQUIRE_MESSAGE(st.ok(), st.message);
     ca::Monitor monitor;
     st = ca::generate_candidates(std::move(surface), copt, monitor, r.set);
@@ -107,3 +107,28 @@ TEST_CASE("point cloud: an outlier point creates no ball outside the shape") {
     Run r = run(c);
     for (const ca::Ball& b : r.skeleton.balls) CHECK(b.center.norm() + b.radius < 1.02 * R);
 }
+
+TEST_CASE("point cloud: shuffled-sign and missing normals give the same skeleton size (sphere, torus)") {
+    const double R = 1.0, tube = 0.3;
+    shapes::Cloud c = shapes::sample_cloud(shapes::torus(R, tube, 128, 48), 8000);
+    const Run exact = run(c);
+    shapes::Cloud shuffled = c;
+    for (size_t i = 0; i < shuffled.normals.size(); i += 2) shuffled.normals[i] = -shuffled.normals[i];
+    const Run oriented = run(shuffled, {}, false);
+    CHECK(oriented.set.surface.normals_source == ca::NormalSource::oriented);
+    check_ring(oriented, R, tube);
+    shapes::Cloud bare = c;
+    bare.normals.clear();
+    const Run estimated = run(bare);
+    CHECK(estimated.set.surface.normals_source == ca::NormalSource::estimated);
+    check_ring(estimated, R, tube);
+    const double n = double(exact.skeleton.balls.size());
+    CHECK(std::abs(double(oriented.skeleton.balls.size()) - n) <= 0.1 * n);
+    CHECK(std::abs(double(estimated.skeleton.balls.size()) - n) <= 0.1 * n);
+    shapes::Cloud sphere = sphere_cloud(2.0, 5000);
+    sphere.normals.clear();
+    const Run s = run(sphere);
+    REQUIRE(s.skeleton.balls.size() == 1);
+    CHECK(s.skeleton.balls[0].center.norm() < 0.06);
+}
+

@@ -1,0 +1,75 @@
+// normals.cpp: PCA normal estimation and minimum-spanning-tree orientation (normals.h).
+#include "normals.h"
+
+#include "kdtree.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <queue>
+
+namespace ca {
+
+std::vector<Vec3> estimate_normals(const std::vector<Vec3>& pts, size_t k) {
+    std::vector<Vec3> normals(pts.size(), Vec3(0, 0, 1));
+    if (pts.size() < 3) return normals;
+    PointTree tree(pts);
+    const size_t want = std::min(k + 1, pts.size());
+    std::vector<size_t> idx(want);
+    std::vector<double> d2(want);
+    for (size_t i = 0; i < pts.size(); ++i) {
+        const size_t found = tree.nearest(pts[i], want, idx.data(), d2.data());
+        Vec3 mean = Vec3::Zero();
+        for (size_t j = 0; j < found; ++j) mean += pts[idx[j]];
+        mean /= double(found);
+        Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+        for (size_t j = 0; j < found; ++j) cov += (pts[idx[j]] - mean) * (pts[idx[j]] - mean).transpose();
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
+        const Vec3 n = es.eigenvectors().col(0);
+        if (n.allFinite() && n.norm() > 0) normals[i] = n.normalized();
+    }
+    return normals;
+}
+
+void orient_normals(const std::vector<Vec3>& pts, std::vector<Vec3>& normals, size_t k) {
+    const size_t n = pts.size();
+    if (n < 2 || normals.size() != n) return;
+    PointTree tree(pts);
+    const size_t want = std::min(k + 1, n);
+    std::vector<std::vector<uint32_t>> adj(n);
+    std::vector<size_t> idx(want);
+    std::vector<double> d2(want);
+    for (size_t i = 0; i < n; ++i) {
+        const size_t found = tree.nearest(pts[i], want, idx.data(), d2.data());
+        for (size_t j = 0; j < found; ++j)
+            if (idx[j] != i) adj[i].push_back(uint32_t(idx[j])), adj[idx[j]].push_back(uint32_t(i));
+    }
+    // roots: the highest unvisited point first
+    std::vector<uint32_t> by_height(n);
+    for (uint32_t i = 0; i < n; ++i) by_height[i] = i;
+    std::sort(by_height.begin(), by_height.end(), [&](uint32_t a, uint32_t b) {
+        return pts[a].z() != pts[b].z() ? pts[a].z() > pts[b].z() : a < b;
+    });
+    std::vector<uint8_t> done(n, 0);
+    using Item = std::pair<double, std::pair<uint32_t, uint32_t>>;   // (weight, (point, parent))
+    for (uint32_t root : by_height) {
+        if (done[root]) continue;
+        if (normals[root].z() < 0) normals[root] = -normals[root];
+        // Prim's algorithm from root; a point's sign is fixed when it joins the tree
+        std::priority_queue<Item, std::vector<Item>, std::greater<Item>> heap;
+        heap.push({0.0, {root, root}});
+        while (!heap.empty()) {
+            const auto [w, e] = heap.top();
+            heap.pop();
+            const uint32_t v = e.first, parent = e.second;
+            if (done[v]) continue;
+            done[v] = 1;
+            if (v != parent && normals[v].dot(normals[parent]) < 0) normals[v] = -normals[v];
+            for (uint32_t u : adj[v])
+                if (!done[u]) heap.push({1.0 - std::abs(normals[u].dot(normals[v])), {u, v}});
+        }
+    }
+}
+
+}  // namespace ca
