@@ -149,9 +149,10 @@ CA_API void ca_context_clear_cancel(ca_context* ctx);
 CA_API const char* ca_context_last_error(const ca_context* ctx);
 
 /* ---- input views --------------------------------------------------------------------------- */
-/* A triangle mesh (triangle_count > 0) or an oriented point cloud (triangle_count == 0, normals
-   required: outward normals, one per point). Meshes may be open, soups, or self-intersecting:
-   inside/outside comes from the generalised winding number. */
+/* A triangle mesh (triangle_count > 0) or a point cloud (triangle_count == 0; normals: one per
+   point, consistently oriented, inward or outward; NULL = estimated from the points by PCA and
+   oriented, see docs/pointclouds.md). Meshes may be open, soups, or self-intersecting:
+   inside/outside comes from the generalised winding number (of the points, for a cloud). */
 typedef struct ca_surface_view {
     uint32_t struct_size;       /* sizeof(ca_surface_view) */
     const double* positions;    /* x y z per vertex */
@@ -175,7 +176,7 @@ static inline void ca_surface_view_init(ca_surface_view* view) {
 
 typedef struct ca_candidate_options {
     uint32_t struct_size;        /* sizeof(ca_candidate_options) */
-    int32_t generator;           /* CA_CANDIDATES_*; default VORONOI (point clouds: VORONOI only) */
+    int32_t generator;           /* CA_CANDIDATES_*; default VORONOI */
     uint32_t cover_samples;      /* |S|, samples to cover; default 1500 (point clouds: the points,
                                     subsampled to this many if there are more; 0 = all) */
     uint32_t voronoi_samples;    /* |C|, samples whose Voronoi vertices are candidates; default 4000 */
@@ -216,8 +217,15 @@ CA_API size_t ca_candidate_set_sample_count(const ca_candidate_set* set);
 CA_API const double* ca_candidate_set_samples(const ca_candidate_set* set);
 /* The length delta is a fraction of (longest bbox side), in the caller's units. */
 CA_API double ca_candidate_set_reference_length(const ca_candidate_set* set);
-/* 1 if the input mesh faced inward and was flipped for the inside test, else 0. */
+/* 1 if the input mesh faced inward (or the cloud's normals pointed inward) and was flipped for the
+   inside test, else 0. */
 CA_API int32_t ca_candidate_set_flipped(const ca_candidate_set* set);
+/* Which normals a point cloud's candidates used: CA_NORMALS_* (meshes: CA_NORMALS_NONE). */
+#define CA_NORMALS_NONE      0 /* a mesh: no point normals */
+#define CA_NORMALS_GIVEN     1 /* the caller's normals */
+#define CA_NORMALS_ORIENTED  2 /* the caller's normals, re-oriented */
+#define CA_NORMALS_ESTIMATED 3 /* estimated from the points (PCA) and oriented */
+CA_API int32_t ca_candidate_set_normals(const ca_candidate_set* set);
 /* Copy-out: capacity in balls; centers needs 3*capacity doubles, radii capacity doubles (either
    may be NULL). *count receives the number of balls; CA_ERROR_BUFFER_TOO_SMALL if capacity is
    smaller (nothing copied). */
