@@ -40,6 +40,11 @@ Status voronoi_vertices(const std::vector<Vec3>& pts, int threads, const Monitor
 // voronoi.cpp: the inner Voronoi vertices of dense surface samples of a mesh.
 Status mesh_voronoi_candidates(const CandidateOptions& opt, const Monitor& monitor, Beside& structures,
                                const SurfaceStructures& built, int threads, CandidateSet& out);
+// random_candidates.cpp: up to opt.random_candidates uniform points of the bounding box of pts
+// that are inside (seeded by opt.seed); false if cancelled.
+bool random_inner_points(const std::vector<Vec3>& pts, const CandidateOptions& opt,
+                         const std::function<bool(const Vec3&)>& inside, int threads, const Monitor& monitor,
+                         std::vector<Vec3>& inner);
 // random_candidates.cpp: random inner points of the bounding box, with their distances to the surface.
 Status mesh_random_candidates(const CandidateOptions& opt, const Monitor& monitor, Beside& structures,
                               const SurfaceStructures& built, int threads, CandidateSet& out);

@@ -77,7 +77,7 @@ Status voronoi_cloud_candidates(const std::vector<Vec3>& upts, const PointCloudW
             const bool done = parallel_for(ids.size(), threads, 8192, monitor, "inside", [&](size_t b, size_t e) {
                 for (size_t k = b; k < e; ++k) keep[k] = winding.inside(raw[ids[k]].center);
             });
-            return done ? Status::success() : cancelled();
+            return done ? Status::success() : monitor.stop_status("inside");
         }, balls, tets_unused);
     if (!st.ok()) return st;
     out = cluster_filter(balls);
@@ -87,32 +87,15 @@ Status voronoi_cloud_candidates(const std::vector<Vec3>& upts, const PointCloudW
 Status random_cloud_candidates(const CandidateOptions& opt, const std::vector<Vec3>& upts,
                                const PointCloudWinding& winding, int threads, const Monitor& monitor,
                                std::vector<Ball>& out) {
-    auto [lo, hi] = bounding_box(upts);
-    const Vec3 extent = hi - lo;
-    Rng rng(stream_seed(opt.seed, 3));
-    const size_t want = opt.random_candidates;
-    const size_t max_attempts = std::max<size_t>(want * 200, 100000);
     std::vector<Vec3> inner;
-    size_t attempts = 0;
-    while (inner.size() < want && attempts < max_attempts) {
-        const size_t batch = std::min<size_t>(std::max<size_t>(2 * (want - inner.size()), 4096), max_attempts - attempts);
-        std::vector<Vec3> pts(batch);
-        for (Vec3& p : pts) p = lo + Vec3(rng.uniform(), rng.uniform(), rng.uniform()).cwiseProduct(extent);
-        attempts += batch;
-        std::vector<uint8_t> in(batch, 0);
-        if (!parallel_for(batch, threads, 8192, monitor, "inside", [&](size_t b, size_t e) {
-                for (size_t i = b; i < e; ++i) in[i] = winding.inside(pts[i]);
-            }))
-            return cancelled();
-        for (size_t i = 0; i < batch && inner.size() < want; ++i)
-            if (in[i]) inner.push_back(pts[i]);
-    }
+    if (!random_inner_points(upts, opt, [&](const Vec3& p) { return winding.inside(p); }, threads, monitor, inner))
+        return monitor.stop_status("inside");
     const PointTree tree(upts);
     out.resize(inner.size());
     if (!parallel_for(inner.size(), threads, 4096, monitor, "candidates", [&](size_t b, size_t e) {
             for (size_t i = b; i < e; ++i) out[i] = {inner[i], tree.distance(inner[i])};
         }))
-        return cancelled();
+        return monitor.stop_status("candidates");
     out.erase(std::remove_if(out.begin(), out.end(), [](const Ball& x) { return !(x.radius > 0); }), out.end());
     return Status::success();
 }
@@ -126,7 +109,7 @@ Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monito
     std::vector<uint32_t> unique = remove_near_duplicates(pts, kDuplicateTolerance);
     std::vector<Vec3> upts(unique.size()), unrm(unique.size());
     for (size_t i = 0; i < unique.size(); ++i) { upts[i] = pts[unique[i]]; unrm[i] = nrm[unique[i]]; }
-    if (!monitor.report("inside", 0)) return cancelled();
+    if (!monitor.report("inside", 0)) return monitor.stop_status("inside");
     auto winding = std::make_shared<PointCloudWinding>(upts, unrm);
     const OrientationProbes probes = probe_orientation(*winding, upts, unrm);
     out.orientation_inconsistent = probes.inconsistent;

@@ -1,5 +1,5 @@
 // random_candidates.cpp: random candidates: uniform points of the bounding box inside the mesh (by the
-// winding number), each with its distance to the surface as radius.
+// winding number; the sampling loop is shared with point clouds), each with its distance to the surface as radius.
 #include "candidates_internal.h"
 
 #include "sampling.h"
@@ -10,31 +10,41 @@
 namespace ca {
 namespace cand {
 
+bool random_inner_points(const std::vector<Vec3>& pts, const CandidateOptions& opt,
+                         const std::function<bool(const Vec3&)>& inside, int threads, const Monitor& monitor,
+                         std::vector<Vec3>& inner) {
+    auto [lo, hi] = bounding_box(pts);
+    const Vec3 extent = hi - lo;
+    Rng rng(stream_seed(opt.seed, 3));
+    const size_t want = opt.random_candidates;
+    const size_t max_attempts = std::max<size_t>(want * 200, 100000);
+    inner.clear();
+    size_t attempts = 0;
+    while (inner.size() < want && attempts < max_attempts) {
+        const size_t batch = std::min<size_t>(std::max<size_t>(2 * (want - inner.size()), 4096), max_attempts - attempts);
+        std::vector<Vec3> trial(batch);
+        for (Vec3& p : trial) p = lo + Vec3(rng.uniform(), rng.uniform(), rng.uniform()).cwiseProduct(extent);
+        attempts += batch;
+        std::vector<uint8_t> in(batch, 0);
+        if (!parallel_for(batch, threads, 8192, monitor, "inside", [&](size_t b, size_t e) {
+                for (size_t i = b; i < e; ++i) in[i] = inside(trial[i]);
+            }))
+            return false;
+        for (size_t i = 0; i < batch && inner.size() < want; ++i)
+            if (in[i]) inner.push_back(trial[i]);
+    }
+    return true;
+}
+
 Status mesh_random_candidates(const CandidateOptions& opt, const Monitor& monitor, Beside& structures,
                               const SurfaceStructures& built, int threads, CandidateSet& out) {
     const Mesh& mesh = out.surface.mesh;
     structures.wait();
     const WindingNumber& winding = *built.winding;
-    auto [lo, hi] = bounding_box(mesh.vertices);
-    const Vec3 extent = hi - lo;
-    Rng rng(stream_seed(opt.seed, 3));
-    const size_t want = opt.random_candidates;
-    const size_t max_attempts = std::max<size_t>(want * 200, 100000);
     std::vector<Vec3> inner;
-    size_t attempts = 0;
-    while (inner.size() < want && attempts < max_attempts) {
-        const size_t batch = std::min<size_t>(std::max<size_t>(2 * (want - inner.size()), 4096), max_attempts - attempts);
-        std::vector<Vec3> pts(batch);
-        for (Vec3& p : pts) p = lo + Vec3(rng.uniform(), rng.uniform(), rng.uniform()).cwiseProduct(extent);
-        attempts += batch;
-        std::vector<uint8_t> in(batch, 0);
-        if (!parallel_for(batch, threads, 8192, monitor, "inside", [&](size_t b, size_t e) {
-                for (size_t i = b; i < e; ++i) in[i] = winding.inside(pts[i]);
-            }))
-            return monitor.stop_status("inside");
-        for (size_t i = 0; i < batch && inner.size() < want; ++i)
-            if (in[i]) inner.push_back(pts[i]);
-    }
+    if (!random_inner_points(mesh.vertices, opt, [&](const Vec3& p) { return winding.inside(p); }, threads, monitor,
+                             inner))
+        return monitor.stop_status("inside");
     const MeshDistance& distance = *built.distance;
     out.balls.resize(inner.size());
     if (!parallel_for(inner.size(), threads, 4096, monitor, "candidates", [&](size_t b, size_t e) {
