@@ -5,6 +5,7 @@
 #include "struct_size.h"
 
 #include "connect.h"
+#include "fit.h"
 #include "skeleton.h"
 
 #include <chrono>
@@ -42,6 +43,16 @@ ca_status ca_connect(ca_context* ctx, const ca_candidate_set* set, const ca_sele
         ca::Skeleton sk;
         st = ca::connect_balls(set->core, selection->core, co, ctx->monitor(), sk);
         if (!st.ok()) return st;
+        if (o.fit_iterations < 0) return ca::fail(Code::invalid_argument, "fit_iterations must be >= 0");
+        ca::FitStats fs;
+        const bool fitted = o.fit != 0 && has_mesh && o.fit_iterations > 0;
+        if (fitted) {
+            ca::FitOptions fo;
+            fo.iterations = uint32_t(o.fit_iterations);
+            fo.threads = ctx->desc.threads;
+            st = ca::fit_skeleton(set->core, selection->core, fo, ctx->monitor(), sk, fs);
+            if (!st.ok()) return st;
+        }
         const ca::TopologyStats topo = ca::topology(sk);
         capi::Pending<ca_skeleton> res(capi::make_result<ca_skeleton>(ctx));
         ca_skeleton& r = *res.obj;
@@ -66,6 +77,11 @@ ca_status ca_connect(ca_context* ctx, const ca_candidate_set* set, const ca_sele
         s.betti1 = topo.betti1;
         s.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         s.method = static_cast<int32_t>(co.method);
+        s.fitted = fitted ? 1 : 0;
+        s.fit_time_s = fs.time_s;
+        s.fit_error_before = 100 * fs.error_before;
+        s.fit_error_after = 100 * fs.error_after;
+        s.fit_uncovered = fs.uncovered;
         *out = res.release();
         return Status::success();
     });

@@ -56,6 +56,8 @@ template <> ca_connect_options defaults<ca_connect_options>() {
     o.remove_outside = 1;
     o.fill_holes = 1;
     o.reconnect = 1;
+    o.fit = 0;
+    o.fit_iterations = 10;
     return o;
 }
 

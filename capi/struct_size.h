@@ -37,6 +37,17 @@ struct ca_select_stats {
     uint64_t rows_before, cols_before, rows_after, cols_after, forced, components, probes, parts;
     double scale_used;
 };
+struct ca_connect_options {
+    uint32_t struct_size;
+    int32_t method, remove_outside, fill_holes, reconnect;
+};
+struct ca_skeleton_stats {
+    uint32_t struct_size;
+    uint64_t vertices, edges, faces, components, isolated;
+    int64_t betti1;
+    double time_s;
+    int32_t method;
+};
 }  // namespace abi1
 
 // ---- ca_context_desc as first published in ABI 2, before time_limit_s was appended ----
@@ -62,8 +73,8 @@ CA_PUBLISHED(ca_surface_view, sizeof(ca_surface_view))
 CA_PUBLISHED(ca_candidate_options, sizeof(ca_candidate_options))
 CA_PUBLISHED(ca_select_options, sizeof(ca_select_options))
 CA_PUBLISHED(ca_select_stats, sizeof(abi1::ca_select_stats), sizeof(ca_select_stats))
-CA_PUBLISHED(ca_connect_options, sizeof(ca_connect_options))
-CA_PUBLISHED(ca_skeleton_stats, sizeof(ca_skeleton_stats))
+CA_PUBLISHED(ca_connect_options, sizeof(abi1::ca_connect_options), sizeof(ca_connect_options))
+CA_PUBLISHED(ca_skeleton_stats, sizeof(abi1::ca_skeleton_stats), sizeof(ca_skeleton_stats))
 CA_PUBLISHED(ca_skeleton_view, sizeof(ca_skeleton_view))
 CA_PUBLISHED(ca_evaluate_options, sizeof(ca_evaluate_options))
 CA_PUBLISHED(ca_evaluation, sizeof(ca_evaluation))
@@ -79,6 +90,13 @@ static_assert(offsetof(ca_context_desc, progress_interval_s) ==
 static_assert(offsetof(ca_select_stats, scale_used) == offsetof(abi1::ca_select_stats, scale_used) &&
                   offsetof(ca_select_stats, time_coverage_s) >= sizeof(abi1::ca_select_stats),
               "ca_select_stats: ABI 1 is a prefix of ABI 2");
+
+static_assert(offsetof(ca_connect_options, reconnect) == offsetof(abi1::ca_connect_options, reconnect) &&
+                  offsetof(ca_connect_options, fit) >= sizeof(abi1::ca_connect_options),
+              "ca_connect_options: ABI 1 is a prefix of ABI 2");
+static_assert(offsetof(ca_skeleton_stats, method) == offsetof(abi1::ca_skeleton_stats, method) &&
+                  offsetof(ca_skeleton_stats, fit_time_s) >= sizeof(abi1::ca_skeleton_stats),
+              "ca_skeleton_stats: ABI 1 is a prefix of ABI 2");
 
 template <class T>
 bool published_size(uint32_t size) {

@@ -324,6 +324,10 @@ typedef struct ca_connect_options {
     int32_t remove_outside;      /* 1 (default): drop edges/triangles whose interior leaves the shape */
     int32_t fill_holes;          /* 1 (default): fill 3- and 4-edge holes whose triangles stay inside */
     int32_t reconnect;           /* 1 (default): join components by the shortest inside edges */
+    int32_t fit;                 /* ABI 2. 1: after connecting, move each ball's centre and radius to fit
+                                    the surface, edges and faces unchanged (meshes; docs/fidelity.md);
+                                    default 0 */
+    int32_t fit_iterations;      /* ABI 2. Fitting steps; default 10 */
 } ca_connect_options;
 
 CA_API ca_status ca_connect_options_defaults(ca_connect_options* options, uint32_t struct_size); /* the defaults named above */
@@ -353,6 +357,12 @@ typedef struct ca_skeleton_stats {
     int64_t betti1;              /* independent cycles of the complex */
     double time_s;
     int32_t method;              /* CA_CONNECT_POWER or CA_CONNECT_MEDIAL: the route used */
+    double fit_time_s;           /* ABI 2. time of the fit (included in time_s) */
+    double fit_error_before;     /* ABI 2. fit's largest residual before / after, in percent of the */
+    double fit_error_after;      /*        longest bbox side (surface and envelope-boundary samples) */
+    uint64_t fit_uncovered;      /* ABI 2. cover samples that no fitted ball covers within its
+                                    dilated radius (0 = the cover still holds) */
+    int32_t fitted;              /* ABI 2. 1 if the balls were fitted (fit on, mesh input) */
 } ca_skeleton_stats;
 
 CA_API ca_status ca_skeleton_stats_get(const ca_skeleton* skeleton, ca_skeleton_stats* stats);

@@ -130,6 +130,8 @@ void add_run_options(CLI::App& app, RunOptions& o) {
 
     app.add_option("--connect", o.connect_route, "auto (medial for meshes, power for point clouds) | medial | power")
         ->capture_default_str()->check(CLI::IsMember(keys(kRoutes)))->group(connect);
+    app.add_flag("--fit", "fit the balls' centres and radii to the surface after connecting (docs/fidelity.md)")
+        ->group(connect);
 
     app.add_option("--ignore-samples", o.ignore_samples_file, "indices (0-based) of samples that need not be covered")->group(control);
     app.add_option("--force-in", o.force_in_file, "indices of candidate balls that must be selected")->group(control);
@@ -150,6 +152,7 @@ bool finish_run_options(const CLI::App& app, RunOptions& o, std::string& error) 
     o.select.solver = value_of(kSolvers, o.solver);
     o.select.effort = value_of(kEfforts, o.effort);
     o.connect.method = value_of(kRoutes, o.connect_route);
+    o.connect.fit = app.count("--fit") ? 1 : 0;
     if (o.candidate_kind.rfind("random", 0) == 0 && o.candidate_kind.size() > 6) {
         const std::string n = o.candidate_kind.substr(7);
         char* end = nullptr;
@@ -209,6 +212,7 @@ Json options_json(const RunOptions& o) {
                 {"force_in", file(o.force_in_file)},
                 {"force_out", file(o.force_out_file)},
                 {"connect", o.connect_route},
+                {"fit", o.connect.fit != 0},
                 {"remove_outside", o.connect.remove_outside},
                 {"fill_holes", o.connect.fill_holes},
                 {"reconnect", o.connect.reconnect},

@@ -3,6 +3,7 @@
 #include "envelope.h"
 
 #include "distance.h"
+#include "parallel.h"
 
 #include <Eigen/Geometry>
 
@@ -40,6 +41,75 @@ Primitive make_primitive(const std::vector<Ball>& balls, Kind kind, uint32_t i, 
     }
     q.br *= 1 + 1e-12;
     return q;
+}
+
+std::vector<Primitive> envelope_primitives(const Skeleton& sk) {
+    const auto& balls = sk.balls;
+    const size_t nb = balls.size();
+    std::vector<Primitive> prims;
+    std::vector<char> edge_in_face(sk.edges.size(), 0), ball_on_edge(nb, 0);
+    auto edge_index = [&](uint32_t a, uint32_t b) {
+        const std::array<uint32_t, 2> key{a, b};
+        return size_t(std::lower_bound(sk.edges.begin(), sk.edges.end(), key) - sk.edges.begin());
+    };
+    for (const Tri& f : sk.faces) {
+        prims.push_back(make_primitive(balls, Kind::slab, f[0], f[1], f[2]));
+        edge_in_face[edge_index(f[0], f[1])] = 1;
+        edge_in_face[edge_index(f[0], f[2])] = 1;
+        edge_in_face[edge_index(f[1], f[2])] = 1;
+    }
+    for (size_t i = 0; i < sk.edges.size(); ++i) {
+        const auto& e = sk.edges[i];
+        ball_on_edge[e[0]] = ball_on_edge[e[1]] = 1;
+        if (!edge_in_face[i]) prims.push_back(make_primitive(balls, Kind::cone, e[0], e[1], 0));
+    }
+    for (uint32_t i = 0; i < nb; ++i)
+        if (!ball_on_edge[i]) prims.push_back(make_primitive(balls, Kind::sphere, i, 0, 0));
+    return prims;
+}
+
+std::vector<Piece> boundary_pieces(const Skeleton& sk) {
+    const auto& balls = sk.balls;
+    std::vector<Piece> pieces;
+    for (const Ball& b : balls) sphere_piece(b, pieces);
+    for (const auto& e : sk.edges) cone_piece(balls[e[0]], balls[e[1]], pieces);
+    for (const Tri& f : sk.faces) slab_pieces(balls[f[0]], balls[f[1]], balls[f[2]], pieces);
+    return pieces;
+}
+
+bool sample_boundary(const Envelope& env, const std::vector<Piece>& pieces, size_t target, uint64_t seed,
+                     double tol, int threads, const Monitor& monitor, const char* stage, double from,
+                     double to, std::vector<Vec3>& boundary) {
+    constexpr size_t kBatch = 4096;
+    boundary.clear();
+    double total_area = 0;
+    for (const Piece& pc : pieces) total_area += pc.area;
+    if (total_area > 0) {
+        Rng rng(seed);
+        size_t generated = 0;
+        for (int round = 0; round < 8 && boundary.size() < target; ++round) {
+            // expected fraction kept so far (start optimistic), with a margin
+            const double frac = generated ? std::max(double(boundary.size()) / double(generated), 1e-3) : 1.0;
+            double want = double(target - boundary.size()) / frac * (round ? 1.1 : 1.0);
+            want = std::min(want, 20.0 * double(target));
+            std::vector<Vec3> cand;
+            cand.reserve(size_t(want) + pieces.size());
+            for (const Piece& pc : pieces) {
+                const size_t cnt = size_t(std::floor(want * pc.area / total_area + rng.uniform()));
+                for (size_t k = 0; k < cnt; ++k) cand.push_back(sample_piece(pc, rng));
+            }
+            generated += cand.size();
+            std::vector<char> keep(cand.size(), 0);
+            const double f0 = from + (to - from) * round / 8.0, f1 = from + (to - from) * (round + 1) / 8.0;
+            if (!parallel_for(cand.size(), threads, kBatch, monitor, stage, f0, f1, [&](size_t b, size_t e) {
+                    for (size_t i = b; i < e; ++i) keep[i] = env.F(cand[i], -tol) > -tol;
+                }))
+                return false;
+            for (size_t i = 0; i < cand.size(); ++i)
+                if (keep[i]) boundary.push_back(cand[i]);
+        }
+    }
+    return true;
 }
 
 void orthonormal_frame(const Vec3& a, Vec3& w1, Vec3& w2) {

@@ -165,6 +165,16 @@ public:
         return bvh_.nearest(p, kInf, [&](uint32_t i, double) { return sd(prims_[i], p); },
                             stop_below);
     }
+    // F(p) and the primitive that attains it (index into primitives()).
+    double F(const Vec3& p, uint32_t& which) const {
+        which = 0;
+        return bvh_.nearest(p, kInf, [&](uint32_t i, double best) {
+            const double d = sd(prims_[i], p);
+            if (d < best) which = i;
+            return d;
+        });
+    }
+    const std::vector<Primitive>& primitives() const { return prims_; }
 
 private:
     const std::vector<Ball>& balls_;
@@ -174,6 +184,11 @@ private:
 
 // The primitive of balls i (sphere), i-j (cone) or i-j-k (slab) with its bounding sphere.
 Primitive make_primitive(const std::vector<Ball>& balls, Kind kind, uint32_t i, uint32_t j, uint32_t k);
+
+// The primitives of F for a canonical skeleton: every face as a slab, every edge in no face as a
+// cone, every ball on no edge as a sphere (a slab's distance already is the minimum over its edge
+// cones and balls, so adding those would not change F).
+std::vector<Primitive> envelope_primitives(const Skeleton& sk);
 
 // ---------------------------------------------------------------------------------------------
 // Boundary pieces of the primitives, for sampling
@@ -196,6 +211,14 @@ Vec3 sample_piece(const Piece& pc, Rng& rng);
 Vec3 closest_on_piece(const Piece& pc, const Vec3& p);
 // Bounding sphere of the piece.
 std::pair<Vec3, double> piece_bound(const Piece& pc);
+// Every sphere, cone lateral surface and slab tangent triangle of a canonical skeleton.
+std::vector<Piece> boundary_pieces(const Skeleton& sk);
+// Samples of the boundary of E: at least `target` points drawn area-proportionally on the pieces
+// (in up to 8 rounds), keeping those not strictly inside another primitive (F > -tol); the
+// result is empty if the envelope has zero area. Progress from..to of `stage`; false if cancelled.
+bool sample_boundary(const Envelope& env, const std::vector<Piece>& pieces, size_t target, uint64_t seed,
+                     double tol, int threads, const Monitor& monitor, const char* stage, double from,
+                     double to, std::vector<Vec3>& out);
 
 }  // namespace eval
 }  // namespace ca

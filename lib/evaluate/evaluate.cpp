@@ -65,66 +65,14 @@ Status evaluate_impl(const Mesh& surface, const Skeleton& skeleton_in, const Eva
     auto cancelled = [&] { return monitor.stop_status("evaluate"); };
     if (!monitor.report("evaluate", 0.0)) return cancelled();
 
-    // ---- primitives of F: every face as a slab, every edge in no face as a cone, every ball
-    // on no edge as a sphere (a slab's distance already is the minimum over its edge cones and
-    // balls, so adding those would not change F) ----
-    std::vector<Primitive> prims;
-    std::vector<char> edge_in_face(sk.edges.size(), 0), ball_on_edge(nb, 0);
-    auto edge_index = [&](uint32_t a, uint32_t b) {
-        const std::array<uint32_t, 2> key{a, b};
-        return size_t(std::lower_bound(sk.edges.begin(), sk.edges.end(), key) - sk.edges.begin());
-    };
-    for (const Tri& f : sk.faces) {
-        prims.push_back(make_primitive(balls, Kind::slab, f[0], f[1], f[2]));
-        edge_in_face[edge_index(f[0], f[1])] = 1;
-        edge_in_face[edge_index(f[0], f[2])] = 1;
-        edge_in_face[edge_index(f[1], f[2])] = 1;
-    }
-    for (size_t i = 0; i < sk.edges.size(); ++i) {
-        const auto& e = sk.edges[i];
-        ball_on_edge[e[0]] = ball_on_edge[e[1]] = 1;
-        if (!edge_in_face[i]) prims.push_back(make_primitive(balls, Kind::cone, e[0], e[1], 0));
-    }
-    for (uint32_t i = 0; i < nb; ++i)
-        if (!ball_on_edge[i]) prims.push_back(make_primitive(balls, Kind::sphere, i, 0, 0));
-    const Envelope env(balls, std::move(prims));
+    const Envelope env(balls, envelope_primitives(sk));
 
-    // ---- boundary samples of E: sample every sphere, cone lateral surface and slab tangent
-    // triangle area-proportionally; keep those not strictly inside another primitive ----
-    std::vector<Piece> pieces;
-    for (const Ball& b : balls) sphere_piece(b, pieces);
-    for (const auto& e : sk.edges) cone_piece(balls[e[0]], balls[e[1]], pieces);
-    for (const Tri& f : sk.faces) slab_pieces(balls[f[0]], balls[f[1]], balls[f[2]], pieces);
-    double total_area = 0;
-    for (const Piece& pc : pieces) total_area += pc.area;
-
+    // ---- boundary samples of E ----
+    const std::vector<Piece> pieces = boundary_pieces(sk);
     std::vector<Vec3> boundary;
-    const size_t target = opt.envelope_samples;
-    if (total_area > 0) {
-        Rng rng(opt.seed ^ 0x6A09E667F3BCC909ull);
-        size_t generated = 0;
-        for (int round = 0; round < 8 && boundary.size() < target; ++round) {
-            // expected fraction kept so far (start optimistic), with a margin
-            const double frac = generated ? std::max(double(boundary.size()) / double(generated), 1e-3) : 1.0;
-            double want = double(target - boundary.size()) / frac * (round ? 1.1 : 1.0);
-            want = std::min(want, 20.0 * double(target));
-            std::vector<Vec3> cand;
-            cand.reserve(size_t(want) + pieces.size());
-            for (const Piece& pc : pieces) {
-                const size_t cnt = size_t(std::floor(want * pc.area / total_area + rng.uniform()));
-                for (size_t k = 0; k < cnt; ++k) cand.push_back(sample_piece(pc, rng));
-            }
-            generated += cand.size();
-            std::vector<char> keep(cand.size(), 0);
-            const double f0 = 0.3 * round / 8.0, f1 = 0.3 * (round + 1) / 8.0;
-            if (!parallel_for(cand.size(), threads, kBatch, monitor, "evaluate", f0, f1, [&](size_t b, size_t e) {
-                    for (size_t i = b; i < e; ++i) keep[i] = env.F(cand[i], -tol) > -tol;
-                }))
-                return cancelled();
-            for (size_t i = 0; i < cand.size(); ++i)
-                if (keep[i]) boundary.push_back(cand[i]);
-        }
-    }
+    if (!sample_boundary(env, pieces, opt.envelope_samples, opt.seed ^ 0x6A09E667F3BCC909ull, tol, threads,
+                         monitor, "evaluate", 0.0, 0.3, boundary))
+        return cancelled();
     if (boundary.empty()) {   // zero-area envelope (all radii zero): use the centres
         for (const Ball& b : balls) boundary.push_back(b.center);
     }

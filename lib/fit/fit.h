@@ -1,0 +1,45 @@
+// fit.h: step 3b of the pipeline (after connecting): moves each ball's centre and radius so that
+// the reconstruction E (union of spheres, cones and slabs, lib/evaluate) fits the surface, with
+// the skeleton's edges and faces unchanged (docs/fidelity.md).
+//
+// The residual at a point p is F(p) - g(p): F the signed distance to E, g the signed distance to
+// the surface (negative inside). It is taken at surface samples (g = 0: the surface is missed or
+// overshot) and at samples of the boundary of E (F = 0: a bulge out of the shape or a crevice of
+// the union deep inside it), so both one-sided Hausdorff distances are seen. Levenberg-Marquardt
+// on these residuals, weighted |r|^(p-2) (an L^p fit leaning towards the maximum), with a Tikhonov
+// term on the step; a step is tried at full, half and quarter length and taken only if the
+// maximum residual falls; the best iterate by that maximum is kept. After every step each ball
+// is projected back: its centre stays inside the shape (winding number > 1/2; a centre that
+// would leave keeps its old position) and its radius is at most the centre's distance to the
+// surface plus radius_tolerance.
+#pragma once
+#include "candidates.h"
+#include "selection.h"
+#include "skeleton.h"
+
+namespace ca {
+
+struct FitOptions {
+    uint32_t iterations = 10;          // Levenberg-Marquardt steps (each tries up to 3 lengths)
+    uint32_t surface_samples = 4000;   // surface residual points
+    uint32_t envelope_samples = 4000;  // boundary-of-E residual points (redrawn each iterate)
+    double power = 6;                  // weights |r|^(power-2)
+    double regularization = 0.1;       // Tikhonov weight on the step, relative to the mean curvature
+    double radius_tolerance = 0.002;   // internal units: radius <= distance to surface + this
+    uint64_t seed = 1;
+    int32_t threads = 0;               // 0 = all cores
+};
+
+struct FitStats {
+    double error_before = 0, error_after = 0;   // max residual (internal units) at the start / kept
+    uint32_t iterations = 0, accepted = 0;      // steps computed / steps taken
+    size_t uncovered = 0;     // cover samples that no fitted ball covers with its dilated radius
+    double time_s = 0;
+};
+
+// Fits sk's balls (internal units; sk as made by connect_balls from set and sel) in place.
+// Needs a triangle mesh: for point clouds and caller arrays it leaves sk unchanged.
+Status fit_skeleton(const CandidateSet& set, const Selection& sel, const FitOptions& opt,
+                    const Monitor& monitor, Skeleton& sk, FitStats& stats);
+
+}  // namespace ca
