@@ -59,6 +59,12 @@ struct PipelineRun {
     long alt_betti1 = 0;
     double t_alt_connect = 0;
     ca_evaluation alt_eval{};
+    // With a fitting connection (run_pipeline's `fitted`): the same selection connected and fitted,
+    // its evaluation, the fit's own time and the cover samples it left uncovered.
+    double t_fit = 0;
+    size_t fit_uncovered = 0, fit_edges = 0, fit_faces = 0, fit_components = 0;
+    long fit_betti1 = 0;
+    ca_evaluation fit_eval{};
 };
 
 // Size and topology of a skeleton, and with `evaluate` its Hausdorff distances to the surface.
@@ -83,7 +89,7 @@ inline ca_status measure_skeleton(ca_context* ctx, const ca_surface_view& v, con
 
 inline PipelineRun run_pipeline(const caio::MeshData& mesh, const ca_candidate_options& co, const ca_select_options& so,
                                 const ca_connect_options& cop, bool evaluate = false,
-                                const ca_connect_options* alt = nullptr) {
+                                const ca_connect_options* alt = nullptr, const ca_connect_options* fitted = nullptr) {
     PipelineRun r;
     ca_context* ctx = nullptr;
     ca_context_create(nullptr, &ctx);
@@ -131,8 +137,22 @@ inline PipelineRun run_pipeline(const caio::MeshData& mesh, const ca_candidate_o
                 r.status = measure_skeleton(ctx, v, ak, evaluate, r.alt_edges, r.alt_faces, r.alt_components,
                                             r.alt_betti1, r.alt_eval);
         }
+        ca_skeleton* fk = nullptr;
+        if (r.status == CA_OK && fitted) {
+            r.status = ca_connect(ctx, set, sel, fitted, &fk);
+            if (r.status == CA_OK) {
+                ca_skeleton_stats ks;
+                ks.struct_size = sizeof ks;
+                ca_skeleton_stats_get(fk, &ks);
+                r.t_fit = ks.fit_time_s;
+                r.fit_uncovered = size_t(ks.fit_uncovered);
+                r.status = measure_skeleton(ctx, v, fk, evaluate, r.fit_edges, r.fit_faces, r.fit_components,
+                                            r.fit_betti1, r.fit_eval);
+            }
+        }
         if (r.status != CA_OK) r.message = ca_context_last_error(ctx);
         ca_skeleton_destroy(ak);
+        ca_skeleton_destroy(fk);
     } else {
         r.message = ca_context_last_error(ctx);
     }

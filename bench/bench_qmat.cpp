@@ -122,7 +122,7 @@ int main(int argc, char** argv) {
     const Model models[] = {{"crab", 2.154, 1.571, 1.759}, {"dog", 3.009, 1.523, 2.077},
                             {"fertility", 3.438, 2.451, 2.703}, {"hand", 0.685, 0.80, 1.750},
                             {"vase", 2.944, 2.130, 3.183}};
-    struct Row { std::string name; size_t qv; double qhd; size_t v0; double hd0; size_t vk; double hdk; double paper; };
+    struct Row { std::string name; size_t qv; double qhd; size_t v0; double hd0, hd0f; size_t vk; double hdk, hdkf, tf; double paper; };
     std::vector<Row> rows;
     std::printf("%-10s %5s %9s %9s %9s %8s   %s\n", "model", "|V|", "S->E %", "E->S %",
                 "two-sided", "time s", "reference S->E / E->S");
@@ -159,24 +159,28 @@ int main(int argc, char** argv) {
         so.time_limit_s = 20;
         ca_connect_options cop;
         ca_connect_options_init(&cop);
-        const bench::PipelineRun d = bench::run_pipeline(md, co, so, cop, true);
+        ca_connect_options fit = cop;
+        fit.fit = 1;
+        const bench::PipelineRun d = bench::run_pipeline(md, co, so, cop, true, nullptr, &fit);
         so.target_count = uint32_t(sk.balls.size());
-        const bench::PipelineRun k = bench::run_pipeline(md, co, so, cop, true);
-        rows.push_back({m.name, sk.balls.size(), r.hd_two_sided, d.balls, d.status == CA_OK ? d.eval.hd_two_sided : -1,
-                        k.balls, k.status == CA_OK ? k.eval.hd_two_sided : -1, m.paper_hd});
+        const bench::PipelineRun k = bench::run_pipeline(md, co, so, cop, true, nullptr, &fit);
+        const bool dk = d.status == CA_OK, kk = k.status == CA_OK;
+        rows.push_back({m.name, sk.balls.size(), r.hd_two_sided, d.balls, dk ? d.eval.hd_two_sided : -1,
+                        dk ? d.fit_eval.hd_two_sided : -1, k.balls, kk ? k.eval.hd_two_sided : -1,
+                        kk ? k.fit_eval.hd_two_sided : -1, kk ? k.t_fit : -1, m.paper_hd});
     }
     std::printf("\n## Two-sided Hausdorff distance (%% of the bbox diagonal), one evaluator for all\n\n");
-    std::printf("| model | Q-MAT |V| | Q-MAT HD | ours, delta 0.02: |V| | HD | ours at Q-MAT's |V|: |V| | HD | paper's Coverage Axis HD (its evaluator) |\n");
-    std::printf("|---|---|---|---|---|---|---|---|\n");
-    double sq = 0, s0 = 0, sk_ = 0, sp = 0;
+    std::printf("| model | Q-MAT |V| | Q-MAT HD | ours, delta 0.02: |V| | HD | fitted HD | ours at Q-MAT's |V|: |V| | HD | fitted HD | fit s | paper's Coverage Axis HD (its evaluator) |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+    double sq = 0, s0 = 0, s0f = 0, sk_ = 0, skf = 0, sp = 0;
     for (const Row& r : rows) {
-        std::printf("| %s | %zu | %.3f | %zu | %.3f | %zu | %.3f | %.3f |\n", r.name.c_str(), r.qv, r.qhd, r.v0, r.hd0,
-                    r.vk, r.hdk, r.paper);
-        sq += r.qhd; s0 += r.hd0; sk_ += r.hdk; sp += r.paper;
+        std::printf("| %s | %zu | %.3f | %zu | %.3f | %.3f | %zu | %.3f | %.3f | %.3f | %.3f |\n", r.name.c_str(), r.qv, r.qhd,
+                    r.v0, r.hd0, r.hd0f, r.vk, r.hdk, r.hdkf, r.tf, r.paper);
+        sq += r.qhd; s0 += r.hd0; s0f += r.hd0f; sk_ += r.hdk; skf += r.hdkf; sp += r.paper;
     }
     if (!rows.empty()) {
         const double n = double(rows.size());
-        std::printf("| mean | | %.3f | | %.3f | | %.3f | %.3f |\n", sq / n, s0 / n, sk_ / n, sp / n);
+        std::printf("| mean | | %.3f | | %.3f | %.3f | | %.3f | %.3f | | %.3f |\n", sq / n, s0 / n, s0f / n, sk_ / n, skf / n, sp / n);
     }
     timing_row();
     return failures ? 1 : 0;

@@ -12,6 +12,7 @@
 #include "timing.h"
 #include "winding.h"
 
+#include <Eigen/Geometry>
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
@@ -110,8 +111,7 @@ public:
                         out[i] = residual_row(env, sk.balls, surface_[i], 0);
                     } else {
                         const Vec3& x = boundary[i - ns];
-                        const double d = distance_->distance(x);
-                        out[i] = residual_row(env, sk.balls, x, winding_->inside(x) ? -d : d);
+                        out[i] = residual_row(env, sk.balls, x, signed_distance(x));
                     }
                 }
             }))
@@ -119,6 +119,26 @@ public:
         max_abs = 0;
         for (const Row& r : out) max_abs = std::max(max_abs, std::abs(r.r));
         return !monitor_.cancelled();
+    }
+
+    // Distance to the surface, negative inside. The side is that of the closest triangle's plane
+    // when x lies along its normal (the closest point is inside the triangle, where that is exact),
+    // else the winding number's.
+    double signed_distance(const Vec3& x) const {
+        Vec3 y;
+        uint32_t t = 0;
+        const double d = distance_->distance(x, &y, &t);
+        if (d > 0) {
+            const Tri& tri = set_.surface.mesh.triangles[t];
+            const auto& V = set_.surface.mesh.vertices;
+            const Vec3 n = (V[tri[1]] - V[tri[0]]).cross(V[tri[2]] - V[tri[0]]);
+            const double nn = n.norm();
+            if (nn > 0) {
+                const double c = (x - y).dot(n) / (nn * d);
+                if (std::abs(c) > 1 - 1e-6) return c > 0 ? d : -d;
+            }
+        }
+        return winding_->inside(x) ? -d : d;
     }
 
     // The damped, weighted Gauss-Newton step (to subtract from the parameters), 4 per ball.
