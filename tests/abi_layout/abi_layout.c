@@ -95,6 +95,8 @@ int main(void) {
     FIELD(ca_connect_options, remove_outside);
     FIELD(ca_connect_options, fill_holes);
     FIELD(ca_connect_options, reconnect);
+    FIELD(ca_connect_options, fit);
+    FIELD(ca_connect_options, fit_iterations);
     STRUCT(ca_skeleton_stats);
     FIELD(ca_skeleton_stats, struct_size);
     FIELD(ca_skeleton_stats, vertices);
@@ -105,6 +107,11 @@ int main(void) {
     FIELD(ca_skeleton_stats, betti1);
     FIELD(ca_skeleton_stats, time_s);
     FIELD(ca_skeleton_stats, method);
+    FIELD(ca_skeleton_stats, fit_time_s);
+    FIELD(ca_skeleton_stats, fit_error_before);
+    FIELD(ca_skeleton_stats, fit_error_after);
+    FIELD(ca_skeleton_stats, fit_uncovered);
+    FIELD(ca_skeleton_stats, fitted);
     STRUCT(ca_skeleton_view);
     FIELD(ca_skeleton_view, struct_size);
     FIELD(ca_skeleton_view, centers);

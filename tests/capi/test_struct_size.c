@@ -9,7 +9,8 @@
 #include <stdio.h>
 #include <string.h>
 
-/* ---- the layouts of ABI 1 (ca_context_desc and ca_select_stats grew in ABI 2) ---- */
+/* ---- the layouts of ABI 1 (ca_context_desc, ca_select_stats, ca_connect_options and
+   ca_skeleton_stats grew in ABI 2) ---- */
 typedef struct v1_context_desc {
     uint32_t struct_size;
     ca_alloc_fn alloc;
@@ -30,6 +31,19 @@ typedef struct v1_select_stats {
     uint64_t rows_before, cols_before, rows_after, cols_after, forced, components, probes, parts;
     double scale_used;
 } v1_select_stats;
+
+typedef struct v1_connect_options {
+    uint32_t struct_size;
+    int32_t method, remove_outside, fill_holes, reconnect;
+} v1_connect_options;
+
+typedef struct v1_skeleton_stats {
+    uint32_t struct_size;
+    uint64_t vertices, edges, faces, components, isolated;
+    int64_t betti1;
+    double time_s;
+    int32_t method;
+} v1_skeleton_stats;
 
 #define CANARY 0xA5
 static int canary_intact(const unsigned char* p, size_t n) {
@@ -184,12 +198,55 @@ static void test_old_output_struct_and_lifetimes(void) {
     ca_context_destroy(ctx);
 }
 
+/* ABI 1 connect options (no fit field: not fitted) and skeleton stats on the box; the current
+   layout with fit on fits the balls and reports it. */
+static void test_connect_layouts(void) {
+    ca_context* ctx = NULL;
+    ca_candidate_set* set = NULL;
+    ca_selection* sel = NULL;
+    ca_skeleton* sk = NULL;
+    ca_surface_view v = box_view();
+    struct { v1_connect_options o; unsigned char tail[16]; } old;
+    struct { v1_skeleton_stats s; unsigned char tail[64]; } oks;
+    ca_connect_options cop;
+    ca_skeleton_stats ks;
+    CHECK(ca_context_create(NULL, &ctx) == CA_OK);
+    CHECK(ca_candidates(ctx, &v, NULL, &set) == CA_OK);
+    CHECK(ca_select(ctx, set, NULL, &sel) == CA_OK);
+    memset(&old, 0xFF, sizeof old); /* a fit field read past the size would be -1: on */
+    old.o.struct_size = (uint32_t)sizeof old.o;
+    old.o.method = CA_CONNECT_AUTO;
+    old.o.remove_outside = old.o.fill_holes = old.o.reconnect = 1;
+    CHECK(ca_connect(ctx, set, sel, (const ca_connect_options*)(void*)&old, &sk) == CA_OK);
+    ks.struct_size = sizeof ks;
+    CHECK(ca_skeleton_stats_get(sk, &ks) == CA_OK && ks.fitted == 0 && ks.fit_time_s == 0);
+    memset(&oks, CANARY, sizeof oks);
+    oks.s.struct_size = (uint32_t)sizeof oks.s;
+    CHECK(ca_skeleton_stats_get(sk, (ca_skeleton_stats*)(void*)&oks) == CA_OK && oks.s.vertices == ks.vertices &&
+          canary_intact(oks.tail, sizeof oks.tail));
+    ca_skeleton_destroy(sk);
+    sk = NULL;
+    ca_connect_options_init(&cop);
+    CHECK(cop.fit == 0 && cop.fit_iterations == 10);
+    cop.fit = 1;
+    CHECK(ca_connect(ctx, set, sel, &cop, &sk) == CA_OK);
+    CHECK(ca_skeleton_stats_get(sk, &ks) == CA_OK && ks.fitted == 1 && ks.fit_error_after <= ks.fit_error_before);
+    ca_skeleton_destroy(sk);
+    sk = NULL;
+    cop.fit_iterations = -1;
+    CHECK(ca_connect(ctx, set, sel, &cop, &sk) == CA_ERROR_INVALID_ARGUMENT && sk == NULL);
+    ca_selection_destroy(sel);
+    ca_candidate_set_destroy(set);
+    ca_context_destroy(ctx);
+}
+
 int main(void) {
     CHECK(ca_abi_version() == 2 && CA_ABI_VERSION == 2);
     test_old_input_struct();
     test_defaults_write_only_the_callers_size();
     test_sizes_refused();
     test_old_output_struct_and_lifetimes();
+    test_connect_layouts();
     printf("test_struct_size: %d checks, %d failed\n", checks, failures);
     return failures ? 1 : 0;
 }

@@ -44,13 +44,14 @@ class _SelectStats(Structure):
 
 class _ConnectOptions(Structure):
     _fields_ = [("struct_size", c_uint32), ("method", c_int32), ("remove_outside", c_int32), ("fill_holes", c_int32),
-                ("reconnect", c_int32)]
+                ("reconnect", c_int32), ("fit", c_int32), ("fit_iterations", c_int32)]
 
 
 class _SkeletonStats(Structure):
     _fields_ = [("struct_size", c_uint32), ("vertices", c_uint64), ("edges", c_uint64), ("faces", c_uint64),
                 ("components", c_uint64), ("isolated", c_uint64), ("betti1", c_int64), ("time_s", c_double),
-                ("method", c_int32)]
+                ("method", c_int32), ("fit_time_s", c_double), ("fit_error_before", c_double),
+                ("fit_error_after", c_double), ("fit_uncovered", c_uint64), ("fitted", c_int32)]
 
 
 class _SkeletonView(Structure):
