@@ -107,6 +107,10 @@ check "evaluate command runs" test $? -eq 0
 # the .ma holds 9 significant digits, so the two agree to about that
 check "evaluate command gives the same two-sided distance" awk -v a="$(json_field hd_two_sided "$tmp/e.json")" -v b="$(json_field hd_two_sided "$tmp/e2.json")" 'BEGIN{d=a-b; if(d<0)d=-d; exit !(a > 0 && d < 1e-6*a)}'
 printf '2 0 0\nv 0 0 0 1\n' > "$tmp/bad.ma"
+"$tool" "$data/fox.obj" -o "$tmp/f.ma" --fit --evaluate --json > "$tmp/f.json"
+check "--fit runs" test $? -eq 0
+check "--fit keeps the balls and edges" test "$(json_field selected "$tmp/f.json") $(json_field edges "$tmp/f.json")" = "$(json_field selected "$tmp/e.json") $(json_field edges "$tmp/e.json")"
+check "--fit moves the balls" bash -c "! cmp -s '$tmp/e.ma' '$tmp/f.ma'"
 "$tool" evaluate "$data/fox.obj" "$tmp/bad.ma" > /dev/null 2> "$tmp/err"
 check "evaluate: a malformed .ma is a clear failure" test $? -eq 3 -a -s "$tmp/err"
 

@@ -2,7 +2,7 @@
 // sphere's centre and radius; on a capsule and a torus (medial route) the fit lowers the
 // evaluator's two-sided Hausdorff distance, keeps edges and faces, keeps every centre inside and
 // every radius within the distance to the surface plus the tolerance (brute force), and reports
-// the cover samples left uncovered as an independent count does.
+// the cover samples left uncovered as an independent count does; a power below 2 is refused.
 #include <doctest/doctest.h>
 
 #include "candidates.h"
@@ -34,7 +34,7 @@ double two_sided(const ca::CandidateSet& set, const ca::Skeleton& sk) {
 
 }  // namespace
 
-TEST_CASE("test_fit: one misplaced ball in a sphere moves to the sphere's centre and radius") {
+TEST_CASE("test_fit: one misplaced ball in a sphere moves to the sphere's centre and radius; bad options refused") {
     const ca::CandidateSet set = candidates(shapes::sphere(1.0, 32, 64));
     // internal units: the sphere is centred at (0.5, 0.5, 0.5) with radius 0.5
     ca::Selection sel;
@@ -50,6 +50,8 @@ TEST_CASE("test_fit: one misplaced ball in a sphere moves to the sphere's centre
     CHECK(stats.error_after < stats.error_before);
     CHECK((sk.balls[0].center - ca::Vec3(0.5, 0.5, 0.5)).norm() < 0.01);
     CHECK(std::abs(sk.balls[0].radius - 0.5) < 0.01);
+    opt.power = 1;   // below 2: refused
+    CHECK(ca::fit_skeleton(set, sel, opt, ca::Monitor{}, sk, stats).code == ca::Code::invalid_argument);
 }
 
 TEST_CASE("test_fit: capsule and torus: lower Hausdorff distance, same topology, balls inside") {
@@ -87,18 +89,4 @@ TEST_CASE("test_fit: capsule and torus: lower Hausdorff distance, same topology,
         }
         CHECK(stats.uncovered == uncovered);
     }
-}
-
-TEST_CASE("test_fit: bad options are refused") {
-    const ca::CandidateSet set = candidates(shapes::sphere(1.0, 16, 32));
-    ca::Selection sel;
-    sel.indices = {0};
-    sel.dilated_radii = {0.3};
-    sel.delta = 0.02;
-    ca::Skeleton sk;
-    sk.balls = {{ca::Vec3(0.5, 0.5, 0.5), 0.3}};
-    ca::FitOptions opt;
-    opt.power = 1;
-    ca::FitStats stats;
-    CHECK(ca::fit_skeleton(set, sel, opt, ca::Monitor{}, sk, stats).code == ca::Code::invalid_argument);
 }
