@@ -102,6 +102,7 @@ namespace CoverageAxis
         {
             public uint struct_size;
             public int method, remove_outside, fill_holes, reconnect;
+            public int fit, fit_iterations;   // ABI 2
         }
 
         [StructLayout(LayoutKind.Sequential)]
@@ -112,6 +113,9 @@ namespace CoverageAxis
             public long betti1;
             public double time_s;
             public int method;
+            public double fit_time_s, fit_error_before, fit_error_after;   // ABI 2
+            public ulong fit_uncovered;
+            public int fitted;
         }
 
         [StructLayout(LayoutKind.Sequential)]

@@ -102,6 +102,8 @@ struct ConnectOptions
     remove_outside::Int32
     fill_holes::Int32
     reconnect::Int32
+    fit::Int32             # ABI 2
+    fit_iterations::Int32
 end
 
 struct SkeletonStats
@@ -114,6 +116,11 @@ struct SkeletonStats
     betti1::Int64
     time_s::Float64
     method::Int32
+    fit_time_s::Float64    # ABI 2
+    fit_error_before::Float64
+    fit_error_after::Float64
+    fit_uncovered::UInt64
+    fitted::Int32
 end
 
 struct SkeletonView

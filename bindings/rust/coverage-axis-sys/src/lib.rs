@@ -190,6 +190,10 @@ ca_struct!(ca_connect_options {
     remove_outside: i32,
     fill_holes: i32,
     reconnect: i32,
+    /// ABI 2
+    fit: i32,
+    /// ABI 2
+    fit_iterations: i32,
 });
 
 ca_struct!(#[derive(Debug, Default)] ca_skeleton_stats {
@@ -202,6 +206,16 @@ ca_struct!(#[derive(Debug, Default)] ca_skeleton_stats {
     betti1: i64,
     time_s: f64,
     method: i32,
+    /// ABI 2
+    fit_time_s: f64,
+    /// ABI 2
+    fit_error_before: f64,
+    /// ABI 2
+    fit_error_after: f64,
+    /// ABI 2
+    fit_uncovered: u64,
+    /// ABI 2
+    fitted: i32,
 });
 
 ca_struct!(ca_skeleton_view {
