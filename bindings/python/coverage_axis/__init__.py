@@ -16,7 +16,7 @@ from ._library import (ABI_VERSION, STATUS_NAMES, CoverageAxisError, LibraryNotF
 from ._library import (CA_OK, CA_ERROR_INVALID_ARGUMENT, CA_ERROR_NULL_POINTER, CA_ERROR_STRUCT_SIZE,
                        CA_ERROR_INVALID_INPUT, CA_ERROR_DEGENERATE_INPUT, CA_ERROR_UNCOVERABLE, CA_ERROR_GEOMETRY,
                        CA_ERROR_SOLVER, CA_ERROR_CANCELLED, CA_ERROR_OUT_OF_MEMORY, CA_ERROR_BUFFER_TOO_SMALL,
-                       CA_ERROR_INTERNAL, CA_ERROR_NO_CANDIDATES)
+                       CA_ERROR_INTERNAL, CA_ERROR_NO_CANDIDATES, CA_ERROR_TIME_LIMIT)
 from ._steps import CandidateSet, Selection, Skeleton, candidates, connect, defaults, evaluate, select, skeletonize
 
 __all__ = ["HAVE_NUMPY", "Context", "ABI_VERSION", "STATUS_NAMES", "CoverageAxisError", "LibraryNotFoundError",
@@ -25,7 +25,7 @@ __all__ = ["HAVE_NUMPY", "Context", "ABI_VERSION", "STATUS_NAMES", "CoverageAxis
            "CA_OK", "CA_ERROR_INVALID_ARGUMENT", "CA_ERROR_NULL_POINTER", "CA_ERROR_STRUCT_SIZE",
            "CA_ERROR_INVALID_INPUT", "CA_ERROR_DEGENERATE_INPUT", "CA_ERROR_UNCOVERABLE", "CA_ERROR_GEOMETRY",
            "CA_ERROR_SOLVER", "CA_ERROR_CANCELLED", "CA_ERROR_OUT_OF_MEMORY", "CA_ERROR_BUFFER_TOO_SMALL",
-           "CA_ERROR_INTERNAL", "CA_ERROR_NO_CANDIDATES"]
+           "CA_ERROR_INTERNAL", "CA_ERROR_NO_CANDIDATES", "CA_ERROR_TIME_LIMIT"]
 
 
 def version():
