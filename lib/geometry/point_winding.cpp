@@ -6,12 +6,14 @@
 // query is farther than beta * radius from its centre; leaves are summed exactly.
 #include "point_winding.h"
 #include "bvh.h"
+#include "far_field.h"
 #include "kdtree.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace ca {
+using detail::Expansion;
 namespace {
 
 constexpr double kFourPi = 4.0 * 3.14159265358979323846;
@@ -24,30 +26,6 @@ double dipole(const Vec3& q, const Vec3& p, const Vec3& moment) {
     return moment.dot(r) / (r2 * std::sqrt(r2));
 }
 
-struct Expansion {
-    Vec3 centre = Vec3::Zero();
-    double radius = 0;
-    Vec3 N = Vec3::Zero();
-    Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
-    Eigen::Matrix3d Q[3] = {Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
-    // K(r).N + J(r):M + 1/2 H(r):Q with K(r) = r / |r|^3, r = centre - q (the terms of the mesh
-    // expansion in winding.cpp, with point dipoles: S_i = d_i d_i^T).
-    double eval(const Vec3& q) const {
-        const Vec3 r = centre - q;
-        const double r2 = r.squaredNorm();
-        const double inv = 1.0 / std::sqrt(r2), inv3 = inv * inv * inv, inv5 = inv3 * inv * inv;
-        const double inv7 = inv5 * inv * inv;
-        double rrrQ = 0, diagQ = 0, trQ = 0;
-        for (int i = 0; i < 3; ++i) {
-            const Vec3 Qr = Q[i] * r;
-            rrrQ += r[i] * r.dot(Qr);
-            diagQ += Qr[i];
-            trQ += r[i] * Q[i].trace();
-        }
-        return N.dot(r) * inv3 + M.trace() * inv3 - 3.0 * r.dot(M * r) * inv5 +
-               0.5 * (15.0 * rrrQ * inv7 - 3.0 * (2.0 * diagQ + trQ) * inv5);
-    }
-};
 
 // Area of the convex polygon `poly` (2-D, counter-clockwise or not).
 double polygon_area(const std::vector<Eigen::Vector2d>& poly) {

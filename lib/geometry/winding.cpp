@@ -5,10 +5,12 @@
 // beta * radius from that centre and recurses otherwise (leaves are summed exactly).
 #include "winding.h"
 #include "bvh.h"
+#include "far_field.h"
 #include <Eigen/Geometry>
 #include <cmath>
 
 namespace ca {
+using detail::Expansion;
 namespace {
 
 constexpr double kFourPi = 4.0 * 3.14159265358979323846;
@@ -24,36 +26,6 @@ double solid_angle(const Vec3& q, const Vec3& a0, const Vec3& b0, const Vec3& c0
     return 2.0 * std::atan2(num, den);
 }
 
-// Far-field expansion of one node's solid-angle field (Barill et al. 2018, eq. 6-8), with
-// A_t = triangle area * unit normal, d_t = centroid_t - centre, S_t = E[(x - centre)(x - centre)^T]
-// over triangle t:  N = sum A_t,  M = sum A_t d_t^T,  Q[i] = sum A_t,i S_t.
-struct Expansion {
-    Vec3 centre = Vec3::Zero();
-    double radius = 0;
-    Vec3 N = Vec3::Zero();
-    Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
-    Eigen::Matrix3d Q[3] = {Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
-
-    // Solid angle at q (not yet divided by 4 pi). With r = centre - q the kernel is
-    // K(r) = r / |r|^3 and the three terms are K.N + J:M + 1/2 H:Q.
-    double eval(const Vec3& q) const {
-        const Vec3 r = centre - q;
-        const double r2 = r.squaredNorm();
-        const double inv = 1.0 / std::sqrt(r2), inv3 = inv * inv * inv, inv5 = inv3 * inv * inv;
-        const double inv7 = inv5 * inv * inv;
-        const double t1 = N.dot(r) * inv3;
-        const double t2 = M.trace() * inv3 - 3.0 * r.dot(M * r) * inv5;
-        double rrrQ = 0, diagQ = 0, trQ = 0;
-        for (int i = 0; i < 3; ++i) {
-            const Vec3 Qr = Q[i] * r;
-            rrrQ += r[i] * r.dot(Qr);
-            diagQ += Qr[i];
-            trQ += r[i] * Q[i].trace();
-        }
-        const double t3 = 0.5 * (15.0 * rrrQ * inv7 - 3.0 * (2.0 * diagQ + trQ) * inv5);
-        return t1 + t2 + t3;
-    }
-};
 
 }  // namespace
 

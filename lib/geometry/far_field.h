@@ -1,0 +1,44 @@
+// far_field.h: the far-field expansion (Barill et al. 2018, eq. 6-8) of a cluster's solid-angle
+// field about its centre, shared by the mesh and the point-cloud winding numbers: the dipole,
+// first- and second-order moment terms of the kernel K(r) = r / |r|^3.
+#pragma once
+#include "common.h"
+
+#include <cmath>
+
+namespace ca {
+namespace detail {
+
+// For triangles t: A_t = area * unit normal, d_t = centroid_t - centre, S_t = E[(x - centre)(x -
+// centre)^T] over t, and N = sum A_t, M = sum A_t d_t^T, Q[i] = sum A_t,i S_t. For point dipoles
+// of moment m_i at p_i the same with A = m_i, d = p_i - centre and S = d d^T.
+struct Expansion {
+    Vec3 centre = Vec3::Zero();
+    double radius = 0;
+    Vec3 N = Vec3::Zero();
+    Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
+    Eigen::Matrix3d Q[3] = {Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
+
+    // Solid angle at q (not yet divided by 4 pi). With r = centre - q the kernel is
+    // K(r) = r / |r|^3 and the three terms are K.N + J:M + 1/2 H:Q.
+    double eval(const Vec3& q) const {
+        const Vec3 r = centre - q;
+        const double r2 = r.squaredNorm();
+        const double inv = 1.0 / std::sqrt(r2), inv3 = inv * inv * inv, inv5 = inv3 * inv * inv;
+        const double inv7 = inv5 * inv * inv;
+        const double t1 = N.dot(r) * inv3;
+        const double t2 = M.trace() * inv3 - 3.0 * r.dot(M * r) * inv5;
+        double rrrQ = 0, diagQ = 0, trQ = 0;
+        for (int i = 0; i < 3; ++i) {
+            const Vec3 Qr = Q[i] * r;
+            rrrQ += r[i] * r.dot(Qr);
+            diagQ += Qr[i];
+            trQ += r[i] * Q[i].trace();
+        }
+        const double t3 = 0.5 * (15.0 * rrrQ * inv7 - 3.0 * (2.0 * diagQ + trQ) * inv5);
+        return t1 + t2 + t3;
+    }
+};
+
+}  // namespace detail
+}  // namespace ca
