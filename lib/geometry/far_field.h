@@ -2,6 +2,7 @@
 // field about its centre, shared by the mesh and the point-cloud winding numbers: the dipole,
 // first- and second-order moment terms of the kernel K(r) = r / |r|^3.
 #pragma once
+#include "bvh.h"
 #include "common.h"
 
 #include <cmath>
@@ -39,6 +40,34 @@ struct Expansion {
         return t1 + t2 + t3;
     }
 };
+
+// The solid angle at q (not yet divided by 4 pi) of everything under the tree `nodes`: a node
+// farther than beta * radius from its expansion's centre contributes its expansion, a leaf near
+// q the exact sum leaf_term(q, i) over its items, any other node its two children.
+template <class LeafTerm>
+double far_field_sum(const std::vector<BvhNode>& nodes, const std::vector<Expansion>& exp, double beta,
+                     const Vec3& q, LeafTerm leaf_term) {
+    double omega = 0;
+    uint32_t stack[128];   // DFS with a median-split tree: depth + 1 entries at most
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const uint32_t n = stack[--top];
+        const Expansion& e = exp[n];
+        if ((q - e.centre).squaredNorm() > beta * beta * e.radius * e.radius) {
+            omega += e.eval(q);
+            continue;
+        }
+        const BvhNode& node = nodes[n];
+        if (node.leaf()) {
+            for (uint32_t i = node.begin; i < node.end; ++i) omega += leaf_term(q, i);
+        } else {
+            stack[top++] = node.left;
+            stack[top++] = node.right;
+        }
+    }
+    return omega;
+}
 
 }  // namespace detail
 }  // namespace ca

@@ -140,26 +140,9 @@ const std::vector<double>& PointCloudWinding::areas() const { return impl_->area
 double PointCloudWinding::operator()(const Vec3& q) const {
     if (!impl_ || impl_->bvh.nodes.empty()) return 0.0;
     const Impl& m = *impl_;
-    double omega = 0;
-    uint32_t stack[128];   // median-split tree: depth + 1 entries at most
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-        const uint32_t n = stack[--top];
-        const Expansion& e = m.exp[n];
-        if ((q - e.centre).squaredNorm() > m.beta * m.beta * e.radius * e.radius) {
-            omega += e.eval(q);
-            continue;
-        }
-        const detail::BvhNode& node = m.bvh.nodes[n];
-        if (node.leaf()) {
-            for (uint32_t i = node.begin; i < node.end; ++i) omega += dipole(q, m.pos[i], m.moment[i]);
-        } else {
-            stack[top++] = node.left;
-            stack[top++] = node.right;
-        }
-    }
-    return omega / kFourPi;
+    return detail::far_field_sum(m.bvh.nodes, m.exp, m.beta, q, [&](const Vec3& p, uint32_t i) {
+               return dipole(p, m.pos[i], m.moment[i]);
+           }) / kFourPi;
 }
 
 double point_winding_brute_force(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals,

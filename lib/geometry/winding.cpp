@@ -104,27 +104,9 @@ WindingNumber& WindingNumber::operator=(WindingNumber&&) noexcept = default;
 double WindingNumber::operator()(const Vec3& q) const {
     if (!impl_ || impl_->bvh.nodes.empty()) return 0.0;
     const Impl& m = *impl_;
-    double omega = 0;
-    uint32_t stack[128];   // DFS with a median-split tree: depth + 1 entries at most
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-        const uint32_t n = stack[--top];
-        const Expansion& e = m.exp[n];
-        if ((q - e.centre).squaredNorm() > m.beta * m.beta * e.radius * e.radius) {
-            omega += e.eval(q);
-            continue;
-        }
-        const detail::BvhNode& node = m.bvh.nodes[n];
-        if (node.leaf()) {
-            for (uint32_t i = node.begin; i < node.end; ++i)
-                omega += solid_angle(q, m.tris[i][0], m.tris[i][1], m.tris[i][2]);
-        } else {
-            stack[top++] = node.left;
-            stack[top++] = node.right;
-        }
-    }
-    return omega / kFourPi;
+    return detail::far_field_sum(m.bvh.nodes, m.exp, m.beta, q, [&](const Vec3& p, uint32_t i) {
+               return solid_angle(p, m.tris[i][0], m.tris[i][1], m.tris[i][2]);
+           }) / kFourPi;
 }
 
 double winding_number_brute_force(const Mesh& mesh, const Vec3& q) {
