@@ -5,6 +5,7 @@
 
 #include <nanoflann.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -45,5 +46,22 @@ private:
     PointSetAdaptor adaptor_;
     nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PointSetAdaptor>, PointSetAdaptor, 3, size_t> tree_;
 };
+
+// Calls f(i, idx, d2, found) for every point i of pts with its `found` nearest points (at most
+// k + 1, point i itself among them; indices and squared distances, nearest first), in index
+// order from one tree: the neighbourhood loop of normal estimation, orientation and the
+// tangent-plane areas.
+template <class F>
+void for_each_neighbourhood(const std::vector<Vec3>& pts, size_t k, F&& f) {
+    if (pts.empty()) return;
+    PointTree tree(pts);
+    const size_t want = std::min(k + 1, pts.size());
+    std::vector<size_t> idx(want);
+    std::vector<double> d2(want);
+    for (size_t i = 0; i < pts.size(); ++i) {
+        const size_t found = tree.nearest(pts[i], want, idx.data(), d2.data());
+        f(i, idx.data(), d2.data(), found);
+    }
+}
 
 }  // namespace ca

@@ -14,12 +14,7 @@ namespace ca {
 std::vector<Vec3> estimate_normals(const std::vector<Vec3>& pts, size_t k) {
     std::vector<Vec3> normals(pts.size(), Vec3(0, 0, 1));
     if (pts.size() < 3) return normals;
-    PointTree tree(pts);
-    const size_t want = std::min(k + 1, pts.size());
-    std::vector<size_t> idx(want);
-    std::vector<double> d2(want);
-    for (size_t i = 0; i < pts.size(); ++i) {
-        const size_t found = tree.nearest(pts[i], want, idx.data(), d2.data());
+    for_each_neighbourhood(pts, k, [&](size_t i, const size_t* idx, const double*, size_t found) {
         Vec3 mean = Vec3::Zero();
         for (size_t j = 0; j < found; ++j) mean += pts[idx[j]];
         mean /= double(found);
@@ -28,23 +23,18 @@ std::vector<Vec3> estimate_normals(const std::vector<Vec3>& pts, size_t k) {
         Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
         const Vec3 n = es.eigenvectors().col(0);
         if (n.allFinite() && n.norm() > 0) normals[i] = n.normalized();
-    }
+    });
     return normals;
 }
 
 void orient_normals(const std::vector<Vec3>& pts, std::vector<Vec3>& normals, size_t k) {
     const size_t n = pts.size();
     if (n < 2 || normals.size() != n) return;
-    PointTree tree(pts);
-    const size_t want = std::min(k + 1, n);
     std::vector<std::vector<uint32_t>> adj(n);
-    std::vector<size_t> idx(want);
-    std::vector<double> d2(want);
-    for (size_t i = 0; i < n; ++i) {
-        const size_t found = tree.nearest(pts[i], want, idx.data(), d2.data());
+    for_each_neighbourhood(pts, k, [&](size_t i, const size_t* idx, const double*, size_t found) {
         for (size_t j = 0; j < found; ++j)
             if (idx[j] != i) adj[i].push_back(uint32_t(idx[j])), adj[idx[j]].push_back(uint32_t(i));
-    }
+    });
     // roots: the highest unvisited point first
     std::vector<uint32_t> by_height(n);
     for (uint32_t i = 0; i < n; ++i) by_height[i] = i;

@@ -56,18 +56,13 @@ void clip(std::vector<Eigen::Vector2d>& poly, const Eigen::Vector2d& dir, double
 std::vector<double> tangent_voronoi_areas(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, size_t k) {
     std::vector<double> areas(pts.size(), 0.0);
     if (pts.size() < 2) return areas;
-    PointTree tree(pts);
-    const size_t want = std::min(k + 1, pts.size());
-    std::vector<size_t> idx(want);
-    std::vector<double> d2(want);
-    for (size_t i = 0; i < pts.size(); ++i) {
-        const size_t found = tree.nearest(pts[i], want, idx.data(), d2.data());
+    for_each_neighbourhood(pts, k, [&](size_t i, const size_t* idx, const double* d2, size_t found) {
         const Vec3& n = normals[i];
         // tangent frame
         Vec3 u = n.unitOrthogonal(), v = n.cross(u);
         double half = 0;
         for (size_t j = 0; j < found; ++j) half = std::max(half, std::sqrt(d2[j]));
-        if (!(half > 0)) continue;
+        if (!(half > 0)) return;
         std::vector<Eigen::Vector2d> poly = {{-half, -half}, {half, -half}, {half, half}, {-half, half}};
         for (size_t j = 0; j < found && !poly.empty(); ++j) {
             if (idx[j] == i) continue;
@@ -78,7 +73,7 @@ std::vector<double> tangent_voronoi_areas(const std::vector<Vec3>& pts, const st
             clip(poly, e, 0.5 * len2);       // x.e <= |e|^2 / 2: the side of the bisector nearer to point i
         }
         areas[i] = poly.size() >= 3 ? polygon_area(poly) : 0.0;
-    }
+    });
     return areas;
 }
 
