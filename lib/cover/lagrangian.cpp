@@ -38,17 +38,10 @@ std::vector<uint32_t> lagrange_greedy(const Problem& P, const std::vector<double
         if (s > top.first + 1e-12) { heap.push({s, c}); continue; }
         taken[c] = 1;
         sel.push_back(c);
-        for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) {
-            const uint32_t r = P.crow[k];
-            if (covered[r]) continue;
-            covered[r] = 1;
-            --remaining;
-            for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q) {
-                const uint32_t d = P.rcol[q];
-                mu[d]--;
-                gamma[d] += u[r];
-            }
-        }
+        remaining -= cover_column(P, c, covered, [&](uint32_t r, uint32_t d) {
+            mu[d]--;
+            gamma[d] += u[r];
+        });
     }
     // redundancy: drop the columns of largest reduced cost first
     std::vector<uint32_t> cnt(P.R, 0);

@@ -41,7 +41,23 @@ uint32_t disjoint_bound(const Problem& P);
 bool covers_problem(const Problem& P, const std::vector<uint32_t>& sel);
 std::vector<Problem> split_components(const Problem& P);
 Problem restrict_columns(const Problem& P, const std::vector<uint8_t>& keep);
+// Fills the row -> column direction of Q from its column -> row direction.
 void fill_rows(Problem& Q);
+// Marks the rows of column c covered; for each row it newly covers, calls f(r, d) for every
+// column d that meets row r (c included), so that greedy scores can drop what r gave them.
+// Returns how many rows it newly covered.
+template <class F>
+uint32_t cover_column(const Problem& P, uint32_t c, std::vector<uint8_t>& covered, F&& f) {
+    uint32_t newly = 0;
+    for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) {
+        const uint32_t r = P.crow[k];
+        if (covered[r]) continue;
+        covered[r] = 1;
+        ++newly;
+        for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q) f(r, P.rcol[q]);
+    }
+    return newly;
+}
 Problem restrict_rows(const Problem& K, const std::vector<uint32_t>& rows);
 void add_spread_rows(const Problem& K, std::vector<uint32_t> cand, size_t cap, std::vector<uint32_t>& rows);
 

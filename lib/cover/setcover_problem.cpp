@@ -72,13 +72,7 @@ std::vector<uint32_t> greedy_complete(const Problem& P, const std::vector<uint32
             continue;
         }
         sel.push_back(c);
-        for (uint32_t k = P.cptr[c]; k < P.cptr[c + 1]; ++k) {
-            const uint32_t r = P.crow[k];
-            if (covered[r]) continue;
-            covered[r] = 1;
-            --remaining;
-            for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q) cnt[P.rcol[q]]--;
-        }
+        remaining -= cover_column(P, c, covered, [&](uint32_t, uint32_t d) { cnt[d]--; });
     }
     std::sort(sel.begin(), sel.end());
     return sel;
@@ -135,13 +129,7 @@ std::vector<uint32_t> capp_cover(const Problem& P, const std::vector<Vec3>& cent
         taken[best] = 1;
         sel.push_back(best);
         any_selected = true;
-        for (uint32_t k = P.cptr[best]; k < P.cptr[best + 1]; ++k) {
-            const uint32_t r = P.crow[k];
-            if (covered[r]) continue;
-            covered[r] = 1;
-            --remaining;
-            for (uint32_t q = P.rptr[r]; q < P.rptr[r + 1]; ++q) cnt[P.rcol[q]]--;
-        }
+        remaining -= cover_column(P, best, covered, [&](uint32_t, uint32_t d) { cnt[d]--; });
         const Vec3& cb = centers[P.col_id[best]];
         for (uint32_t c = 0; c < P.C; ++c) mind[c] = std::min(mind[c], (centers[P.col_id[c]] - cb).norm());
     }
@@ -210,13 +198,7 @@ std::vector<Problem> split_components(const Problem& P) {
     for (Problem& Q : out) {
         Q.C = uint32_t(Q.col_id.size());
         if (Q.cptr.empty()) Q.cptr.push_back(0);
-        Q.rptr.assign(Q.R + 1, 0);
-        for (uint32_t r : Q.crow) Q.rptr[r + 1]++;
-        for (uint32_t r = 0; r < Q.R; ++r) Q.rptr[r + 1] += Q.rptr[r];
-        Q.rcol.resize(Q.crow.size());
-        std::vector<uint32_t> next(Q.rptr.begin(), Q.rptr.end() - 1);
-        for (uint32_t c = 0; c < Q.C; ++c)
-            for (uint32_t k = Q.cptr[c]; k < Q.cptr[c + 1]; ++k) Q.rcol[next[Q.crow[k]]++] = c;
+        fill_rows(Q);
     }
     // largest first: the time budget goes to the hard parts while it lasts
     std::stable_sort(out.begin(), out.end(), [](const Problem& a, const Problem& b) { return a.crow.size() > b.crow.size(); });
@@ -237,13 +219,7 @@ Problem restrict_columns(const Problem& P, const std::vector<uint8_t>& keep) {
         Q.col_id.push_back(c);
     }
     Q.C = uint32_t(Q.col_id.size());
-    Q.rptr.assign(Q.R + 1, 0);
-    for (uint32_t r : Q.crow) Q.rptr[r + 1]++;
-    for (uint32_t r = 0; r < Q.R; ++r) Q.rptr[r + 1] += Q.rptr[r];
-    Q.rcol.resize(Q.crow.size());
-    std::vector<uint32_t> next(Q.rptr.begin(), Q.rptr.end() - 1);
-    for (uint32_t c = 0; c < Q.C; ++c)
-        for (uint32_t k = Q.cptr[c]; k < Q.cptr[c + 1]; ++k) Q.rcol[next[Q.crow[k]]++] = c;
+    fill_rows(Q);
     return Q;
 }
 
