@@ -33,10 +33,8 @@ ca_status ca_candidates(ca_context* ctx, const ca_surface_view* surface, const c
                         ca_candidate_set** out) {
     if (out) *out = nullptr;
     return capi::guarded(ctx, [&]() -> Status {
-        if (!out) return null_pointer("out");
-        if (!surface) return null_pointer("surface");
         ca_candidate_options o;
-        Status st = read_input(options, o);
+        Status st = read_arguments({{out, "out"}, {surface, "surface"}}, options, o);
         if (!st.ok()) return st;
         if (o.generator != CA_CANDIDATES_VORONOI && o.generator != CA_CANDIDATES_RANDOM)
             return ca::fail(Code::invalid_argument, "unknown candidate generator " + std::to_string(o.generator));
@@ -78,10 +76,8 @@ ca_status ca_candidates_from_arrays(ca_context* ctx, const double* samples, size
                                     ca_candidate_set** out) {
     if (out) *out = nullptr;
     return capi::guarded(ctx, [&]() -> Status {
-        if (!out) return null_pointer("out");
-        if (!samples) return null_pointer("samples");
-        if (!centers) return null_pointer("centers");
-        if (!radii) return null_pointer("radii");
+        Status st = check_pointers({{out, "out"}, {samples, "samples"}, {centers, "centers"}, {radii, "radii"}});
+        if (!st.ok()) return st;
         if (sample_count == 0) return ca::fail(Code::degenerate_input, "no surface samples");
         if (ball_count == 0) return ca::fail(Code::no_candidates, "no candidate balls");
         if (sample_count > UINT32_MAX || ball_count > UINT32_MAX)
@@ -89,7 +85,7 @@ ca_status ca_candidates_from_arrays(ca_context* ctx, const double* samples, size
         if (!(std::isfinite(reference_length) && reference_length >= 0))
             return ca::fail(Code::invalid_argument, "reference_length must be finite and >= 0");
         std::vector<Vec3> s, c;
-        Status st = read_points(samples, sample_count, sample_stride, "sample_stride", s);
+        st = read_points(samples, sample_count, sample_stride, "sample_stride", s);
         if (!st.ok()) return st;
         st = read_points(centers, ball_count, center_stride, "center_stride", c);
         if (!st.ok()) return st;

@@ -21,13 +21,12 @@ ca_status ca_connect(ca_context* ctx, const ca_candidate_set* set, const ca_sele
                      const ca_connect_options* options, ca_skeleton** out) {
     if (out) *out = nullptr;
     return capi::guarded(ctx, [&]() -> Status {
-        if (!out) return null_pointer("out");
-        if (!set) return null_pointer("set");
-        if (!selection) return null_pointer("selection");
+        Status st = check_pointers({{out, "out"}, {set, "set"}, {selection, "selection"}});
+        if (!st.ok()) return st;
         if (selection->set != set)
             return ca::fail(Code::invalid_argument, "the selection was made from another candidate set");
         ca_connect_options o;
-        Status st = read_input(options, o);
+        st = read_input(options, o);
         if (!st.ok()) return st;
         if (o.method != CA_CONNECT_POWER && o.method != CA_CONNECT_MEDIAL && o.method != CA_CONNECT_AUTO)
             return ca::fail(Code::invalid_argument, "unknown connection method " + std::to_string(o.method));

@@ -20,10 +20,9 @@ extern "C" {
 ca_status ca_evaluate(ca_context* ctx, const ca_surface_view* surface, const ca_skeleton_view* skeleton_in,
                       const ca_evaluate_options* options, ca_evaluation* result) {
     return capi::guarded(ctx, [&]() -> Status {
-        if (!surface) return null_pointer("surface");
-        if (!skeleton_in) return null_pointer("skeleton");
-        if (!result) return null_pointer("result");
-        Status st = check_struct_size<ca_evaluation>(result->struct_size);
+        Status st = check_pointers({{surface, "surface"}, {skeleton_in, "skeleton"}, {result, "result"}});
+        if (!st.ok()) return st;
+        st = check_struct_size<ca_evaluation>(result->struct_size);
         if (!st.ok()) return st;
         ca_skeleton_view view;
         st = read_input(skeleton_in, view);

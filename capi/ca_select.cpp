@@ -16,10 +16,8 @@ extern "C" {
 ca_status ca_select(ca_context* ctx, const ca_candidate_set* set, const ca_select_options* options, ca_selection** out) {
     if (out) *out = nullptr;
     return capi::guarded(ctx, [&]() -> Status {
-        if (!out) return null_pointer("out");
-        if (!set) return null_pointer("set");
         ca_select_options o;
-        Status st = read_input(options, o);
+        Status st = read_arguments({{out, "out"}, {set, "set"}}, options, o);
         if (!st.ok()) return st;
         if (o.dilation != CA_DILATE_OFFSET && o.dilation != CA_DILATE_SCALE)
             return ca::fail(Code::invalid_argument, "unknown dilation " + std::to_string(o.dilation));

@@ -11,6 +11,12 @@ using ca::Vec3;
 
 Status null_pointer(const char* what) { return ca::fail(Code::null_pointer, std::string(what) + " is NULL"); }
 
+Status check_pointers(std::initializer_list<Arg> args) {
+    for (const Arg& a : args)
+        if (!a.ptr) return null_pointer(a.name);
+    return Status::success();
+}
+
 Status check_stride(size_t stride, size_t min, const char* name, size_t& out) {
     if (stride != 0 && stride < min)
         return ca::fail(Code::invalid_argument, std::string(name) + " (" + std::to_string(stride) +

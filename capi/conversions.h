@@ -3,16 +3,33 @@
 #pragma once
 
 #include "context.h"
+#include "struct_size.h"
 
 #include "surface.h"
 
 #include <array>
 #include <cstring>
+#include <initializer_list>
 #include <vector>
 
 namespace capi {
 
 ca::Status null_pointer(const char* what);
+
+// A pointer argument and its name in the message when it is NULL.
+struct Arg {
+    const void* ptr;
+    const char* name;
+};
+// The first check of every entry point: each pointer in `args` set (the first NULL one, in
+// order, names the status).
+ca::Status check_pointers(std::initializer_list<Arg> args);
+// check_pointers, then the step's options (NULL: the defaults; read_input).
+template <class O>
+ca::Status read_arguments(std::initializer_list<Arg> args, const O* options, O& o) {
+    ca::Status st = check_pointers(args);
+    return st.ok() ? read_input(options, o) : st;
+}
 
 // A byte stride: 0 means packed (min); otherwise at least one element. Any byte count works:
 // elements are read with memcpy (read_element), so a stride need not keep them aligned.
