@@ -30,7 +30,7 @@ template <class Work>
 void run_workers(size_t workers, Work&& work) {
     std::vector<std::exception_ptr> errors(workers);
     auto guarded = [&](size_t w) {
-        try {
+        try {  // not a handler: carries the exception to the calling thread (rethrown below)
             work(w);
         } catch (...) {
             errors[w] = std::current_exception();
@@ -40,7 +40,7 @@ void run_workers(size_t workers, Work&& work) {
     size_t started = 1;
     try {
         for (; started < workers; ++started) pool.emplace_back(guarded, started);
-    } catch (const std::system_error&) {
+    } catch (const std::system_error&) {  // no thread to be had: the calling thread does the rest
     }
     for (size_t w = started; w < workers; ++w) guarded(w);
     if (workers > 0) guarded(0);
@@ -92,7 +92,7 @@ public:
         }
         try {
             thread_ = std::thread([this] { run(); });
-        } catch (const std::system_error&) {
+        } catch (const std::system_error&) {  // no thread to be had: the task runs here
             run();
         }
     }
@@ -112,7 +112,7 @@ public:
 
 private:
     void run() {
-        try {
+        try {  // not a handler: carries the exception to wait()
             task_();
         } catch (...) {
             error_ = std::current_exception();

@@ -201,133 +201,127 @@ Status select_balls(const CandidateSet& set, const SelectOptions& opt, const Mon
     if (set.balls.empty()) return fail(Code::no_candidates, "the candidate set has no balls");
     if (set.cover_samples.empty()) return fail(Code::degenerate_input, "the candidate set has no surface samples");
 
-    try {
-        const size_t n = set.balls.size();
-        std::vector<Vec3> centers(n);
-        std::vector<double> radii(n), dilated(n);
-        for (size_t i = 0; i < n; ++i) {
-            centers[i] = set.balls[i].center;
-            radii[i] = set.balls[i].radius;
-        }
-        CoverOptions cover = opt.cover;
-        if (cover.search_threads == 0) cover.search_threads = opt.threads;
-        cover.centers = &centers;
-        cover.radii = &radii;
-        const Dilation dil = opt.dilation;
-        auto make_radii = [&](double value) {
-            for (size_t i = 0; i < n; ++i) dilated[i] = dilate_with(radii[i], dil, value);
-        };
-        auto finish = [&](double value, const std::vector<double>& dil_radii) {
-            out.indices = out.cover.selected;
-            out.dilated_radii.clear();
-            for (uint32_t i : out.indices) out.dilated_radii.push_back(dil_radii[i]);
-            out.delta = dil == Dilation::offset ? value : 0;
-            out.scale = dil == Dilation::scale ? value : 0;
-            out.time_total_s = seconds_since(t0);
-        };
-        // Once a cover is solved, a budget that ran out meanwhile leaves it the result (the
-        // solver stopped early with its best cover); only a cancel discards it.
-        auto solved_report = [&] {
-            return monitor.deadline.expired() ? !monitor.cancelled() : monitor.report("selection", 1);
-        };
-        if (!monitor.report("selection", 0)) return monitor.stop_status("selection");
-
-        if (opt.target_count == 0) {
-            const double value = dil == Dilation::offset ? opt.delta : opt.scale;
-            make_radii(value);
-            Coverage cov;
-            Status st = build_coverage(set.cover_samples, centers, dilated, monitor, cov, opt.threads);
-            if (!st.ok()) return st;
-            out.time_coverage_s = seconds_since(t0);
-            if (monitor.cancelled()) return monitor.stop_status("selection");
-            st = solve_coverage(cov, set, opt, cover, monitor, out.cover, out.parts);
-            if (!st.ok()) return st;
-            out.probes = 1;
-            if (!solved_report()) return monitor.stop_status("selection");
-            finish(value, dilated);
-            return Status::success();
-        }
-
-        // Target size: bracket, then bisect. `big` is the coverage at the upper end of the
-        // bracket; every probe below it is filtered from it (coverage grows with the dilation).
-        const uint32_t K = opt.target_count;
-        const double lowest = dil == Dilation::offset ? 0.0 : 1.0;
-        const double highest = dil == Dilation::offset ? 4.0 : 1e6;  // offset 4 > the unit cube's diagonal
-        Coverage big;
-        double t_cov = 0;
-        // Solves at `value`: fits = cover found with <= K balls; an uncoverable sample counts as
-        // "too many balls".
-        CoverResult best;
-        uint32_t best_parts = 0;
-        double best_value = -1;
-        std::vector<double> best_radii;
-        auto probe = [&](double value, bool rebuild, bool& fits) -> Status {
-            if (monitor.stopped()) return monitor.stop_status("selection");
-            make_radii(value);
-            const auto tc = Clock::now();
-            Coverage cov;
-            if (rebuild) {
-                Status st = build_coverage(set.cover_samples, centers, dilated, monitor, big, opt.threads);
-                if (!st.ok()) return st;
-            } else {
-                cov = shrink_coverage(big, set.cover_samples, centers, dilated);
-            }
-            t_cov += seconds_since(tc);
-            CoverResult res;
-            uint32_t parts = 0;
-            ++out.probes;
-            Status st = solve_coverage(rebuild ? big : cov, set, opt, cover, monitor, res, parts);
-            if (st.code == Code::uncoverable) { fits = false; return Status::success(); }
-            if (!st.ok()) return st;
-            fits = res.objective <= double(K);
-            if (fits) {
-                best = std::move(res);
-                best_parts = parts;
-                best_value = value;
-                best_radii = dilated;
-            }
-            return Status::success();
-        };
-        double lo = lowest, hi = dil == Dilation::offset ? opt.delta : opt.scale;
-        bool fits = false;
-        Status st = probe(hi, true, fits);
-        if (!st.ok()) return st;
-        if (fits) {
-            bool fits_lo = false;
-            if (hi > lowest) {
-                // the lower end may already fit
-                st = probe(lowest, false, fits_lo);
-                if (!st.ok()) return st;
-            }
-            if (fits_lo || hi <= lowest) hi = lo = lowest;
-        } else {
-            for (;;) {
-                lo = hi;
-                hi = dil == Dilation::offset ? std::max(2 * hi, 0.01) : std::max(2 * hi, 1.1);
-                if (hi > highest) return fail(Code::invalid_argument, "no dilation gives a cover with target_count balls");
-                st = probe(hi, true, fits);
-                if (!st.ok()) return st;
-                if (fits) break;
-            }
-        }
-        while (hi - lo > opt.target_tolerance) {
-            const double mid = 0.5 * (lo + hi);
-            st = probe(mid, false, fits);
-            if (!st.ok()) return st;
-            if (fits) hi = mid; else lo = mid;
-        }
-        if (best_value < 0) return fail(Code::internal, "target size: no probe fitted");
-        out.cover = std::move(best);
-        out.parts = best_parts;
-        out.time_coverage_s = t_cov;
-        if (!solved_report()) return monitor.stop_status("selection");
-        finish(best_value, best_radii);
-        return Status::success();
-    } catch (const std::bad_alloc&) {
-        return fail(Code::out_of_memory, "selection: out of memory");
-    } catch (...) {
-        return fail(Code::internal, "selection: unexpected exception");
+    const size_t n = set.balls.size();
+    std::vector<Vec3> centers(n);
+    std::vector<double> radii(n), dilated(n);
+    for (size_t i = 0; i < n; ++i) {
+        centers[i] = set.balls[i].center;
+        radii[i] = set.balls[i].radius;
     }
+    CoverOptions cover = opt.cover;
+    if (cover.search_threads == 0) cover.search_threads = opt.threads;
+    cover.centers = &centers;
+    cover.radii = &radii;
+    const Dilation dil = opt.dilation;
+    auto make_radii = [&](double value) {
+        for (size_t i = 0; i < n; ++i) dilated[i] = dilate_with(radii[i], dil, value);
+    };
+    auto finish = [&](double value, const std::vector<double>& dil_radii) {
+        out.indices = out.cover.selected;
+        out.dilated_radii.clear();
+        for (uint32_t i : out.indices) out.dilated_radii.push_back(dil_radii[i]);
+        out.delta = dil == Dilation::offset ? value : 0;
+        out.scale = dil == Dilation::scale ? value : 0;
+        out.time_total_s = seconds_since(t0);
+    };
+    // Once a cover is solved, a budget that ran out meanwhile leaves it the result (the
+    // solver stopped early with its best cover); only a cancel discards it.
+    auto solved_report = [&] {
+        return monitor.deadline.expired() ? !monitor.cancelled() : monitor.report("selection", 1);
+    };
+    if (!monitor.report("selection", 0)) return monitor.stop_status("selection");
+
+    if (opt.target_count == 0) {
+        const double value = dil == Dilation::offset ? opt.delta : opt.scale;
+        make_radii(value);
+        Coverage cov;
+        Status st = build_coverage(set.cover_samples, centers, dilated, monitor, cov, opt.threads);
+        if (!st.ok()) return st;
+        out.time_coverage_s = seconds_since(t0);
+        if (monitor.cancelled()) return monitor.stop_status("selection");
+        st = solve_coverage(cov, set, opt, cover, monitor, out.cover, out.parts);
+        if (!st.ok()) return st;
+        out.probes = 1;
+        if (!solved_report()) return monitor.stop_status("selection");
+        finish(value, dilated);
+        return Status::success();
+    }
+
+    // Target size: bracket, then bisect. `big` is the coverage at the upper end of the
+    // bracket; every probe below it is filtered from it (coverage grows with the dilation).
+    const uint32_t K = opt.target_count;
+    const double lowest = dil == Dilation::offset ? 0.0 : 1.0;
+    const double highest = dil == Dilation::offset ? 4.0 : 1e6;  // offset 4 > the unit cube's diagonal
+    Coverage big;
+    double t_cov = 0;
+    // Solves at `value`: fits = cover found with <= K balls; an uncoverable sample counts as
+    // "too many balls".
+    CoverResult best;
+    uint32_t best_parts = 0;
+    double best_value = -1;
+    std::vector<double> best_radii;
+    auto probe = [&](double value, bool rebuild, bool& fits) -> Status {
+        if (monitor.stopped()) return monitor.stop_status("selection");
+        make_radii(value);
+        const auto tc = Clock::now();
+        Coverage cov;
+        if (rebuild) {
+            Status st = build_coverage(set.cover_samples, centers, dilated, monitor, big, opt.threads);
+            if (!st.ok()) return st;
+        } else {
+            cov = shrink_coverage(big, set.cover_samples, centers, dilated);
+        }
+        t_cov += seconds_since(tc);
+        CoverResult res;
+        uint32_t parts = 0;
+        ++out.probes;
+        Status st = solve_coverage(rebuild ? big : cov, set, opt, cover, monitor, res, parts);
+        if (st.code == Code::uncoverable) { fits = false; return Status::success(); }
+        if (!st.ok()) return st;
+        fits = res.objective <= double(K);
+        if (fits) {
+            best = std::move(res);
+            best_parts = parts;
+            best_value = value;
+            best_radii = dilated;
+        }
+        return Status::success();
+    };
+    double lo = lowest, hi = dil == Dilation::offset ? opt.delta : opt.scale;
+    bool fits = false;
+    Status st = probe(hi, true, fits);
+    if (!st.ok()) return st;
+    if (fits) {
+        bool fits_lo = false;
+        if (hi > lowest) {
+            // the lower end may already fit
+            st = probe(lowest, false, fits_lo);
+            if (!st.ok()) return st;
+        }
+        if (fits_lo || hi <= lowest) hi = lo = lowest;
+    } else {
+        for (;;) {
+            lo = hi;
+            hi = dil == Dilation::offset ? std::max(2 * hi, 0.01) : std::max(2 * hi, 1.1);
+            if (hi > highest) return fail(Code::invalid_argument, "no dilation gives a cover with target_count balls");
+            st = probe(hi, true, fits);
+            if (!st.ok()) return st;
+            if (fits) break;
+        }
+    }
+    while (hi - lo > opt.target_tolerance) {
+        const double mid = 0.5 * (lo + hi);
+        st = probe(mid, false, fits);
+        if (!st.ok()) return st;
+        if (fits) hi = mid; else lo = mid;
+    }
+    if (best_value < 0) return fail(Code::internal, "target size: no probe fitted");
+    out.cover = std::move(best);
+    out.parts = best_parts;
+    out.time_coverage_s = t_cov;
+    if (!solved_report()) return monitor.stop_status("selection");
+    finish(best_value, best_radii);
+    return Status::success();
 }
 
 }  // namespace ca

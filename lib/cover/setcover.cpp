@@ -569,42 +569,30 @@ namespace detail {
 Status reduce_set_cover(const Coverage& cov, const CoverOptions& opt, bool skip_uncoverable, const Monitor& monitor,
                         std::vector<uint32_t>& forced, Coverage& kernel, std::vector<uint32_t>& kernel_balls,
                         std::vector<uint32_t>& kernel_samples) {
-    try {
-        Prepared pr;
-        Status st = prepare(cov, opt, skip_uncoverable, pr);
-        if (!st.ok()) return st;
-        Problem P;
-        st = reduce_coverage(cov, pr.transpose_ok, pr.required, pr.allowed, pr.locked, monitor, forced, P);
-        if (!st.ok()) return st;
-        std::sort(forced.begin(), forced.end());
-        kernel = Coverage{};
-        kernel.n_samples = P.R;
-        kernel.n_balls = P.C;
-        kernel.ball_ptr = P.cptr;
-        kernel.ball_samples = P.crow;
-        kernel.sample_ptr = P.rptr;
-        kernel.sample_balls = P.rcol;
-        kernel_balls = P.col_id;
-        kernel_samples = P.row_id;
-        return Status::success();
-    } catch (const std::bad_alloc&) {
-        return fail(Code::out_of_memory, "set cover: out of memory");
-    } catch (...) {
-        return fail(Code::internal, "set cover: unexpected exception");
-    }
+    Prepared pr;
+    Status st = prepare(cov, opt, skip_uncoverable, pr);
+    if (!st.ok()) return st;
+    Problem P;
+    st = reduce_coverage(cov, pr.transpose_ok, pr.required, pr.allowed, pr.locked, monitor, forced, P);
+    if (!st.ok()) return st;
+    std::sort(forced.begin(), forced.end());
+    kernel = Coverage{};
+    kernel.n_samples = P.R;
+    kernel.n_balls = P.C;
+    kernel.ball_ptr = P.cptr;
+    kernel.ball_samples = P.crow;
+    kernel.sample_ptr = P.rptr;
+    kernel.sample_balls = P.rcol;
+    kernel_balls = P.col_id;
+    kernel_samples = P.row_id;
+    return Status::success();
 }
 }  // namespace detail
 
 Status solve_set_cover(const Coverage& cov, const CoverOptions& opt, bool skip_uncoverable, const Monitor& monitor,
                        CoverResult& result) {
     result = CoverResult{};
-    try {
-        return solve_impl(cov, opt, skip_uncoverable, monitor, result);
-    } catch (const std::bad_alloc&) {
-        return fail(Code::out_of_memory, "set cover: out of memory");
-    } catch (...) {
-        return fail(Code::internal, "set cover: unexpected exception");
-    }
+    return solve_impl(cov, opt, skip_uncoverable, monitor, result);
 }
 
 }  // namespace ca

@@ -165,15 +165,7 @@ Status evaluate_impl(const Mesh& surface, const Skeleton& skeleton_in, const Eva
 
 Status evaluate(const Mesh& surface, const Skeleton& skeleton, const EvaluateOptions& opt,
                 const Monitor& monitor, EvaluateResult& out) {
-    try {
-        return evaluate_impl(surface, skeleton, opt, monitor, out);
-    } catch (const std::bad_alloc&) {
-        return fail(Code::out_of_memory, "evaluate: out of memory");
-    } catch (const std::exception& e) {
-        return fail(Code::internal, std::string("evaluate: ") + e.what());
-    } catch (...) {
-        return fail(Code::internal, "evaluate: unknown error");
-    }
+    return evaluate_impl(surface, skeleton, opt, monitor, out);
 }
 
 }  // namespace ca

@@ -280,13 +280,7 @@ Status fit_impl(const CandidateSet& set, const Selection& sel, const FitOptions&
 
 Status fit_skeleton(const CandidateSet& set, const Selection& sel, const FitOptions& opt, const Monitor& monitor,
                     Skeleton& sk, FitStats& stats) {
-    try {
-        return fit_impl(set, sel, opt, monitor, sk, stats);
-    } catch (const std::bad_alloc&) {
-        return fail(Code::out_of_memory, "fit: out of memory");
-    } catch (const std::exception& e) {
-        return fail(Code::internal, std::string("fit: ") + e.what());
-    }
+    return fit_impl(set, sel, opt, monitor, sk, stats);
 }
 
 }  // namespace ca

@@ -6,7 +6,6 @@
 #include "parallel.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -40,73 +39,62 @@ Status build_coverage(const std::vector<Vec3>& samples, const std::vector<Vec3>&
         if (!std::isfinite(dilated_radii[i]) || dilated_radii[i] < 0)
             return fail(Code::invalid_input, "build_coverage: radius must be finite and >= 0");
     }
-    try {
-        Coverage cov;
-        cov.n_samples = samples.size();
-        cov.n_balls = centers.size();
-        cov.ball_ptr.assign(cov.n_balls + 1, 0);
-        if (!samples.empty() && !centers.empty()) {
-            const PointTree tree(samples);
-            // Balls are independent: in batches of kBatch balls, each thread queries a contiguous
-            // range into its own list, and the lists are appended in ball order after the batch
-            // (the same arrays for any thread count; at most one batch held twice in memory).
-            constexpr size_t kBatch = 4096;
-            const int threads_used = resolve_threads(threads);
-            std::atomic<bool> out_of_memory{false};
-            struct Range { size_t begin = 0, end = 0; std::vector<uint32_t> samples; std::vector<uint32_t> sizes; };
-            for (size_t start = 0; start < cov.n_balls; start += kBatch) {
-                const size_t stop = std::min(cov.n_balls, start + kBatch);
-                const size_t workers = std::min<size_t>(size_t(std::max(1, threads_used)), stop - start);
-                const size_t chunk = (stop - start + workers - 1) / workers;
-                std::vector<Range> ranges(workers);
-                auto query = [&](size_t w) noexcept {
-                    try {
-                        Range& rg = ranges[w];
-                        rg.begin = std::min(stop, start + w * chunk);
-                        rg.end = std::min(stop, rg.begin + chunk);
-                        std::vector<std::pair<size_t, double>> hits;
-                        for (size_t i = rg.begin; i < rg.end; ++i) {
-                            // the covers rule (coverage.h); unsorted hits: the lists are put in
-                            // ascending order once, at the end
-                            tree.within_squared(centers[i], covered_radius2(dilated_radii[i]), hits);
-                            for (const auto& h : hits) rg.samples.push_back(uint32_t(h.first));
-                            rg.sizes.push_back(uint32_t(hits.size()));
-                        }
-                    } catch (...) {  // bad_alloc on a worker thread: reported below
-                        out_of_memory = true;
-                    }
-                };
-                // a worker thread that cannot be started does its range here: the same arrays
-                run_workers(workers, query);
-                if (out_of_memory) return fail(Code::out_of_memory, "build_coverage: out of memory");
-                for (const Range& rg : ranges) {
-                    if (cov.ball_samples.size() + rg.samples.size() >= size_t(std::numeric_limits<uint32_t>::max()))
-                        return fail(Code::out_of_memory, "build_coverage: coverage relation exceeds 2^32 entries");
-                    cov.ball_samples.insert(cov.ball_samples.end(), rg.samples.begin(), rg.samples.end());
-                    uint32_t at = cov.ball_ptr[rg.begin];
-                    for (size_t i = rg.begin; i < rg.end; ++i) cov.ball_ptr[i + 1] = (at += rg.sizes[i - rg.begin]);
+    Coverage cov;
+    cov.n_samples = samples.size();
+    cov.n_balls = centers.size();
+    cov.ball_ptr.assign(cov.n_balls + 1, 0);
+    if (!samples.empty() && !centers.empty()) {
+        const PointTree tree(samples);
+        // Balls are independent: in batches of kBatch balls, each thread queries a contiguous
+        // range into its own list, and the lists are appended in ball order after the batch
+        // (the same arrays for any thread count; at most one batch held twice in memory).
+        constexpr size_t kBatch = 4096;
+        const int threads_used = resolve_threads(threads);
+        struct Range { size_t begin = 0, end = 0; std::vector<uint32_t> samples; std::vector<uint32_t> sizes; };
+        for (size_t start = 0; start < cov.n_balls; start += kBatch) {
+            const size_t stop = std::min(cov.n_balls, start + kBatch);
+            const size_t workers = std::min<size_t>(size_t(std::max(1, threads_used)), stop - start);
+            const size_t chunk = (stop - start + workers - 1) / workers;
+            std::vector<Range> ranges(workers);
+            auto query = [&](size_t w) {
+                Range& rg = ranges[w];
+                rg.begin = std::min(stop, start + w * chunk);
+                rg.end = std::min(stop, rg.begin + chunk);
+                std::vector<std::pair<size_t, double>> hits;
+                for (size_t i = rg.begin; i < rg.end; ++i) {
+                    // the covers rule (coverage.h); unsorted hits: the lists are put in
+                    // ascending order once, at the end
+                    tree.within_squared(centers[i], covered_radius2(dilated_radii[i]), hits);
+                    for (const auto& h : hits) rg.samples.push_back(uint32_t(h.first));
+                    rg.sizes.push_back(uint32_t(hits.size()));
                 }
-                if (!monitor.report("coverage", double(stop) / double(cov.n_balls)))
-                    return monitor.stop_status("coverage");
+            };
+            // a worker thread that cannot be started does its range here: the same arrays; a
+            // worker's exception (out of memory) reaches the caller after all have ended
+            run_workers(workers, query);
+            for (const Range& rg : ranges) {
+                if (cov.ball_samples.size() + rg.samples.size() >= size_t(std::numeric_limits<uint32_t>::max()))
+                    return fail(Code::out_of_memory, "build_coverage: coverage relation exceeds 2^32 entries");
+                cov.ball_samples.insert(cov.ball_samples.end(), rg.samples.begin(), rg.samples.end());
+                uint32_t at = cov.ball_ptr[rg.begin];
+                for (size_t i = rg.begin; i < rg.end; ++i) cov.ball_ptr[i + 1] = (at += rg.sizes[i - rg.begin]);
             }
+            if (!monitor.report("coverage", double(stop) / double(cov.n_balls)))
+                return monitor.stop_status("coverage");
         }
-        // The ball lists are in k-d tree order: the sample lists built from them come out
-        // ascending (balls visited in order), and the ball lists rebuilt from those too. Two
-        // linear passes instead of a sort per ball (which took a fifth of the coverage time).
-        cov.build_transpose();
-        {
-            std::vector<uint32_t> next(cov.ball_ptr.begin(), cov.ball_ptr.end() - 1);
-            for (size_t j = 0; j < cov.n_samples; ++j)
-                for (uint32_t k = cov.sample_ptr[j]; k < cov.sample_ptr[j + 1]; ++k)
-                    cov.ball_samples[next[cov.sample_balls[k]]++] = uint32_t(j);
-        }
-        if (!monitor.report("coverage", 1.0)) return monitor.stop_status("coverage");
-        out = std::move(cov);
-    } catch (const std::bad_alloc&) {
-        return fail(Code::out_of_memory, "build_coverage: out of memory");
-    } catch (...) {
-        return fail(Code::internal, "build_coverage: unexpected exception");
     }
+    // The ball lists are in k-d tree order: the sample lists built from them come out
+    // ascending (balls visited in order), and the ball lists rebuilt from those too. Two
+    // linear passes instead of a sort per ball (which took a fifth of the coverage time).
+    cov.build_transpose();
+    {
+        std::vector<uint32_t> next(cov.ball_ptr.begin(), cov.ball_ptr.end() - 1);
+        for (size_t j = 0; j < cov.n_samples; ++j)
+            for (uint32_t k = cov.sample_ptr[j]; k < cov.sample_ptr[j + 1]; ++k)
+                cov.ball_samples[next[cov.sample_balls[k]]++] = uint32_t(j);
+    }
+    if (!monitor.report("coverage", 1.0)) return monitor.stop_status("coverage");
+    out = std::move(cov);
     return Status::success();
 }
 
