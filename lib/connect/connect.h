@@ -36,7 +36,8 @@
 //    (a cone or slab bridging a concave gap, e.g. between fingers, bulges out of the shape and
 //    would spoil the Hausdorff distance). Reconnection uses the centre-line rule only, so that a
 //    connected shape keeps a connected skeleton; it accepts test points at most delta/4 outside
-//    the surface (a low-poly leg bends between its balls; the fox's foot stayed isolated).
+//    the surface (a low-poly limb bends between its balls, and a stricter rule would leave its
+//    end isolated).
 //  * fill_holes: holes bounded by 3 or 4 edges are filled with triangles (and chords) when
 //    those pass the same inside test (the power diagram misses triangles where sample cells
 //    come between the balls; a real tunnel cannot be spanned by inside triangles).

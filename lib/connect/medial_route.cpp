@@ -63,7 +63,7 @@ Status voronoi_diagram(const CandidateSet& set, int threads, const Monitor& moni
 // The medial mesh from the tetrahedra around each sample: per sample u (ascending), the faces and
 // Delaunay edges whose smallest vertex is u are grouped by a small local sort of its incident
 // tetrahedra, which gives the same elements in the same order as one global sort by
-// (vertex indices, tetrahedron) and is several times faster (cache-friendly, short sorts).
+// (vertex indices, tetrahedron), with short sorts over data that stays in cache.
 MedialMesh build_medial_mesh(const std::vector<Vec3>& pts, const std::vector<Tet>& tets,
                              const std::vector<uint8_t>& inner) {
     MedialMesh m;

@@ -39,7 +39,7 @@ Status connect_power(const CandidateSet& set, const Selection& sel, const Monito
         weights.push_back(sel.dilated_radii[i] * sel.dilated_radii[i]);
     }
     // Samples on a flat part of the surface are coplanar, a massive degeneracy for the 4-D hull
-    // with "Qt" (it makes the hull many times slower). A seeded jitter of 1e-6 (internal units,
+    // with "Qt" (it makes the hull slow). A seeded jitter of 1e-6 (internal units,
     // i.e. a millionth of the model) of their positions breaks it without changing the result.
     Rng rng(0x5eed);
     for (const Vec3& s : samples) {

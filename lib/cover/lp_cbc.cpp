@@ -37,7 +37,7 @@ using ClpModel = std::unique_ptr<ClpSimplex>;
 // A silenced Clp model of min 1'x, A x >= 1 (no row upper bounds), 0 <= x <= 1, for the columns
 // given column-major (colstart / rowidx). The caller holds the coin mutex. The time limit is
 // wall-clock time: Clp's plain limit counts the CPU time of the whole process, which the local
-// search's threads beside the LP use up two to four times faster than the clock.
+// search's threads beside the LP use up faster than the clock.
 ClpModel load_cover_lp(uint32_t rows, const std::vector<CoinBigIndex>& colstart, const std::vector<int>& rowidx,
                        double time_limit_s) {
     const size_t cols = colstart.size() - 1;
@@ -106,8 +106,8 @@ std::vector<double> lp_duals_core(const Problem& P, const std::vector<double>& c
     std::lock_guard<std::mutex> lock(coin_mutex());
     const ClpModel model = load_cover_lp(P.R, colstart, rowidx, time_limit_s);
     ClpSimplex* m = model.get();
-    // Primal simplex from the slack basis: on large covering LPs the dual simplex is several
-    // times slower, on small ones the primal is at least as fast.
+    // Primal simplex from the slack basis: on large covering LPs the dual simplex is slower,
+    // on small ones the primal is at least as fast.
     m->primal(0);
     std::vector<double> u(P.R);
     // Every round adds at least one column, so at most P.C rounds; in practice 2-5.
@@ -182,7 +182,7 @@ std::vector<double> lp_duals_rows(const Problem& P, const std::vector<double>& u
     ClpSimplex* m = model.get();
     m->primal(0);
     std::vector<double> u(P.R), x(P.C);
-    // Every round adds a column or a row, so it ends; on the |S| 30 000 kernels it took 5-10 rounds.
+    // Every round adds a column or a row, so it ends.
     for (;;) {
         if (m->status() != 0) return {};  // time limit or numerical trouble
         const double* y = m->getRowPrice();
@@ -354,11 +354,11 @@ CbcOutcome run_cbc_unguarded(const Problem& P, size_t incumbent, const CbcSettin
     std::snprintf(buf, sizeof buf, "%d", std::max(1, threads));
     Cbc_setParameter(m, "threads", buf);
     // Objective values are integral: a cover smaller than the incumbent has value <= incumbent - 1,
-    // so every node whose LP bound exceeds that is pruned (a cutoff of incumbent - 0.5 kept
-    // nodes with bounds in (incumbent - 1, incumbent - 0.5): proofs took up to 5x longer).
+    // so every node whose LP bound exceeds that is pruned (a looser cutoff such as
+    // incumbent - 0.5 would keep exploring nodes with bounds in (incumbent - 1, incumbent - 0.5)).
     std::snprintf(buf, sizeof buf, "%.4f", double(incumbent) - 1.0 + kCutoffSlack);
     Cbc_setParameter(m, "cutoff", buf);
-    // CBC's root heuristics (feasibility pump, mini branch and bound) cost seconds on 600 x 1200
+    // CBC's root heuristics (feasibility pump, mini branch and bound) are costly on large
     // kernels and rarely beat a local-search incumbent.
     if (!heuristics) Cbc_setParameter(m, "heuristicsOnOff", "off");
     if (first_solution) Cbc_setParameter(m, "maxSolutions", "1");

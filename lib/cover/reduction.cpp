@@ -253,8 +253,8 @@ private:
             if (slot_[a] != UINT32_MAX) ball_of_slot_[slot_[a]] = a;
         // From here on the state is bitwise: the samples' bitsets of kept balls (by slot), the
         // alive sets, and the list sizes. The lists are not read any more: they (and `kept`) are
-        // freed before the samples' bitsets are made, which bounds the peak memory (30 000
-        // samples: each of kept, bits_b_ and bits_s_ is 20-30 MB). The kept balls of sample j
+        // freed before the samples' bitsets are made, which bounds the peak memory (kept,
+        // bits_b_ and bits_s_ are each large on large inputs). The kept balls of sample j
         // (kept[sbeg_[j] ...]) are the slots whose bitset has j: bits_s_ is bits_b_ transposed.
         size_.resize(n_kept);
         for (uint32_t t = 0; t < n_kept; ++t) size_[t] = bsize(ball_of_slot_[t]);

@@ -196,10 +196,10 @@ struct ComponentResult {
 constexpr uint64_t kLocalSearchSteps = 1000000;
 constexpr uint64_t kLocalSearchSeed = 3;
 // Independent local-search runs (seeds kLocalSearchSeed, +1, ...): a single run's result
-// depends on its seed by a ball or two, the best of several much less.
+// depends on its seed, the best of several much less.
 constexpr int kLocalSearchStarts = 4;
-// Components of at most kSmallSearchRows rows get kSmallSearchStarts runs: on small kernels two
-// runs find covers as small as four for half the search time. Components too large for CBC
+// Components of at most kSmallSearchRows rows get kSmallSearchStarts runs: on small kernels few
+// runs already find the smallest covers, and more only cost search time. Components too large for CBC
 // (below) get kSmallSearchStarts runs too: there a run is long, and the first runs already give
 // the best covers.
 constexpr uint32_t kSmallSearchRows = 400;

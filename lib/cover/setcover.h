@@ -40,7 +40,7 @@ struct CoverOptions {
     // on expiry the best cover found so far (never worse than greedy) is returned with a valid
     // lower bound and gap. Overshoot: the reduction and the first greedy always run to the end,
     // and CBC checks its limit only between nodes, so its root LP and cut loop on a large
-    // kernel can overrun the budget (seconds on dense kernels of ~1000 x 2000).
+    // kernel can overrun the budget (by the time of one root LP on the densest kernels).
     double time_limit_s = 60.0;
     Effort effort = Effort::fast;  // see Effort
     int32_t threads = 1;          // CBC threads (1 = serial, deterministic)
