@@ -25,190 +25,210 @@ namespace {
 // each can be short. Smaller factors lose balls.
 constexpr uint64_t kStallPerElement = 5;
 constexpr uint64_t kStallMin = 2000;
+
+// The search's state over one problem: the selection, each row's cover count and weight, each
+// column's score (the weighted coverage it would gain when added, or lose when removed), the
+// uncovered rows, and the configuration-checking stamps. add/remove keep all of it consistent.
+class RowWeighting {
+public:
+    RowWeighting(const Problem& P, uint64_t seed)
+        : R_(P.R), C_(P.C), rptr_(P.rptr.data()), rcol_(P.rcol.data()), cptr_(P.cptr.data()),
+          crow_(P.crow.data()), w_(R_, 1), score_(C_, 0), cnt_(R_, 0), upos_(R_, UINT32_MAX),
+          stamp_(C_, 0), row_change_(R_, 0), removed_at_(C_, kNever), owner_xor_(R_, 0),
+          spos_(C_, UINT32_MAX), rng_{seed} {
+        // empty selection: every row uncovered, a column's score is its size
+        for (uint32_t r = 0; r < R_; ++r) uncover(r);
+        for (uint32_t c = 0; c < C_; ++c) score_[c] = int64_t(cptr_[c + 1] - cptr_[c]);
+    }
+
+    const std::vector<uint32_t>& selection() const { return sel_; }
+    bool covered() const { return uncovered_.empty(); }
+
+    void add(uint32_t c, uint64_t step) {
+        ++op_;
+        int64_t sc = 0;
+        for (uint32_t k = cptr_[c]; k < cptr_[c + 1]; ++k) {
+            const uint32_t r = crow_[k];
+            if (cnt_[r] == 0) {
+                recover(r);
+                // c's own score is set below, so it may take the update too (no branch)
+                const int64_t wr = w_[r];
+                for (uint32_t q = rptr_[r], qe = rptr_[r + 1]; q < qe; ++q) score_[rcol_[q]] -= wr;
+                sc -= wr;
+            } else if (cnt_[r] == 1) {
+                score_[owner_xor_[r]] += w_[r];
+            }
+            cnt_[r]++;
+            owner_xor_[r] ^= c;
+            row_change_[r] = op_;  // configuration change: the columns around c may enter again
+        }
+        score_[c] = sc;
+        spos_[c] = uint32_t(sel_.size());
+        sel_.push_back(c);
+        stamp_[c] = step;
+    }
+
+    void remove(uint32_t c, uint64_t step) {
+        ++op_;
+        const uint32_t p = spos_[c], last = sel_.back();
+        sel_[p] = last;
+        spos_[last] = p;
+        sel_.pop_back();
+        spos_[c] = UINT32_MAX;
+        int64_t sc = 0;
+        for (uint32_t k = cptr_[c]; k < cptr_[c + 1]; ++k) {
+            const uint32_t r = crow_[k];
+            cnt_[r]--;
+            owner_xor_[r] ^= c;
+            row_change_[r] = op_;
+            if (cnt_[r] == 0) {
+                uncover(r);
+                const int64_t wr = w_[r];
+                for (uint32_t q = rptr_[r], qe = rptr_[r + 1]; q < qe; ++q) score_[rcol_[q]] += wr;
+                sc += wr;
+            } else if (cnt_[r] == 1) {
+                score_[owner_xor_[r]] -= w_[r];
+            }
+        }
+        score_[c] = sc;
+        removed_at_[c] = op_;
+        stamp_[c] = step;
+    }
+
+    // the selected column to drop: largest score (smallest loss), ties to the oldest; not `tabu`
+    uint32_t pick_drop(uint32_t tabu) const {
+        uint32_t best = UINT32_MAX;
+        for (uint32_t c : sel_) {
+            if (c == tabu) continue;
+            if (best == UINT32_MAX || better(c, best)) best = c;
+        }
+        return best;
+    }
+
+    // the column to add: the best allowed column of a random uncovered row (any of its columns
+    // when every one has just left)
+    uint32_t pick_add() {
+        const uint32_t r = uncovered_[size_t(rng_.next() % uncovered_.size())];
+        uint32_t a = UINT32_MAX;
+        for (uint32_t q = rptr_[r]; q < rptr_[r + 1]; ++q) {
+            const uint32_t c = rcol_[q];
+            if (a == UINT32_MAX || better(c, a))
+                if (allowed(c)) a = c;  // tested only when c would be the best so far
+        }
+        return a == UINT32_MAX ? rcol_[rptr_[r]] : a;
+    }
+
+    // rows still uncovered weigh more
+    void raise_weights() {
+        for (uint32_t u : uncovered_) {
+            w_[u]++;
+            for (uint32_t q = rptr_[u]; q < rptr_[u + 1]; ++q) score_[rcol_[q]]++;
+        }
+    }
+
+private:
+    // Configuration checking, kept lazily: a column removed at operation t may enter again once
+    // a column sharing a row with it has been added or removed after t. row_change_[r] = the
+    // last operation that added or removed a column of row r; removed_at_[c] = c's last removal
+    // (kNever: never removed, allowed). Same rule as marking every neighbour on each change,
+    // at |c| reads per tested candidate instead of sum over rows of their sizes per change.
+    static constexpr uint64_t kNever = UINT64_MAX;
+
+    bool better(uint32_t c, uint32_t than) const {
+        return score_[c] > score_[than] || (score_[c] == score_[than] && stamp_[c] < stamp_[than]);
+    }
+    bool allowed(uint32_t c) const {
+        const uint64_t t = removed_at_[c];
+        if (t == kNever) return true;
+        for (uint32_t k = cptr_[c]; k < cptr_[c + 1]; ++k)
+            if (row_change_[crow_[k]] > t) return true;
+        return false;
+    }
+    void uncover(uint32_t r) { upos_[r] = uint32_t(uncovered_.size()); uncovered_.push_back(r); }
+    void recover(uint32_t r) {
+        const uint32_t p = upos_[r], last = uncovered_.back();
+        uncovered_[p] = last;
+        upos_[last] = p;
+        uncovered_.pop_back();
+        upos_[r] = UINT32_MAX;
+    }
+
+    const uint32_t R_, C_;
+    // the problem's arrays as raw pointers: read in every inner loop, never reloaded
+    const uint32_t* const rptr_;
+    const uint32_t* const rcol_;
+    const uint32_t* const cptr_;
+    const uint32_t* const crow_;
+    std::vector<int64_t> w_, score_;
+    std::vector<uint32_t> cnt_, upos_, uncovered_;
+    std::vector<uint64_t> stamp_;
+    std::vector<uint64_t> row_change_, removed_at_;
+    uint64_t op_ = 0;
+    std::vector<uint32_t> owner_xor_;  // XOR of the selected columns covering each row: the owner when one does
+    std::vector<uint32_t> sel_;        // current columns (unordered)
+    std::vector<uint32_t> spos_;
+    SplitMix64 rng_;
+};
+
+// an optimal cover found at swap `at`: tell the other runs
+void publish_optimal(SearchRace* race, uint64_t at) {
+    if (!race) return;
+    uint64_t cur = race->optimal_step.load();
+    while (at < cur && !race->optimal_step.compare_exchange_weak(cur, at)) {
+    }
+}
 }  // namespace
 
 SearchResult local_search(const Problem& P, std::vector<uint32_t> start, const SearchSettings& settings) {
     const size_t lower_bound = settings.lower_bound;
-    const uint64_t max_steps = settings.max_steps, seed = settings.seed;
-    const Deadline& deadline = settings.deadline;
-    const std::atomic<size_t>* known_bound = settings.known_bound;
-    SearchRace* race = settings.race;
     SearchResult result;
     std::sort(start.begin(), start.end());
-    // an optimal cover found at swap `at`: tell the other runs
-    auto publish = [&](uint64_t at) {
-        if (!race) return;
-        uint64_t cur = race->optimal_step.load();
-        while (at < cur && !race->optimal_step.compare_exchange_weak(cur, at)) {
-        }
-    };
     if (P.R == 0 || start.size() <= lower_bound || !covers_problem(P, start)) {
-        if (P.R == 0 || start.size() <= lower_bound) publish(0);
+        if (P.R == 0 || start.size() <= lower_bound) publish_optimal(settings.race, 0);
         result.cover = std::move(start);
         return result;
     }
-    const uint32_t R = P.R, C = P.C;
-    // raw pointers: the byte stores into `in` may alias anything, and would otherwise make the
-    // compiler reload the vectors' data pointers in every inner loop
-    const uint32_t* const rptr = P.rptr.data();
-    const uint32_t* const rcol = P.rcol.data();
-    const uint32_t* const cptr = P.cptr.data();
-    const uint32_t* const crow = P.crow.data();
-    std::vector<int64_t> w(R, 1), score(C, 0);
-    std::vector<uint32_t> cnt(R, 0), upos(R, UINT32_MAX), uncovered;
-    std::vector<uint64_t> stamp(C, 0);
-    std::vector<uint8_t> in(C, 0);
-    // Configuration checking, kept lazily: a column removed at operation t may enter again once
-    // a column sharing a row with it has been added or removed after t. row_change[r] = the last
-    // operation that added or removed a column of row r; removed_at[c] = c's last removal
-    // (kNever: never removed, allowed). Same rule as marking every neighbour on each change,
-    // at |c| reads per tested candidate instead of sum over rows of their sizes per change.
-    constexpr uint64_t kNever = UINT64_MAX;
-    std::vector<uint64_t> row_change(R, 0), removed_at(C, kNever);
-    uint64_t op = 0;
-    // XOR of the selected columns covering each row: the owner when exactly one covers it.
-    std::vector<uint32_t> owner_xor(R, 0);
-    std::vector<uint32_t> sel;  // current columns (unordered)
-    std::vector<uint32_t> spos(C, UINT32_MAX);
-    SplitMix64 rng{seed};
-
-    auto uncover = [&](uint32_t r) { upos[r] = uint32_t(uncovered.size()); uncovered.push_back(r); };
-    auto recover = [&](uint32_t r) {
-        const uint32_t p = upos[r], last = uncovered.back();
-        uncovered[p] = last;
-        upos[last] = p;
-        uncovered.pop_back();
-        upos[r] = UINT32_MAX;
-    };
-    // the one selected column covering r (cnt[r] == 1)
-    auto owner = [&](uint32_t r) { return owner_xor[r]; };
-    auto allowed = [&](uint32_t c) {
-        const uint64_t t = removed_at[c];
-        if (t == kNever) return true;
-        for (uint32_t k = cptr[c]; k < cptr[c + 1]; ++k)
-            if (row_change[crow[k]] > t) return true;
-        return false;
-    };
-    auto add = [&](uint32_t c) {
-        ++op;
-        int64_t sc = 0;
-        for (uint32_t k = cptr[c]; k < cptr[c + 1]; ++k) {
-            const uint32_t r = crow[k];
-            if (cnt[r] == 0) {
-                recover(r);
-                // c's own score is set below, so it may take the update too (no branch)
-                const int64_t wr = w[r];
-                for (uint32_t q = rptr[r], qe = rptr[r + 1]; q < qe; ++q) score[rcol[q]] -= wr;
-                sc -= wr;
-            } else if (cnt[r] == 1) {
-                score[owner(r)] += w[r];
-            }
-            cnt[r]++;
-            owner_xor[r] ^= c;
-            row_change[r] = op;  // configuration change: the columns around c may enter again
-        }
-        in[c] = 1;
-        score[c] = sc;
-        spos[c] = uint32_t(sel.size());
-        sel.push_back(c);
-    };
-    auto remove = [&](uint32_t c) {
-        ++op;
-        in[c] = 0;
-        const uint32_t p = spos[c], last = sel.back();
-        sel[p] = last;
-        spos[last] = p;
-        sel.pop_back();
-        spos[c] = UINT32_MAX;
-        int64_t sc = 0;
-        for (uint32_t k = cptr[c]; k < cptr[c + 1]; ++k) {
-            const uint32_t r = crow[k];
-            cnt[r]--;
-            owner_xor[r] ^= c;
-            row_change[r] = op;
-            if (cnt[r] == 0) {
-                uncover(r);
-                const int64_t wr = w[r];
-                for (uint32_t q = rptr[r], qe = rptr[r + 1]; q < qe; ++q) score[rcol[q]] += wr;
-                sc += wr;
-            } else if (cnt[r] == 1) {
-                score[owner(r)] -= w[r];
-            }
-        }
-        score[c] = sc;
-        removed_at[c] = op;
-    };
-    // best selected column to drop: largest score (smallest loss), ties to the oldest
-    auto pick_drop = [&](uint32_t tabu) {
-        uint32_t best = UINT32_MAX;
-        for (uint32_t c : sel) {
-            if (c == tabu) continue;
-            if (best == UINT32_MAX || score[c] > score[best] || (score[c] == score[best] && stamp[c] < stamp[best]))
-                best = c;
-        }
-        return best;
-    };
-
-    // empty selection: every row uncovered, a column's score is its size; then add the start
-    for (uint32_t r = 0; r < R; ++r) uncover(r);
-    for (uint32_t c = 0; c < C; ++c) score[c] = int64_t(cptr[c + 1] - cptr[c]);
-    for (uint32_t c : start) add(c);
+    RowWeighting search(P, settings.seed);
+    for (uint32_t c : start) search.add(c, 0);
     std::vector<uint32_t> best = start;
     uint32_t last_added = UINT32_MAX;
     uint64_t last_improved = 0;
     auto finish = [&](uint64_t at) {  // best is optimal, found at swap `at`
-        publish(at);
+        publish_optimal(settings.race, at);
         result.found_step = at;
         result.cover = std::move(best);
         return result;
     };
-    const uint64_t patience = std::max<uint64_t>(kStallMin, kStallPerElement * (uint64_t(R) + C));
+    const uint64_t patience = std::max<uint64_t>(kStallMin, kStallPerElement * (uint64_t(P.R) + P.C));
     uint64_t step_now = 0;
-    for (uint64_t step = 1; step <= max_steps; ++step) {
+    for (uint64_t step = 1; step <= settings.max_steps; ++step) {
         step_now = step;
         result.steps = step;
-        while (uncovered.empty()) {
-            if (sel.size() < best.size()) {
-                best = sel;
+        while (search.covered()) {
+            if (search.selection().size() < best.size()) {
+                best = search.selection();
                 last_improved = step;
                 std::sort(best.begin(), best.end());
                 if (best.size() <= lower_bound) return finish(step);
             }
-            const uint32_t c = pick_drop(UINT32_MAX);
-            remove(c);
-            stamp[c] = step;
+            search.remove(search.pick_drop(UINT32_MAX), step);
         }
         if ((step & 255) == 0) {
-            if (known_bound && best.size() <= known_bound->load(std::memory_order_relaxed)) return finish(last_improved);
-            if (race && step > race->optimal_step.load(std::memory_order_relaxed)) break;  // cannot win
-            if (deadline.expired()) break;
+            if (settings.known_bound && best.size() <= settings.known_bound->load(std::memory_order_relaxed))
+                return finish(last_improved);
+            if (settings.race && step > settings.race->optimal_step.load(std::memory_order_relaxed)) break;  // cannot win
+            if (settings.deadline.expired()) break;
         }
         if (step > 2 * last_improved + patience) break;  // no progress for a long while
-        // swap: drop one, add the best column (configuration allowed) for a random uncovered row
-        const uint32_t d = pick_drop(last_added);
-        if (d != UINT32_MAX) {
-            remove(d);
-            stamp[d] = step;
-        }
-        const uint32_t r = uncovered[size_t(rng.next() % uncovered.size())];
-        uint32_t a = UINT32_MAX;
-        for (uint32_t q = rptr[r]; q < rptr[r + 1]; ++q) {
-            const uint32_t c = rcol[q];
-            if (a == UINT32_MAX || score[c] > score[a] || (score[c] == score[a] && stamp[c] < stamp[a]))
-                if (allowed(c)) a = c;  // tested only when c would be the best so far
-        }
-        if (a == UINT32_MAX) a = rcol[rptr[r]];  // every candidate just left: take one anyway
-        add(a);
-        stamp[a] = step;
-        last_added = a;
-        // rows still uncovered weigh more
-        for (uint32_t u : uncovered) {
-            w[u]++;
-            for (uint32_t q = rptr[u]; q < rptr[u + 1]; ++q) score[rcol[q]]++;
-        }
+        // swap: drop one, add the best allowed column for a random uncovered row
+        const uint32_t d = search.pick_drop(last_added);
+        if (d != UINT32_MAX) search.remove(d, step);
+        last_added = search.pick_add();
+        search.add(last_added, step);
+        search.raise_weights();
     }
-    if (uncovered.empty() && sel.size() < best.size()) {
-        best = sel;
+    if (search.covered() && search.selection().size() < best.size()) {
+        best = search.selection();
         last_improved = step_now;
         std::sort(best.begin(), best.end());
     }
