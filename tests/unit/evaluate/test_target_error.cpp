@@ -57,7 +57,7 @@ std::pair<size_t, double> brute(const ca::CandidateSet& set, const ca::TargetErr
 
 }  // namespace
 
-TEST_CASE("test_target_error: fox: HD <= E with no more balls than any passing probed delta; unreachable E reported") {
+TEST_CASE("test_target_error: fox: HD <= E with no more balls than any passing probed delta and an unreachable E flagged") {
     const ca::CandidateSet set = fox_set();
     const double target = 2.6;
     const ca::TargetErrorOptions te = options(target);
