@@ -83,12 +83,7 @@ int main(int argc, char** argv) {
         const bool closed = ca::closed_mesh(to_core_mesh(mesh));
         ca_context* ctx = nullptr;
         ca_context_create(nullptr, &ctx);
-        ca_surface_view v;
-        ca_surface_view_init(&v);
-        v.positions = mesh.positions.data();
-        v.vertex_count = mesh.positions.size() / 3;
-        v.triangles = mesh.triangles.data();
-        v.triangle_count = mesh.triangles.size() / 3;
+        const ca_surface_view v = bench::surface_view(mesh);
         ca_candidate_set* set = nullptr;
         if (ca_candidates(ctx, &v, nullptr, &set) != CA_OK) {
             std::printf("| %s | candidates failed: %s |\n", bench::stem(path).c_str(), ca_context_last_error(ctx));
