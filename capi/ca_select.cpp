@@ -32,14 +32,7 @@ ca_status ca_select(ca_context* ctx, const ca_candidate_set* set, const ca_selec
             return ca::fail(Code::invalid_argument, "target_tolerance must be a finite number > 0");
         if (!(std::isfinite(o.target_error) && o.target_error >= 0))
             return ca::fail(Code::invalid_argument, "target_error must be a finite number >= 0 (percent of the bbox diagonal; 0 = off)");
-        const bool target_error = o.target_error > 0;
-        if (target_error && o.target_count)
-            return ca::fail(Code::invalid_argument, "target_error and target_count cannot both be set");
-        if (target_error && o.dilation != CA_DILATE_OFFSET)
-            return ca::fail(Code::invalid_argument, "target_error searches the offset delta: it needs CA_DILATE_OFFSET");
-        if (target_error && set->core.surface.mesh.vertices.empty())
-            return ca::fail(Code::invalid_argument,
-                            "target_error measures the skeleton against the surface: a candidate set from caller arrays has none");
+        const bool target_error = o.target_error > 0;  // the rest is checked by select_target_error
         ca::SelectOptions so;
         so.dilation = static_cast<ca::Dilation>(o.dilation);
         so.delta = o.delta;

@@ -49,7 +49,8 @@ Status select_target_error(const CandidateSet& set, const SelectOptions& opt, co
     if (!(std::isfinite(opt.target_tolerance) && opt.target_tolerance > 0))
         return fail(Code::invalid_argument, "target_tolerance must be a finite number > 0");
     if (set.surface.mesh.vertices.empty())
-        return fail(Code::invalid_argument, "target_error measures the skeleton against the surface: the candidate set has none");
+        return fail(Code::invalid_argument,
+                    "target_error measures the skeleton against the surface: the candidate set has none (caller arrays)");
     if (te.max_probes == 0) return fail(Code::invalid_argument, "max_probes must be at least 1");
 
     SelectOptions probe_opt = opt;
@@ -101,14 +102,8 @@ Status select_target_error(const CandidateSet& set, const SelectOptions& opt, co
     Status st;
     double d = opt.delta;
     if (!probe(d, passed, uncoverable, st)) return finish(st);
-    if (uncoverable) {
-        // no cover at the start: only larger deltas can pass
-        lo = 0;
-    } else if (passed) {
-        lo = d;
-    } else {
-        hi = d;
-    }
+    // no cover at the start: double until there is one (lo and hi stay 0)
+    if (!uncoverable) (passed ? lo : hi) = d;
     const double floor_delta = std::min(opt.delta, kFallbackReach);
     while (runs < te.max_probes) {
         if (lo > 0 && hi > 0) break;
@@ -123,8 +118,9 @@ Status select_target_error(const CandidateSet& set, const SelectOptions& opt, co
                 if (best.summary.balls <= 1) break;  // one ball: nothing fewer to find
             } else if (lo > 0) {
                 hi = d;
+            } else {
+                break;  // the first delta with a cover fails: larger ones are coarser still
             }
-            // uncoverable start and this probe fails: keep doubling (HD may yet fall)
         } else {
             // failing: halve until a probe passes, not below the fallback reach
             if (d <= floor_delta) break;

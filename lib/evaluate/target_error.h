@@ -49,7 +49,7 @@ struct TargetErrorResult {
 // Offset dilation only (opt.dilation == offset, opt.target_count == 0); the set must have a
 // surface (not one built from caller arrays). opt.target_tolerance is the bisection tolerance
 // on delta. A probe below the starting delta that finds samples no ball covers ends the
-// descent. When the time limit runs out after a probe has finished, the best probe so far is
+// descent; a start without a cover doubles delta until one exists. When the time limit runs out after a probe has finished, the best probe so far is
 // returned; a cancel returns the stop status.
 Status select_target_error(const CandidateSet& set, const SelectOptions& opt, const TargetErrorOptions& te,
                            const Monitor& monitor, TargetErrorResult& out);
