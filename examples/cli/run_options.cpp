@@ -158,8 +158,8 @@ bool finish_run_options(const CLI::App& app, RunOptions& o, std::string& error) 
     o.connect.method = value_of(kRoutes, o.connect_route);
     o.connect.fit = app.count("--fit") ? 1 : 0;
     if (o.select.target_error > 0 && (o.connect.fit || o.connect.method != CA_CONNECT_AUTO)) {
-        error = "--target-error measures the default connection: it takes neither --fit nor --connect " + o.connect_route;
-        if (o.connect.fit && o.connect.method == CA_CONNECT_AUTO) error = "--target-error measures the default connection: it does not take --fit";
+        error = "--target-error measures the default connection: it does not take " +
+                (o.connect.fit ? std::string("--fit") : "--connect " + o.connect_route);
         return false;
     }
     if (o.candidate_kind.rfind("random", 0) == 0 && o.candidate_kind.size() > 6) {
