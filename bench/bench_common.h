@@ -87,12 +87,8 @@ inline ca_status measure_skeleton(ca_context* ctx, const ca_surface_view& v, con
     return ca_evaluate(ctx, &v, &view, &eo, &eval);
 }
 
-inline PipelineRun run_pipeline(const caio::MeshData& mesh, const ca_candidate_options& co, const ca_select_options& so,
-                                const ca_connect_options& cop, bool evaluate = false,
-                                const ca_connect_options* alt = nullptr, const ca_connect_options* fitted = nullptr) {
-    PipelineRun r;
-    ca_context* ctx = nullptr;
-    ca_context_create(nullptr, &ctx);
+// A view of a mesh or point cloud read by examples/io (borrowed: valid while `mesh` lives).
+inline ca_surface_view surface_view(const caio::MeshData& mesh) {
     ca_surface_view v;
     ca_surface_view_init(&v);
     v.positions = mesh.positions.data();
@@ -100,6 +96,16 @@ inline PipelineRun run_pipeline(const caio::MeshData& mesh, const ca_candidate_o
     v.triangles = mesh.triangles.data();
     v.triangle_count = mesh.triangles.size() / 3;
     v.normals = mesh.normals.empty() ? nullptr : mesh.normals.data();
+    return v;
+}
+
+inline PipelineRun run_pipeline(const caio::MeshData& mesh, const ca_candidate_options& co, const ca_select_options& so,
+                                const ca_connect_options& cop, bool evaluate = false,
+                                const ca_connect_options* alt = nullptr, const ca_connect_options* fitted = nullptr) {
+    PipelineRun r;
+    ca_context* ctx = nullptr;
+    ca_context_create(nullptr, &ctx);
+    const ca_surface_view v = surface_view(mesh);
     ca_candidate_set* set = nullptr;
     ca_selection* sel = nullptr;
     ca_skeleton* sk = nullptr;

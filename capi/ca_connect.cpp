@@ -31,14 +31,8 @@ ca_status ca_connect(ca_context* ctx, const ca_candidate_set* set, const ca_sele
         if (o.method != CA_CONNECT_POWER && o.method != CA_CONNECT_MEDIAL && o.method != CA_CONNECT_AUTO)
             return ca::fail(Code::invalid_argument, "unknown connection method " + std::to_string(o.method));
         const auto t0 = std::chrono::steady_clock::now();
-        ca::ConnectOptions co;
+        const ca::ConnectOptions co = connect_options(o, set->core, ctx->desc.threads);
         const bool has_mesh = !set->core.surface.point_cloud && !set->core.surface.mesh.triangles.empty();
-        if (o.method == CA_CONNECT_AUTO) co.method = has_mesh ? ca::ConnectMethod::medial : ca::ConnectMethod::power;
-        else co.method = static_cast<ca::ConnectMethod>(o.method);
-        co.remove_outside = o.remove_outside != 0;
-        co.fill_holes = o.fill_holes != 0;
-        co.reconnect = o.reconnect != 0;
-        co.threads = ctx->desc.threads;
         ca::Skeleton sk;
         st = ca::connect_balls(set->core, selection->core, co, ctx->monitor(), sk);
         if (!st.ok()) return st;

@@ -4,6 +4,8 @@
 #include "results.h"
 #include "struct_size.h"
 
+#include "target_error.h"
+
 #include <cmath>
 
 using ca::Code;
@@ -28,6 +30,9 @@ ca_status ca_select(ca_context* ctx, const ca_candidate_set* set, const ca_selec
             return ca::fail(Code::invalid_argument, "unknown effort " + std::to_string(o.effort));
         if (o.target_count && !(std::isfinite(o.target_tolerance) && o.target_tolerance > 0))
             return ca::fail(Code::invalid_argument, "target_tolerance must be a finite number > 0");
+        if (!(std::isfinite(o.target_error) && o.target_error >= 0))
+            return ca::fail(Code::invalid_argument, "target_error must be a finite number >= 0 (percent of the bbox diagonal; 0 = off)");
+        const bool target_error = o.target_error > 0;  // the rest is checked by select_target_error
         ca::SelectOptions so;
         so.dilation = static_cast<ca::Dilation>(o.dilation);
         so.delta = o.delta;
@@ -49,8 +54,28 @@ ca_status ca_select(ca_context* ctx, const ca_candidate_set* set, const ca_selec
         ca_selection& r = *res.obj;
         retain_set(set);
         r.set = set;
-        st = ca::select_balls(set->core, so, ctx->monitor(), r.core);
-        if (!st.ok()) return st;
+        double hd_reached = -1;
+        if (target_error) {
+            ca::TargetErrorOptions te;
+            te.target_error = o.target_error;
+            te.connect = connect_options(defaults<ca_connect_options>(), set->core, ctx->desc.threads);
+            const ca_evaluate_options eo = defaults<ca_evaluate_options>();
+            te.evaluate.surface_samples = eo.surface_samples;
+            te.evaluate.envelope_samples = eo.envelope_samples;
+            te.evaluate.seed = eo.seed;
+            te.evaluate.threads = ctx->desc.threads;
+            ca::TargetErrorResult ter;
+            st = ca::select_target_error(set->core, so, te, ctx->monitor(), ter);
+            if (!st.ok()) return st;
+            r.core = std::move(ter.selection);
+            hd_reached = ter.evaluation.hd_two_sided;
+            if (!ter.reached)
+                ctx->log(2, "target_error " + std::to_string(o.target_error) + " % not reached: the lowest HD found is " +
+                                std::to_string(hd_reached) + " %");
+        } else {
+            st = ca::select_balls(set->core, so, ctx->monitor(), r.core);
+            if (!st.ok()) return st;
+        }
         const ca::Normalization& n = set->core.surface.norm;
         const size_t k = r.core.indices.size();
         r.indices.assign(r.allocator, k);
@@ -88,6 +113,7 @@ ca_status ca_select(ca_context* ctx, const ca_candidate_set* set, const ca_selec
         s.time_coverage_s = r.core.time_coverage_s;
         s.cbc_components = cr.cbc_components;
         s.rowgen_rounds = cr.rowgen_rounds;
+        s.hd_reached = hd_reached;
         if (!cr.uncovered.empty())
             ctx->log(2, std::to_string(cr.uncovered.size()) + " samples are covered by no ball and were skipped");
         *out = res.release();

@@ -66,4 +66,16 @@ void fill(Array<double>& a, const Allocator& al, const std::vector<Vec3>& pts, c
     }
 }
 
+ca::ConnectOptions connect_options(const ca_connect_options& o, const ca::CandidateSet& set, int32_t threads) {
+    ca::ConnectOptions co;
+    const bool has_mesh = !set.surface.point_cloud && !set.surface.mesh.triangles.empty();
+    if (o.method == CA_CONNECT_AUTO) co.method = has_mesh ? ca::ConnectMethod::medial : ca::ConnectMethod::power;
+    else co.method = static_cast<ca::ConnectMethod>(o.method);
+    co.remove_outside = o.remove_outside != 0;
+    co.fill_holes = o.fill_holes != 0;
+    co.reconnect = o.reconnect != 0;
+    co.threads = threads;
+    return co;
+}
+
 }  // namespace capi

@@ -5,6 +5,7 @@
 #include "context.h"
 #include "struct_size.h"
 
+#include "connect.h"
 #include "surface.h"
 
 #include <array>
@@ -53,5 +54,9 @@ ca::Status read_surface(const ca_surface_view* surface, bool want_normals, ca::M
 
 // Points in the caller's units, x y z per point, in memory from the result's allocator.
 void fill(Array<double>& a, const Allocator& al, const std::vector<ca::Vec3>& pts, const ca::Normalization& n);
+
+// The core's connect options from the caller's (method already checked): AUTO is the medial
+// route for a mesh, the power route for point clouds and caller arrays.
+ca::ConnectOptions connect_options(const ca_connect_options& o, const ca::CandidateSet& set, int32_t threads);
 
 }  // namespace capi

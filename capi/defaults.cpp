@@ -47,6 +47,7 @@ template <> ca_select_options defaults<ca_select_options>() {
     o.target_tolerance = 1e-4;
     o.divide_threshold = 100000;
     o.effort = CA_EFFORT_FAST;
+    o.target_error = 0;
     return o;
 }
 

@@ -37,6 +37,19 @@ struct ca_select_stats {
     uint64_t rows_before, cols_before, rows_after, cols_after, forced, components, probes, parts;
     double scale_used;
 };
+struct ca_select_options {
+    uint32_t struct_size;
+    int32_t dilation;
+    double delta, scale;
+    int32_t solver;
+    double time_limit_s;
+    int32_t skip_uncoverable;
+    const uint8_t *ignorable_samples, *forced_in, *forced_out;
+    uint32_t target_count;
+    double target_tolerance;
+    uint32_t divide_threshold;
+    int32_t effort;
+};
 struct ca_connect_options {
     uint32_t struct_size;
     int32_t method, remove_outside, fill_holes, reconnect;
@@ -50,11 +63,17 @@ struct ca_skeleton_stats {
 };
 }  // namespace abi1
 
-// ---- ca_context_desc as first published in ABI 2, before time_limit_s was appended ----
+// ---- as first published in ABI 2: ca_context_desc before time_limit_s, ca_select_stats before
+// hd_reached were appended ----
 namespace abi2_first {
 struct ca_context_desc {
     abi1::ca_context_desc abi1_fields;
     double progress_interval_s;
+};
+struct ca_select_stats {
+    abi1::ca_select_stats abi1_fields;
+    double time_coverage_s;
+    uint64_t cbc_components, rowgen_rounds;
 };
 }  // namespace abi2_first
 
@@ -71,8 +90,9 @@ CA_PUBLISHED(ca_context_desc, sizeof(abi1::ca_context_desc), sizeof(abi2_first::
              sizeof(ca_context_desc))
 CA_PUBLISHED(ca_surface_view, sizeof(ca_surface_view))
 CA_PUBLISHED(ca_candidate_options, sizeof(ca_candidate_options))
-CA_PUBLISHED(ca_select_options, sizeof(ca_select_options))
-CA_PUBLISHED(ca_select_stats, sizeof(abi1::ca_select_stats), sizeof(ca_select_stats))
+CA_PUBLISHED(ca_select_options, sizeof(abi1::ca_select_options), sizeof(ca_select_options))
+CA_PUBLISHED(ca_select_stats, sizeof(abi1::ca_select_stats), sizeof(abi2_first::ca_select_stats),
+             sizeof(ca_select_stats))
 CA_PUBLISHED(ca_connect_options, sizeof(abi1::ca_connect_options), sizeof(ca_connect_options))
 CA_PUBLISHED(ca_skeleton_stats, sizeof(abi1::ca_skeleton_stats), sizeof(ca_skeleton_stats))
 CA_PUBLISHED(ca_skeleton_view, sizeof(ca_skeleton_view))
@@ -90,6 +110,12 @@ static_assert(offsetof(ca_context_desc, progress_interval_s) ==
 static_assert(offsetof(ca_select_stats, scale_used) == offsetof(abi1::ca_select_stats, scale_used) &&
                   offsetof(ca_select_stats, time_coverage_s) >= sizeof(abi1::ca_select_stats),
               "ca_select_stats: ABI 1 is a prefix of ABI 2");
+static_assert(offsetof(ca_select_stats, rowgen_rounds) == offsetof(abi2_first::ca_select_stats, rowgen_rounds) &&
+                  offsetof(ca_select_stats, hd_reached) >= sizeof(abi2_first::ca_select_stats),
+              "ca_select_stats: its first ABI 2 layout is a prefix of the current one");
+static_assert(offsetof(ca_select_options, effort) == offsetof(abi1::ca_select_options, effort) &&
+                  offsetof(ca_select_options, target_error) >= sizeof(abi1::ca_select_options),
+              "ca_select_options: ABI 1 is a prefix of ABI 2");
 
 static_assert(offsetof(ca_connect_options, reconnect) == offsetof(abi1::ca_connect_options, reconnect) &&
                   offsetof(ca_connect_options, fit) >= sizeof(abi1::ca_connect_options),

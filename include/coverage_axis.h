@@ -269,6 +269,12 @@ typedef struct ca_select_options {
     uint32_t divide_threshold;   /* more samples than this: divide and conquer (paper 8.1);
                                     default 100000; 0 = never */
     int32_t effort;              /* CA_EFFORT_*; default FAST */
+    double target_error;         /* ABI 2. 0 (default): off. E > 0: the fewest balls whose skeleton, connected
+                                    with the default ca_connect_options and measured as ca_evaluate does
+                                    with its defaults, has a two-sided Hausdorff distance <= E % of the
+                                    bbox diagonal, by a search over delta from the delta above (offset
+                                    dilation only, not with target_count; docs/fidelity.md: what it
+                                    guarantees). The stats give the HD reached and the delta. */
 } ca_select_options;
 
 CA_API ca_status ca_select_options_defaults(ca_select_options* options, uint32_t struct_size); /* the defaults named above */
@@ -303,12 +309,16 @@ typedef struct ca_select_stats {
     double time_total_s;         /* including the coverage matrix */
     uint64_t rows_before, cols_before, rows_after, cols_after, forced;
     uint64_t components;         /* independent parts of the reduced problem */
-    uint64_t probes;             /* set-cover solves (target_count: one per bisection step) */
+    uint64_t probes;             /* set-cover solves (target_count: one per bisection step;
+                                    target_error: one per select + connect + evaluate probe) */
     uint64_t parts;              /* divide and conquer: spatial parts (0 = not used) */
     double scale_used;           /* the scale factor used (CA_DILATE_SCALE), else 0 */
     double time_coverage_s;      /* ABI 2: building the coverage matrix (part of time_total_s) */
     uint64_t cbc_components;     /* ABI 2: components of the kernel that needed CBC */
     uint64_t rowgen_rounds;      /* ABI 2: row-generation rounds (sub-problems solved) */
+    double hd_reached;           /* ABI 2 (appended after rowgen_rounds). target_error: the two-sided HD of the
+                                    returned selection, % of the bbox diagonal (above target_error when
+                                    no probed delta reached it); -1 when not measured */
 } ca_select_stats;
 
 CA_API ca_status ca_selection_stats(const ca_selection* selection, ca_select_stats* stats);

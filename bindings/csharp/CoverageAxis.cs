@@ -82,6 +82,7 @@ namespace CoverageAxis
             public double target_tolerance;
             public uint divide_threshold;
             public int effort;
+            public double target_error;     // ABI 2
         }
 
         [StructLayout(LayoutKind.Sequential)]
@@ -95,6 +96,7 @@ namespace CoverageAxis
             public double time_coverage_s;  // ABI 2
             public ulong cbc_components;    // ABI 2
             public ulong rowgen_rounds;     // ABI 2
+            public double hd_reached;       // ABI 2
         }
 
         [StructLayout(LayoutKind.Sequential)]
@@ -344,6 +346,8 @@ namespace CoverageAxis
         public bool SkipUncoverable { get { return Raw.skip_uncoverable != 0; } set { Raw.skip_uncoverable = value ? 1 : 0; } }
         public uint TargetCount { get { return Raw.target_count; } set { Raw.target_count = value; } }
         public double TargetTolerance { get { return Raw.target_tolerance; } set { Raw.target_tolerance = value; } }
+        /// <summary>ABI 2: the fewest balls within this two-sided Hausdorff distance (% of the bbox diagonal); 0 = off.</summary>
+        public double TargetError { get { return Raw.target_error; } set { Raw.target_error = value; } }
         public uint DivideThreshold { get { return Raw.divide_threshold; } set { Raw.divide_threshold = value; } }
         /// <summary>Per sample, true: need not be covered (null = none).</summary>
         public byte[] IgnorableSamples;

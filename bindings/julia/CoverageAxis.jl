@@ -69,6 +69,7 @@ struct SelectOptions
     target_tolerance::Float64
     divide_threshold::UInt32
     effort::Int32
+    target_error::Float64     # ABI 2
 end
 
 struct SelectStats
@@ -94,6 +95,7 @@ struct SelectStats
     time_coverage_s::Float64  # ABI 2
     cbc_components::UInt64    # ABI 2
     rowgen_rounds::UInt64     # ABI 2
+    hd_reached::Float64       # ABI 2
 end
 
 struct ConnectOptions

@@ -49,10 +49,11 @@ void print_summary(const cli::Json& j, const cli::RunOptions& o) {
                 u("input_triangles"));
     std::printf("samples     %llu surface samples, %llu candidate balls (%s)\n", u("surface_samples"), u("candidates"),
                 o.candidate_kind.c_str());
-    const bool target = o.select.target_count > 0;
+    const bool target = o.select.target_count > 0, target_error = o.select.target_error > 0;
     if (o.select.dilation == CA_DILATE_OFFSET)
         std::printf("dilation    r + %.4g (delta %.4g of the longest bbox side)%s\n", j["delta"].get<double>(),
-                    j["delta"].get<double>() / j["reference_length"].get<double>(), target ? ", found by the target size" : "");
+                    j["delta"].get<double>() / j["reference_length"].get<double>(),
+                    target ? ", found by the target size" : target_error ? ", found by the target error" : "");
     else
         std::printf("dilation    r * %.4g%s\n", j["scale"].get<double>(), target ? ", found by the target size" : "");
     const bool optimal = j["optimal"].get<bool>(), exact = o.select.solver == CA_SOLVER_EXACT;
@@ -69,6 +70,15 @@ void print_summary(const cli::Json& j, const cli::RunOptions& o) {
     std::printf("skeleton    %s route: %llu vertices, %llu edges, %llu faces, %llu component(s), %llu isolated, b1 = %lld\n",
                 j["connect"].get<std::string>().c_str(), u("selected"), u("edges"), u("faces"), u("components"), u("isolated"),
                 j["betti1"].get<long long>());
+    if (target_error) {
+        const double hd = j["hd_reached"].get<double>();
+        std::printf("target      two-sided HD %.3f %% %s %.4g %% of the bbox diagonal (%llu probes)%s\n", hd,
+                    hd <= o.select.target_error ? "<=" : ">", o.select.target_error, u("probes"),
+                    hd <= o.select.target_error ? "" : ": not reached, the lowest HD found");
+    } else if (target) {
+        std::printf("target      %llu balls at most: two-sided HD reached %.3f %% of the bbox diagonal\n",
+                    (unsigned long long)o.select.target_count, j["hd_reached"].get<double>());
+    }
     if (o.evaluate)
         std::printf("hausdorff   surface->skeleton %.3f %%, skeleton->surface %.3f %%, two-sided %.3f %% of the bbox diagonal\n",
                     j["hd_surface_to_recon"].get<double>(), j["hd_recon_to_surface"].get<double>(), j["hd_two_sided"].get<double>());

@@ -254,9 +254,11 @@ Outcome run_pipeline(const std::string& input, const RunOptions& o, const Output
     if (!write_outputs(mesh, sd, o, out, r.failure)) return r;
     const double t_write = since(t0);
 
+    // --target-count: the tool measures the HD it reached (--target-error: the library did)
+    const bool evaluate_run = o.evaluate || o.select.target_count > 0;
     ca_evaluation ev{};
     double t_evaluate = 0;
-    if (o.evaluate) {
+    if (evaluate_run) {
         t0 = Clock::now();
         ca_skeleton_view view;
         ca_skeleton_view_init(&view);
@@ -298,7 +300,10 @@ Outcome run_pipeline(const std::string& input, const RunOptions& o, const Output
                       {"cols_after", ss.cols_after}, {"forced", ss.forced}};
     j["output"] = out.ma;
     j["outputs"] = outputs_json(out);
-    if (o.evaluate) add_evaluation(j, ev);
+    if (evaluate_run) add_evaluation(j, ev);
+    if (ss.hd_reached >= 0) j["hd_reached"] = ss.hd_reached;
+    else if (o.select.target_count > 0) j["hd_reached"] = ev.hd_two_sided;
+    else j["hd_reached"] = nullptr;
     j["time_s"] = {{"read", round4(t_read)},         {"candidates", round4(t_candidates)}, {"select", round4(t_select)},
                    {"connect", round4(t_connect)}, {"write", round4(t_write)},           {"evaluate", round4(t_evaluate)},
                    {"total", round4(since(t_start))}};

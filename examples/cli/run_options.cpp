@@ -124,6 +124,10 @@ void add_run_options(CLI::App& app, RunOptions& o) {
         ->capture_default_str()->group(cover);
     app.add_option("--target-count", o.select.target_count, "at most K balls, with the smallest delta (or scale) that achieves it (0 = off)")
         ->capture_default_str()->check(CLI::Range(0u, 100000000u))->group(cover);
+    app.add_option("--target-error", o.select.target_error,
+                   "the fewest balls whose two-sided Hausdorff distance is at most E % of the bbox diagonal, by a "
+                   "search over delta from --delta (0 = off; docs/fidelity.md)")
+        ->capture_default_str()->check(at_least(0))->group(cover);
     app.add_option("--divide", o.select.divide_threshold, "divide and conquer above N surface samples (0 = never)")
         ->capture_default_str()->group(cover);
     app.add_flag("--skip-uncoverable", "ignore samples no ball covers instead of failing")->group(cover);
@@ -153,6 +157,11 @@ bool finish_run_options(const CLI::App& app, RunOptions& o, std::string& error) 
     o.select.effort = value_of(kEfforts, o.effort);
     o.connect.method = value_of(kRoutes, o.connect_route);
     o.connect.fit = app.count("--fit") ? 1 : 0;
+    if (o.select.target_error > 0 && (o.connect.fit || o.connect.method != CA_CONNECT_AUTO)) {
+        error = "--target-error measures the default connection: it does not take " +
+                (o.connect.fit ? std::string("--fit") : "--connect " + o.connect_route);
+        return false;
+    }
     if (o.candidate_kind.rfind("random", 0) == 0 && o.candidate_kind.size() > 6) {
         const std::string n = o.candidate_kind.substr(7);
         char* end = nullptr;
@@ -207,6 +216,7 @@ Json options_json(const RunOptions& o) {
                 {"skip_uncoverable", s.skip_uncoverable != 0},
                 {"target_count", s.target_count},
                 {"target_tolerance", s.target_tolerance},
+                {"target_error", s.target_error},
                 {"divide", s.divide_threshold},
                 {"ignore_samples", file(o.ignore_samples_file)},
                 {"force_in", file(o.force_in_file)},

@@ -37,8 +37,8 @@ constexpr double kProbeMargin = 1e-9;
 // Probes searched per test point (the most recent ones: grid points are visited row by row).
 constexpr size_t kProbeWindow = 48;
 
-// Whether the boundary of the mesh (as a 2-chain) vanishes: for every undirected edge, as many
-// half-edges a->b as b->a, and every triangle valid. Then the winding number is integer-valued.
+}  // namespace
+
 bool closed_mesh(const Mesh& mesh) {
     // half-edges a->b with a < b, and b->a ones stored as (b, a): equal multisets iff balanced
     std::vector<uint64_t> up, down;
@@ -57,8 +57,6 @@ bool closed_mesh(const Mesh& mesh) {
     std::sort(down.begin(), down.end());
     return up == down;
 }
-
-}  // namespace
 
 struct InsideTest::Impl {
     std::shared_ptr<const WindingNumber> winding;   // meshes only (the candidate set's, if it has them)

@@ -66,6 +66,7 @@ int main(void) {
     FIELD(ca_select_options, target_tolerance);
     FIELD(ca_select_options, divide_threshold);
     FIELD(ca_select_options, effort);
+    FIELD(ca_select_options, target_error);
     STRUCT(ca_select_stats);
     FIELD(ca_select_stats, struct_size);
     FIELD(ca_select_stats, proven_optimal);
@@ -89,6 +90,7 @@ int main(void) {
     FIELD(ca_select_stats, time_coverage_s);
     FIELD(ca_select_stats, cbc_components);
     FIELD(ca_select_stats, rowgen_rounds);
+    FIELD(ca_select_stats, hd_reached);
     STRUCT(ca_connect_options);
     FIELD(ca_connect_options, struct_size);
     FIELD(ca_connect_options, method);

@@ -9,8 +9,8 @@
 #include <stdio.h>
 #include <string.h>
 
-/* ---- the layouts of ABI 1 (ca_context_desc, ca_select_stats, ca_connect_options and
-   ca_skeleton_stats grew in ABI 2) ---- */
+/* ---- the layouts of ABI 1 (ca_context_desc, ca_select_options, ca_select_stats,
+   ca_connect_options and ca_skeleton_stats grew in ABI 2) ---- */
 typedef struct v1_context_desc {
     uint32_t struct_size;
     ca_alloc_fn alloc;
@@ -31,6 +31,27 @@ typedef struct v1_select_stats {
     uint64_t rows_before, cols_before, rows_after, cols_after, forced, components, probes, parts;
     double scale_used;
 } v1_select_stats;
+
+typedef struct v1_select_options {
+    uint32_t struct_size;
+    int32_t dilation;
+    double delta, scale;
+    int32_t solver;
+    double time_limit_s;
+    int32_t skip_uncoverable;
+    const uint8_t *ignorable_samples, *forced_in, *forced_out;
+    uint32_t target_count;
+    double target_tolerance;
+    uint32_t divide_threshold;
+    int32_t effort;
+} v1_select_options;
+
+/* ca_select_stats as first published in ABI 2, before hd_reached was appended */
+typedef struct v2_first_select_stats {
+    v1_select_stats v1;
+    double time_coverage_s;
+    uint64_t cbc_components, rowgen_rounds;
+} v2_first_select_stats;
 
 typedef struct v1_connect_options {
     uint32_t struct_size;
@@ -240,6 +261,59 @@ static void test_connect_layouts(void) {
     ca_context_destroy(ctx);
 }
 
+/* ABI 1 select options (no target_error: off) and the first ABI 2 select stats are accepted;
+   target_error is checked: NaN, negative, with target_count, with the scale dilation, or on a set
+   from caller arrays (no surface) are CA_ERROR_INVALID_ARGUMENT naming target_error. */
+static void test_select_layouts(void) {
+    ca_context* ctx = NULL;
+    ca_candidate_set* set = NULL;
+    ca_selection* sel = NULL;
+    ca_surface_view v = box_view();
+    struct { v1_select_options o; unsigned char tail[16]; } old;
+    struct { v2_first_select_stats s; unsigned char tail[16]; } ss;
+    ca_select_stats full;
+    ca_select_options o;
+    const double samples[] = {0, 0, 0, 1, 0, 0};
+    const double centers[] = {0.5, 0, 0};
+    const double radii[] = {0.6};
+    CHECK(ca_context_create(NULL, &ctx) == CA_OK);
+    CHECK(ca_candidates(ctx, &v, NULL, &set) == CA_OK);
+    ca_select_options_init(&o);
+    CHECK(o.target_error == 0 && sizeof(v1_select_options) < sizeof o);
+    memcpy(&old.o, &o, sizeof old.o);
+    memset(old.tail, 0xFF, sizeof old.tail); /* a target_error read past the size would be NaN */
+    old.o.struct_size = (uint32_t)sizeof old.o;
+    CHECK(ca_select(ctx, set, (const ca_select_options*)(void*)&old, &sel) == CA_OK);
+    full.struct_size = sizeof full;
+    CHECK(ca_selection_stats(sel, &full) == CA_OK && full.hd_reached == -1);
+    memset(&ss, CANARY, sizeof ss);
+    ss.s.v1.struct_size = (uint32_t)sizeof ss.s;
+    CHECK(ca_selection_stats(sel, (ca_select_stats*)(void*)&ss) == CA_OK && ss.s.rowgen_rounds == full.rowgen_rounds &&
+          canary_intact(ss.tail, sizeof ss.tail));
+    ca_selection_destroy(sel);
+    sel = NULL;
+    o.target_error = 0.0 / 0.0;
+    CHECK(ca_select(ctx, set, &o, &sel) == CA_ERROR_INVALID_ARGUMENT && sel == NULL);
+    CHECK(strstr(ca_context_last_error(ctx), "target_error") != NULL);
+    o.target_error = -1;
+    CHECK(ca_select(ctx, set, &o, &sel) == CA_ERROR_INVALID_ARGUMENT && sel == NULL);
+    o.target_error = 2;
+    o.target_count = 10;
+    CHECK(ca_select(ctx, set, &o, &sel) == CA_ERROR_INVALID_ARGUMENT && sel == NULL);
+    CHECK(strstr(ca_context_last_error(ctx), "target_count") != NULL);
+    o.target_count = 0;
+    o.dilation = CA_DILATE_SCALE;
+    CHECK(ca_select(ctx, set, &o, &sel) == CA_ERROR_INVALID_ARGUMENT && sel == NULL);
+    o.dilation = CA_DILATE_OFFSET;
+    ca_candidate_set_destroy(set);
+    set = NULL;
+    CHECK(ca_candidates_from_arrays(ctx, samples, 2, 0, centers, 0, radii, 0, 1, 1.0, &set) == CA_OK);
+    CHECK(ca_select(ctx, set, &o, &sel) == CA_ERROR_INVALID_ARGUMENT && sel == NULL);
+    CHECK(strstr(ca_context_last_error(ctx), "target_error") != NULL);
+    ca_candidate_set_destroy(set);
+    ca_context_destroy(ctx);
+}
+
 int main(void) {
     CHECK(ca_abi_version() == 2 && CA_ABI_VERSION == 2);
     test_old_input_struct();
@@ -247,6 +321,7 @@ int main(void) {
     test_sizes_refused();
     test_old_output_struct_and_lifetimes();
     test_connect_layouts();
+    test_select_layouts();
     printf("test_struct_size: %d checks, %d failed\n", checks, failures);
     return failures ? 1 : 0;
 }

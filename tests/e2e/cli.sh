@@ -63,6 +63,24 @@ done
 "$tool" "$data/fox.obj" -o "$tmp/k.ma" --target-count 30 --json > "$tmp/k.json"
 check "target count: at most 30 balls" test "$(json_field selected "$tmp/k.json")" -le 30
 check "target count: a larger delta than the default" awk -v d="$(json_field delta "$tmp/k.json")" -v d0="$(json_field delta "$tmp/fox.json")" 'BEGIN{exit !(d > d0)}'
+check "target count: the HD reached is reported (the evaluation's)" test "$(json_field hd_reached "$tmp/k.json")" = "$(json_field hd_two_sided "$tmp/k.json")"
+check "no target: hd_reached is null" test "$(json_field hd_reached "$tmp/fox.json")" = "null"
+
+# the target error: the HD the library measured is what --evaluate measures, and within E
+"$tool" "$data/fox.obj" -o "$tmp/te.ma" --samples 800 --voronoi-samples 2000 --target-error 2.6 --evaluate --json > "$tmp/te.json"
+check "target error runs" test $? -eq 0
+hd_te=$(json_field hd_reached "$tmp/te.json")
+check "target error: HD reached $hd_te <= 2.6" awk -v h="$hd_te" 'BEGIN{exit !(h >= 0 && h <= 2.6)}'
+check "target error: --evaluate measures the same HD" awk -v h="$hd_te" -v e="$(json_field hd_two_sided "$tmp/te.json")" 'BEGIN{d=h-e; if(d<0)d=-d; exit !(d < 1e-9)}'
+check "target error: several probes" test "$(json_field probes "$tmp/te.json")" -ge 2
+"$tool" "$data/fox.obj" -o "$tmp/te2.ma" --target-error 2 --target-count 30 --json > "$tmp/te2.json"
+check "target error with target count: refused by the library (exit 1)" test $? -eq 1
+check "target error with target count: INVALID_ARGUMENT naming both" grep -q 'CA_ERROR_INVALID_ARGUMENT.*target_error and target_count' "$tmp/te2.json"
+"$tool" "$data/fox.obj" -o "$tmp/te3.ma" --target-error -1 --quiet 2> "$tmp/err"
+check "negative target error: usage error (exit 2)" test $? -eq 2
+"$tool" "$data/fox.obj" -o "$tmp/te4.ma" --target-error 2 --fit --quiet 2> "$tmp/err"
+check "target error with --fit: usage error (exit 2)" test $? -eq 2
+check "target error with --fit: says why" grep -q 'default connection' "$tmp/err"
 
 # divide and conquer on request: spatial parts, still a full cover
 "$tool" "$data/fox.obj" -o "$tmp/dc.ma" --samples 3000 --divide 1000 --json > "$tmp/dc.json"

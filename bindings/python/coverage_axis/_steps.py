@@ -189,7 +189,8 @@ def candidates(vertices, triangles=None, normals=None, *, context=None, **option
 def select(candidate_set, *, context=None, ignorable_samples=None, forced_in=None, forced_out=None, **options):
     """Step 2: the fewest dilated candidate balls covering every sample.
     Options: dilation ("offset" | "scale"; scale=S alone selects "scale"), delta, scale, solver,
-    time_limit_s, skip_uncoverable, target_count, target_tolerance, divide_threshold, effort.
+    time_limit_s, skip_uncoverable, target_count, target_tolerance, divide_threshold, effort, target_error
+    (% of the bbox diagonal: the fewest balls within that two-sided Hausdorff distance; stats hd_reached).
     Masks (one flag per sample or ball, truthy = set): ignorable_samples, forced_in, forced_out."""
     if options.get("scale") is not None and options.get("dilation") is None:
         options["dilation"] = "scale"

@@ -30,7 +30,7 @@ class _SelectOptions(Structure):
                 ("solver", c_int32), ("time_limit_s", c_double), ("skip_uncoverable", c_int32),
                 ("ignorable_samples", c_void_p), ("forced_in", c_void_p), ("forced_out", c_void_p),
                 ("target_count", c_uint32), ("target_tolerance", c_double), ("divide_threshold", c_uint32),
-                ("effort", c_int32)]
+                ("effort", c_int32), ("target_error", c_double)]
 
 
 class _SelectStats(Structure):
@@ -39,7 +39,8 @@ class _SelectStats(Structure):
                 ("time_solve_s", c_double), ("time_total_s", c_double), ("rows_before", c_uint64),
                 ("cols_before", c_uint64), ("rows_after", c_uint64), ("cols_after", c_uint64), ("forced", c_uint64),
                 ("components", c_uint64), ("probes", c_uint64), ("parts", c_uint64), ("scale_used", c_double),
-                ("time_coverage_s", c_double), ("cbc_components", c_uint64), ("rowgen_rounds", c_uint64)]
+                ("time_coverage_s", c_double), ("cbc_components", c_uint64), ("rowgen_rounds", c_uint64),
+                ("hd_reached", c_double)]
 
 
 class _ConnectOptions(Structure):

@@ -154,6 +154,8 @@ ca_struct!(ca_select_options {
     target_tolerance: f64,
     divide_threshold: u32,
     effort: i32,
+    /// ABI 2
+    target_error: f64,
 });
 
 ca_struct!(#[derive(Debug, Default)] ca_select_stats {
@@ -182,6 +184,8 @@ ca_struct!(#[derive(Debug, Default)] ca_select_stats {
     cbc_components: u64,
     /// ABI 2
     rowgen_rounds: u64,
+    /// ABI 2
+    hd_reached: f64,
 });
 
 ca_struct!(ca_connect_options {

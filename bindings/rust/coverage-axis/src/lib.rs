@@ -282,6 +282,12 @@ impl<'a> SelectOptions<'a> {
         self.raw.target_tolerance = tolerance;
         self
     }
+    /// The fewest balls whose two-sided Hausdorff distance is at most `percent` % of the bbox
+    /// diagonal, by a search over delta (0 = off); the stats' `hd_reached` gives the HD.
+    pub fn target_error(mut self, percent: f64) -> Self {
+        self.raw.target_error = percent;
+        self
+    }
     pub fn divide_threshold(mut self, samples: u32) -> Self {
         self.raw.divide_threshold = samples;
         self

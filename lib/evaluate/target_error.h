@@ -1,0 +1,57 @@
+// target_error.h: error-bounded selection. The fewest balls whose skeleton, connected and
+// measured exactly as the evaluation does (evaluate.h), has a two-sided Hausdorff distance of at
+// most E % of the bounding-box diagonal, found by a search over the offset delta on one
+// candidate set: each probe selects at one delta, connects and evaluates.
+//
+// The search: the first probe is at the given delta. While the probes pass (HD <= E) delta is
+// doubled, while they fail it is halved (not below kFallbackReach, where a cover still exists),
+// until a passing delta and a larger failing one bracket the largest passing delta; then that
+// bracket is bisected. At most max_probes probes in all, and bisection stops when the bracket is
+// narrower than the tolerance. The result is the best passing probe (fewest balls, then lowest
+// HD, then larger delta), or, when none passes, the probe of lowest HD with `reached` false.
+//
+// What this guarantees: the returned selection's HD, measured with the given evaluation
+// options, is the HD reported (it is not re-sampled), and is <= E when `reached`. The HD is not
+// monotone in delta, so a delta between two probes may give fewer balls within E: no bound
+// holds between probes. With an optimal solver the cover size is non-increasing in delta, so
+// the largest passing delta found usually carries the fewest balls.
+#pragma once
+#include "candidates.h"
+#include "connect.h"
+#include "evaluate.h"
+#include "selection.h"
+
+namespace ca {
+
+struct TargetErrorOptions {
+    double target_error = 2;      // E, percent of the input bounding-box diagonal (> 0)
+    ConnectOptions connect;       // how each probe is connected (the caller's or the defaults)
+    EvaluateOptions evaluate;     // how each probe is measured (ca_evaluate's defaults)
+    uint32_t max_probes = 14;     // select + connect + evaluate runs, at most
+};
+
+struct TargetErrorProbe {
+    double delta = 0;             // internal units (fraction of the longest bbox side)
+    size_t balls = 0;
+    double hd = 0;                // two-sided HD, percent of the diagonal
+    bool passed = false;          // hd <= target_error
+};
+
+struct TargetErrorResult {
+    Selection selection;          // the chosen probe's selection (delta = its offset; probes = the
+                                  // probes run; time_total_s = the whole search)
+    Skeleton skeleton;            // its connected skeleton, internal units
+    EvaluateResult evaluation;    // its measurement
+    bool reached = false;         // some probe had HD <= target_error
+    std::vector<TargetErrorProbe> probes;  // in the order they ran
+};
+
+// Offset dilation only (opt.dilation == offset, opt.target_count == 0); the set must have a
+// surface (not one built from caller arrays). opt.target_tolerance is the bisection tolerance
+// on delta. A probe below the starting delta that finds samples no ball covers ends the
+// descent; a start without a cover doubles delta until one exists. When the time limit runs out after a probe has finished, the best probe so far is
+// returned; a cancel returns the stop status.
+Status select_target_error(const CandidateSet& set, const SelectOptions& opt, const TargetErrorOptions& te,
+                           const Monitor& monitor, TargetErrorResult& out);
+
+}  // namespace ca

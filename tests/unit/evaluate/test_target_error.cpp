@@ -1,0 +1,125 @@
+// test_target_error.cpp: the error-bounded selection (lib/evaluate/target_error) on fox.obj. For a
+// reachable E the returned HD is <= E and is what an independent select + connect + evaluate at
+// the returned delta measures, and no probed delta gives a passing skeleton with fewer balls
+// (brute force over the same deltas: returning, say, the last probe fails this); for an
+// unreachable E the lowest-HD probe comes back unreached; invalid options are refused.
+#include <doctest/doctest.h>
+
+#include "candidates.h"
+#include "connect.h"
+#include "evaluate.h"
+#include "mesh_io.h"
+#include "selection.h"
+#include "support/mesh_convert.h"
+#include "target_error.h"
+
+#include <algorithm>
+#include <string>
+
+namespace {
+
+ca::CandidateSet fox_set() {
+    caio::MeshData data;
+    std::string error;
+    REQUIRE_MESSAGE(caio::read_mesh(std::string(CA_TEST_DATA) + "/fox.obj", data, error), error);
+    ca::Surface surface;
+    REQUIRE(ca::prepare_surface(to_core_mesh(data), {}, surface).ok());
+    ca::CandidateOptions co;
+    co.cover_samples = 800;
+    co.voronoi_samples = 2000;
+    ca::CandidateSet set;
+    REQUIRE(ca::generate_candidates(std::move(surface), co, ca::Monitor{}, set).ok());
+    return set;
+}
+
+ca::TargetErrorOptions options(double target) {
+    ca::TargetErrorOptions te;
+    te.target_error = target;
+    te.connect.method = ca::ConnectMethod::medial;
+    te.evaluate.surface_samples = 4000;
+    te.evaluate.envelope_samples = 15000;
+    te.max_probes = 7;  // at E = 2.6 the last of 7 probes fails and the best is the 4th
+    return te;
+}
+
+// One probe, run independently: the ball count and two-sided HD at delta.
+std::pair<size_t, double> brute(const ca::CandidateSet& set, const ca::TargetErrorOptions& te, double delta) {
+    ca::SelectOptions so;
+    so.delta = delta;
+    ca::Selection sel;
+    REQUIRE(ca::select_balls(set, so, ca::Monitor{}, sel).ok());
+    ca::Skeleton sk;
+    REQUIRE(ca::connect_balls(set, sel, te.connect, ca::Monitor{}, sk).ok());
+    ca::EvaluateResult ev;
+    REQUIRE(ca::evaluate(set.surface.mesh, sk, te.evaluate, ca::Monitor{}, ev).ok());
+    return {sel.indices.size(), ev.hd_two_sided};
+}
+
+}  // namespace
+
+TEST_CASE("test_target_error: fox: HD <= E with no more balls than any passing probed delta and an unreachable E flagged") {
+    const ca::CandidateSet set = fox_set();
+    const double target = 2.6;
+    const ca::TargetErrorOptions te = options(target);
+    ca::TargetErrorResult r;
+    const ca::Status st = ca::select_target_error(set, ca::SelectOptions{}, te, ca::Monitor{}, r);
+    REQUIRE_MESSAGE(st.ok(), st.message);
+    REQUIRE(r.reached);
+    CHECK(r.evaluation.hd_two_sided <= target);
+    CHECK(r.probes.size() <= te.max_probes);
+    CHECK(r.probes.size() >= 3);  // the start fails here: halving, then bisection
+    CHECK(r.selection.probes == r.probes.size());
+    CHECK(r.skeleton.balls.size() == r.selection.indices.size());
+    // brute force over the probed deltas: the same figures, and none passes with fewer balls
+    size_t fewest = SIZE_MAX;
+    for (const ca::TargetErrorProbe& p : r.probes) {
+        CAPTURE(p.delta);
+        const auto [balls, hd] = brute(set, te, p.delta);
+        CHECK(balls == p.balls);
+        CHECK(hd == doctest::Approx(p.hd).epsilon(1e-9));
+        if (hd <= target) fewest = std::min(fewest, balls);
+    }
+    REQUIRE(fewest != SIZE_MAX);
+    CHECK(r.selection.indices.size() <= fewest);
+    // the returned selection measures as reported at its delta
+    const auto [balls, hd] = brute(set, te, r.selection.delta);
+    CHECK(balls == r.selection.indices.size());
+    CHECK(hd == doctest::Approx(r.evaluation.hd_two_sided).epsilon(1e-9));
+
+    // unreachable: the lowest HD among the probes, flagged
+    ca::TargetErrorOptions low = options(0.01);
+    low.max_probes = 3;
+    ca::TargetErrorResult u;
+    REQUIRE(ca::select_target_error(set, ca::SelectOptions{}, low, ca::Monitor{}, u).ok());
+    CHECK_FALSE(u.reached);
+    REQUIRE(u.probes.size() == 3);
+    double lowest = u.probes[0].hd;
+    for (const ca::TargetErrorProbe& p : u.probes) lowest = std::min(lowest, p.hd);
+    CHECK(u.evaluation.hd_two_sided == lowest);
+    CHECK(u.evaluation.hd_two_sided > 0.01);
+}
+
+TEST_CASE("test_target_error: invalid options are refused") {
+    const ca::CandidateSet set = fox_set();
+    ca::TargetErrorResult r;
+    auto code = [&](const ca::SelectOptions& so, const ca::TargetErrorOptions& te) {
+        return ca::select_target_error(set, so, te, ca::Monitor{}, r).code;
+    };
+    const ca::SelectOptions so;
+    CHECK(code(so, options(std::nan(""))) == ca::Code::invalid_argument);
+    CHECK(code(so, options(-1)) == ca::Code::invalid_argument);
+    CHECK(code(so, options(0)) == ca::Code::invalid_argument);
+    ca::SelectOptions both = so;
+    both.target_count = 10;
+    CHECK(code(both, options(2)) == ca::Code::invalid_argument);
+    ca::SelectOptions scale = so;
+    scale.dilation = ca::Dilation::scale;
+    CHECK(code(scale, options(2)) == ca::Code::invalid_argument);
+    ca::TargetErrorOptions none = options(2);
+    none.max_probes = 0;
+    CHECK(code(so, none) == ca::Code::invalid_argument);
+    ca::CandidateSet arrays;  // caller arrays: no surface to measure against
+    arrays.cover_samples = set.cover_samples;
+    arrays.balls = set.balls;
+    CHECK(ca::select_target_error(arrays, so, options(2), ca::Monitor{}, r).code == ca::Code::invalid_argument);
+}
