@@ -346,12 +346,12 @@ int main(int argc, char** argv) {
     size_t clean = 0, covered = 0;
     std::vector<double> vs_mesh, b_vs_a, c_vs_a, noisy;
     size_t vs_mesh_failed = 0, b_failed = 0, c_failed = 0, noisy_failed = 0;
-    std::map<size_t, std::vector<double>> times;
+    std::map<size_t, std::vector<double>> times, cpu_times;
     for (const auto& [name, sr] : shapes_seen)
         for (const auto& [key, r] : sr.runs) {
             const size_t n = key.first;
             const char variant = key.second;
-            if (r.status == CA_OK) times[n].push_back(r.seconds);
+            if (r.status == CA_OK) times[n].push_back(r.seconds), cpu_times[n].push_back(r.cpu_seconds);
             if (variant != 'd') clean += 1, covered += r.status == CA_OK && r.uncovered == 0;
             auto a = sr.runs.find({n, 'a'});
             const bool a_ok = a != sr.runs.end() && a->second.status == CA_OK && a->second.evaluated;
@@ -381,7 +381,7 @@ int main(int argc, char** argv) {
         double worst = 0;
         for (double s : t) within += s <= limit, worst = std::max(worst, s);
         std::printf("- time per %zu-point cloud (successful runs): %zu of %zu within %.0f s", n, within, t.size(), limit);
-        if (!t.empty()) std::printf(" (median %.2f s, worst %.2f s)", median(t), worst);
+        if (!t.empty()) std::printf(" (median %.2f s, worst %.2f s; cpu median %.2f s)", median(t), worst, median(cpu_times[n]));
         std::printf("\n");
     }
     return 0;
