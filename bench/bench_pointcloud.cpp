@@ -120,18 +120,14 @@ CloudRun run_surface(const ca_surface_view& input, const ca_surface_view& refere
     CloudRun r;
     ca_context* ctx = nullptr;
     ca_context_create(nullptr, &ctx);
-    ca_candidate_options co;
-    ca_candidate_options_init(&co);
-    ca_select_options so;
-    ca_select_options_init(&so);
-    ca_connect_options cop;
-    ca_connect_options_init(&cop);
+    bench::DefaultOptions options;
+    ca_select_options& so = options.select;
     ca_candidate_set* set = nullptr;
     ca_selection* sel = nullptr;
     ca_skeleton* sk = nullptr;
     const auto t = std::chrono::steady_clock::now();
     const double c0 = cpu_now();
-    r.status = ca_candidates(ctx, &input, &co, &set);
+    r.status = ca_candidates(ctx, &input, &options.candidates, &set);
     if (r.status == CA_OK) {
         r.normals = ca_candidate_set_normals(set);
         r.status = ca_select(ctx, set, &so, &sel);
@@ -143,7 +139,7 @@ CloudRun run_surface(const ca_surface_view& input, const ca_surface_view& refere
         }
     }
     if (sel) {
-        const ca_status connected = ca_connect(ctx, set, sel, &cop, &sk);
+        const ca_status connected = ca_connect(ctx, set, sel, &options.connect, &sk);
         if (r.status == CA_OK) r.status = connected;
     }
     r.seconds = bench::seconds_since(t);
