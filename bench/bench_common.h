@@ -44,6 +44,18 @@ inline double peak_rss_mb() {
     return double(u.ru_maxrss) / 1024.0;
 }
 
+// The three options structs of a pipeline run, at the library's defaults.
+struct DefaultOptions {
+    ca_candidate_options candidates;
+    ca_select_options select;
+    ca_connect_options connect;
+    DefaultOptions() {
+        ca_candidate_options_init(&candidates);
+        ca_select_options_init(&select);
+        ca_connect_options_init(&connect);
+    }
+};
+
 struct PipelineRun {
     ca_status status = CA_OK;
     std::string message;

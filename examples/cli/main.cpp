@@ -47,6 +47,14 @@ void print_summary(const cli::Json& j, const cli::RunOptions& o) {
     auto u = [&](const char* k) { return j[k].get<unsigned long long>(); };
     std::printf("input       %s (%llu vertices, %llu triangles)\n", j["input"].get<std::string>().c_str(), u("input_vertices"),
                 u("input_triangles"));
+    if (u("input_triangles") == 0 && j["normals"] != "none") {
+        const std::string used = j["normals"].get<std::string>();
+        const char* how = used == "given"      ? "the file's, used as given"
+                          : used == "oriented" ? "the file's, re-oriented"
+                                               : j["input_normals"].get<bool>() ? "estimated by PCA (the file's replaced) and oriented"
+                                                                                 : "estimated by PCA and oriented (the file has none)";
+        std::printf("normals     %s%s\n", how, j["flipped"].get<bool>() ? "; they pointed inward and were flipped" : "");
+    }
     std::printf("samples     %llu surface samples, %llu candidate balls (%s)\n", u("surface_samples"), u("candidates"),
                 o.candidate_kind.c_str());
     const bool target = o.select.target_count > 0, target_error = o.select.target_error > 0;

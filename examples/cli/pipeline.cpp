@@ -80,6 +80,10 @@ struct Owned {
     ca_candidate_set* set = nullptr;
     ca_selection* sel = nullptr;
     ca_skeleton* sk = nullptr;
+    // Which normals the generated candidates used (CA_NORMALS_*) and whether the input was
+    // flipped, read before a candidates file replaces the set.
+    int32_t normals = CA_NORMALS_NONE;
+    bool flipped = false;
     ~Owned() {
         ca_skeleton_destroy(sk);
         ca_selection_destroy(sel);
@@ -116,6 +120,8 @@ bool make_candidates(Owned& owned, const caio::MeshData& mesh, const RunOptions&
         const ca_surface_view view = surface_view(mesh);
         if ((st = ca_candidates(owned.ctx, &view, &o.candidates, &owned.set)) != CA_OK)
             return failure = library_failure(owned.ctx, st, "candidates"), false;
+        owned.normals = ca_candidate_set_normals(owned.set);
+        owned.flipped = ca_candidate_set_flipped(owned.set) != 0;
     }
     if (from_file || !o.surface_samples_file.empty()) {
         // delta stays relative to the input's longest bbox side
@@ -202,6 +208,15 @@ bool write_outputs(const caio::MeshData& mesh, const caio::SkeletonData& sd, con
     return true;
 }
 
+const char* normals_name(int32_t normals) {
+    switch (normals) {
+        case CA_NORMALS_GIVEN: return "given";
+        case CA_NORMALS_ORIENTED: return "oriented";
+        case CA_NORMALS_ESTIMATED: return "estimated";
+        default: return "none";
+    }
+}
+
 Json outputs_json(const Outputs& out) {
     Json j = {{"ma", out.ma}};
     for (const auto& [key, path] : {std::pair<const char*, const std::string&>{"obj", out.obj}, {"ply", out.ply},
@@ -271,6 +286,9 @@ Outcome run_pipeline(const std::string& input, const RunOptions& o, const Output
     j = report_header(input);
     j["input_vertices"] = mesh.positions.size() / 3;
     j["input_triangles"] = mesh.triangles.size() / 3;
+    j["input_normals"] = mesh.triangles.empty() && !mesh.normals.empty();
+    j["normals"] = normals_name(owned.normals);
+    j["flipped"] = owned.flipped;
     j["surface_samples"] = ca_candidate_set_sample_count(owned.set);
     j["candidates"] = ca_candidate_set_count(owned.set);
     j["selected"] = sd.radii.size();

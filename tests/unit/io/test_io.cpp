@@ -275,6 +275,22 @@ TEST_CASE("xyz point clouds") {
     CHECK(m.normals.empty());
 }
 
+TEST_CASE("ply point clouds: ascii without faces; normals only when nx, ny and nz are all there") {
+    TempDir td;
+    caio::MeshData m;
+    std::string err;
+    const std::string head = "ply\nformat ascii 1.0\nelement vertex 2\nproperty double x\nproperty double y\nproperty double z\n";
+    REQUIRE_MESSAGE(caio::read_mesh(td.write("n.ply", head + "property float nx\nproperty float ny\nproperty float nz\n"
+                                                          "end_header\n0 0 0 0 0 1\n1 2 3 0 1 0\n"), m, err), err);
+    CHECK(m.positions == std::vector<double>{0, 0, 0, 1, 2, 3});
+    CHECK(m.normals == std::vector<double>{0, 0, 1, 0, 1, 0});
+    CHECK(m.triangles.empty());
+    REQUIRE_MESSAGE(caio::read_mesh(td.write("p.ply", head + "property float nx\nproperty float intensity\n"
+                                                          "end_header\n0 0 0 1 5\n1 2 3 0 7\n"), m, err), err);
+    CHECK(m.positions == std::vector<double>{0, 0, 0, 1, 2, 3});
+    CHECK(m.normals.empty());
+}
+
 TEST_CASE("write_ma / read_ma round trip; face edges are added") {
     TempDir td;
     caio::SkeletonData s;
