@@ -106,10 +106,10 @@ size_t leaves_shape(const Prepared& p, const ca::Skeleton& sk) {
 }
 
 ca::Mesh read_obj(const std::string& path) {
-    caio::MeshData data;
+    ca::Mesh mesh;
     std::string error;
-    REQUIRE_MESSAGE(caio::read_mesh(path, data, error), error);
-    return to_core_mesh(data);
+    REQUIRE_MESSAGE(read_core_mesh(path, mesh, error), error);
+    return mesh;
 }
 
 }  // namespace

@@ -3,7 +3,6 @@
 // non-manifold parts.
 #include <doctest/doctest.h>
 
-#include "mesh_io.h"
 #include "mesh_topology.h"
 #include "support/mesh_convert.h"
 #include "support/shapes.h"
@@ -12,11 +11,11 @@
 
 namespace {
 
-ca::Mesh read_obj(const std::string& path) {
-    caio::MeshData data;
+ca::Mesh bundled(const char* name) {
+    ca::Mesh mesh;
     std::string error;
-    REQUIRE_MESSAGE(caio::read_mesh(path, data, error), error);
-    return to_core_mesh(data);
+    REQUIRE_MESSAGE(read_core_mesh(std::string(CA_TEST_DATA) + name, mesh, error), error);
+    return mesh;
 }
 
 }  // namespace
@@ -25,10 +24,10 @@ TEST_CASE("mesh_topology: closed meshes of known genus") {
     CHECK(ca::mesh_topology(shapes::sphere(1.0)).genus == 0);
     CHECK(ca::mesh_topology(shapes::box(1, 2, 3)).genus == 0);
     CHECK(ca::mesh_topology(shapes::torus(1.0, 0.3)).genus == 1);
-    const ca::MeshTopology g3 = ca::mesh_topology(read_obj(std::string(CA_TEST_DATA) + "/genus3.obj"));
+    const ca::MeshTopology g3 = ca::mesh_topology(bundled("/genus3.obj"));
     CHECK(g3.genus == 3);
     CHECK(g3.part_genus.size() == 1);
-    CHECK(ca::mesh_topology(read_obj(std::string(CA_TEST_DATA) + "/torus.obj")).genus == 1);
+    CHECK(ca::mesh_topology(bundled("/torus.obj")).genus == 1);
 }
 
 TEST_CASE("mesh_topology: parts are counted separately and summed") {
