@@ -1,15 +1,17 @@
 // loops.cpp: the last repair: the skeleton keeps no more loops than the shape has handles.
 // While b1 exceeds the genus of the input (mesh_topology.h; only when it is known), the shortest
-// cycle (total edge length) that is not a boundary of the complex is either spanned by a fan of
-// triangles that passes the inside test (the loop was a sheet with a missing piece) or cut at its
+// cycle (total edge length) that is not a boundary of the complex is either spanned by triangles
+// that pass the inside test (a triangulation of the cycle's polygon; a fan for long cycles: the
+// loop was a sheet with a missing piece) or cut at its
 // longest edge whose removal lowers b1 without splitting a component. The candidates are Horton's
 // cycles (shortest path tree from each ball, closed by one edge), which contain a shortest
 // non-bounding cycle.
 #include "connect.h"
 
 #include <algorithm>
+#include <functional>
 #include <queue>
-#include <set>
+#include <map>
 
 namespace ca {
 namespace detail {
@@ -113,6 +115,42 @@ std::vector<uint32_t> shortest_free_cycle(const Skeleton& s, const Gf2Basis& spa
     return {};
 }
 
+// Cycles up to this many vertices are spanned by any triangulation of the polygon whose triangles
+// pass the inside test (dynamic programme over its diagonals, O(k^3) tests); longer ones by fans.
+constexpr size_t kMaxTriangulated = 12;
+
+// A triangulation of the closed polygon `cycle` whose every triangle passes `inside`; empty if none.
+template <class Inside>
+std::vector<Tri> triangulation(const std::vector<uint32_t>& cycle, Inside& inside) {
+    const size_t k = cycle.size();
+    // split[i][j]: the apex m of a valid triangulation of the sub-polygon i..j (0: unknown, -1: none)
+    std::vector<std::vector<int>> split(k, std::vector<int>(k, 0));
+    std::function<bool(size_t, size_t)> solvable = [&](size_t i, size_t j) {
+        if (j < i + 2) return true;
+        if (split[i][j] != 0) return split[i][j] > 0;
+        split[i][j] = -1;
+        for (size_t m = i + 1; m < j; ++m)
+            if (inside(cycle[i], cycle[m], cycle[j]) && solvable(i, m) && solvable(m, j)) {
+                split[i][j] = int(m);
+                break;
+            }
+        return split[i][j] > 0;
+    };
+    std::vector<Tri> out;
+    if (!solvable(0, k - 1)) return out;
+    std::vector<std::pair<size_t, size_t>> todo{{0, k - 1}};
+    while (!todo.empty()) {
+        const auto [i, j] = todo.back();
+        todo.pop_back();
+        if (j < i + 2) continue;
+        const size_t m = size_t(split[i][j]);
+        out.push_back({cycle[i], cycle[m], cycle[j]});
+        todo.push_back({i, m});
+        todo.push_back({m, j});
+    }
+    return out;
+}
+
 // A repair is kept when it lowers b1 and keeps the components.
 bool lowers_b1(const Skeleton& t, const TopologyStats& before) {
     const TopologyStats after = topology(t);
@@ -125,15 +163,17 @@ size_t repair_loops(const InsideTest& test, double h, double tol, long genus, Sk
     if (genus < 0) return 0;
     canonicalize(s);
     std::vector<std::vector<uint32_t>> kept;   // loops neither filled nor cut (vertex sequences)
-    std::set<Tri> failed;                       // fan triangles known to fail the inside test
-    auto inside = [&](uint32_t a, uint32_t b, uint32_t c) {
-        Tri t{a, b, c};
-        std::sort(t.begin(), t.end());
-        if (std::binary_search(s.faces.begin(), s.faces.end(), t)) return true;
-        if (failed.count(t)) return false;
-        const bool ok = test.triangle_inside(s.balls[t[0]], s.balls[t[1]], s.balls[t[2]], h, tol);
-        if (!ok) failed.insert(t);
-        return ok;
+    // spanning triangles already tested, per rule: [0] the route's (envelope tol), [1] centre line only
+    std::map<Tri, bool> tested[2];
+    auto inside_by = [&](int rule) {
+        return [&, rule](uint32_t a, uint32_t b, uint32_t c) {
+            Tri t{a, b, c};
+            std::sort(t.begin(), t.end());
+            if (std::binary_search(s.faces.begin(), s.faces.end(), t)) return true;
+            const auto it = tested[rule].find(t);
+            if (it != tested[rule].end()) return it->second;
+            return tested[rule][t] = test.triangle_inside(s.balls[t[0]], s.balls[t[1]], s.balls[t[2]], h, rule ? -1 : tol);
+        };
     };
     for (;;) {
         const TopologyStats before = topology(s);
@@ -149,20 +189,25 @@ size_t repair_loops(const InsideTest& test, double h, double tol, long genus, Sk
         const std::vector<uint32_t> cycle = shortest_free_cycle(s, spanned);
         if (cycle.empty()) break;
         const size_t k = cycle.size();
-        bool repaired = false;
-        for (size_t apex = 0; apex < k && !repaired; ++apex) {   // a fan from each vertex in turn
-            std::vector<Tri> fan;
-            for (size_t i = 1; i + 1 < k; ++i) {
-                const uint32_t a = cycle[apex], b = cycle[(apex + i) % k], c = cycle[(apex + i + 1) % k];
-                if (!inside(a, b, c)) { fan.clear(); break; }
-                fan.push_back({a, b, c});
+        // Spans the cycle by triangles that pass `inside`; true if that lowered b1.
+        auto span_by = [&](auto inside) {
+            std::vector<Tri> span = k <= kMaxTriangulated ? triangulation(cycle, inside) : std::vector<Tri>{};
+            for (size_t apex = 0; apex < k && span.empty() && k > kMaxTriangulated; ++apex) {   // a fan from each vertex
+                for (size_t i = 1; i + 1 < k; ++i) {
+                    const uint32_t a = cycle[apex], b = cycle[(apex + i) % k], c = cycle[(apex + i + 1) % k];
+                    if (!inside(a, b, c)) { span.clear(); break; }
+                    span.push_back({a, b, c});
+                }
             }
-            if (fan.empty()) continue;
+            if (span.empty()) return false;
             Skeleton t = s;
-            t.faces.insert(t.faces.end(), fan.begin(), fan.end());
+            t.faces.insert(t.faces.end(), span.begin(), span.end());
             canonicalize(t);
-            if (lowers_b1(t, before)) s = std::move(t), repaired = true;
-        }
+            if (!lowers_b1(t, before)) return false;
+            s = std::move(t);
+            return true;
+        };
+        bool repaired = span_by(inside_by(0));
         if (!repaired) {   // cut: the longest edge of the cycle whose removal lowers b1
             std::vector<uint32_t> order = cycle_edges(s, cycle);
             std::sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) {
@@ -181,6 +226,9 @@ size_t repair_loops(const InsideTest& test, double h, double tol, long genus, Sk
                 if (lowers_b1(t, before)) { s = std::move(t); repaired = true; break; }
             }
         }
+        // a hole in a sheet (every edge on a triangle, so no cut lowers b1) whose spanning triangles
+        // pass the centre-line rule but bulge past the envelope tolerance: spanned all the same
+        if (!repaired && tol >= 0) repaired = span_by(inside_by(1));
         if (!repaired) kept.push_back(cycle);
     }
     const long b1 = topology(s).betti1;
