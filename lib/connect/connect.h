@@ -56,9 +56,10 @@
 //    added (each joins two components, so b1 does not change).
 //  * repair_loops (closed meshes): while the skeleton's b1 exceeds the genus of the input
 //    (mesh_topology.h, from the Euler characteristic of each closed, edge-manifold part), the
-//    shortest cycle (edge length) that bounds no union of triangles is spanned by a fan of
-//    triangles if one passes the inside test (same rule), else cut at its longest edge whose
-//    removal lowers b1 without splitting a component. Afterwards b1 <= genus unless neither
+//    shortest cycle (edge length) that bounds no union of triangles is spanned by triangles
+//    that pass the inside test (same rule), else cut at its longest edge whose removal lowers b1
+//    without splitting a component, else (a hole in a sheet) spanned by triangles that pass the
+//    centre-line rule alone. Afterwards b1 <= genus unless neither
 //    repair applies; the report's thin_handles = max(0, genus - b1) counts handles too thin
 //    for the dilation to keep a loop around.
 #pragma once

@@ -1,11 +1,12 @@
 // loops.cpp: the last repair: the skeleton keeps no more loops than the shape has handles.
 // While b1 exceeds the genus of the input (mesh_topology.h; only when it is known), the shortest
-// cycle (total edge length) that is not a boundary of the complex is either spanned by triangles
-// that pass the inside test (a triangulation of the cycle's polygon; a fan for long cycles: the
-// loop was a sheet with a missing piece) or cut at its
-// longest edge whose removal lowers b1 without splitting a component. The candidates are Horton's
-// cycles (shortest path tree from each ball, closed by one edge), which contain a shortest
-// non-bounding cycle.
+// cycle (total edge length) that is not a boundary of the complex is spanned by triangles that
+// pass the inside test (a triangulation of the cycle's polygon; a fan for long cycles: the loop
+// was a sheet with a missing piece), or else cut at its longest edge whose removal lowers b1
+// without splitting a component, or else (a hole in a sheet: every edge on a triangle, so no cut
+// lowers b1) spanned by triangles that pass the centre-line rule alone. The candidates are
+// Horton's cycles (shortest path tree from each ball, closed by one edge), which contain a
+// shortest non-bounding cycle.
 #include "connect.h"
 
 #include <algorithm>
