@@ -1,7 +1,8 @@
 // bench_connect.cpp: both connection routes (power diagram, medial axis) on the same selection
 // for every mesh of <data>/meshes/paper and <data>/meshes/extra, at the default options (exact
-// solver, 5 s limit). One row per model and route: |V|, |E|, |F|, components, b1, the share of
-// edges leaving the shape, and the connection time.
+// solver, 5 s limit). One row per model and route: |V|, |E|, |F|, components, b1, the input's
+// genus (-1 unknown) and the handles without a loop (thin), the share of edges leaving the shape,
+// and the connection time.
 // An edge "leaves" when one of its points at spacing delta/8 lies outside the shape: generalised
 // winding number <= 1/2, not inside 0.95 x the undilated ball of either end, and farther than
 // delta/4 from the surface.
@@ -77,8 +78,8 @@ int main(int argc, char** argv) {
     std::vector<std::string> files = meshes_in(root + "/meshes/paper");
     for (const std::string& f : meshes_in(root + "/meshes/extra")) files.push_back(f);
 
-    std::printf("%-22s %-6s %5s %6s %6s %5s %4s %8s %9s\n", "model", "route", "|V|", "|E|", "|F|", "comp", "b1",
-                "leave%", "time_s");
+    std::printf("%-22s %-6s %5s %6s %6s %5s %4s %5s %4s %8s %9s\n", "model", "route", "|V|", "|E|", "|F|", "comp", "b1",
+                "genus", "thin", "leave%", "time_s");
     double total[2] = {0, 0}, worst[2] = {0, 0};
     size_t total_leave[2] = {0, 0};
     for (const std::string& file : files) {
@@ -113,7 +114,8 @@ int main(int argc, char** argv) {
             opt.method = route == 0 ? ca::ConnectMethod::power : ca::ConnectMethod::medial;
             ca::Skeleton sk;
             const auto t0 = std::chrono::steady_clock::now();
-            st = ca::connect_balls(set, sel, opt, monitor, sk);
+            ca::ConnectReport report;
+            st = ca::connect_balls(set, sel, opt, monitor, sk, &report);
             const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
             if (!st.ok()) {
                 std::printf("%-22s %-6s error: %s\n", name.c_str(), route ? "medial" : "power", st.message.c_str());
@@ -124,8 +126,9 @@ int main(int argc, char** argv) {
             total[route] += t;
             worst[route] = std::max(worst[route], t);
             total_leave[route] += leave;
-            std::printf("%-22s %-6s %5zu %6zu %6zu %5zu %4ld %8.2f %9.3f\n", name.c_str(), route ? "medial" : "power",
-                        sk.balls.size(), sk.edges.size(), sk.faces.size(), topo.components, topo.betti1,
+            std::printf("%-22s %-6s %5zu %6zu %6zu %5zu %4ld %5ld %4zu %8.2f %9.3f\n", name.c_str(), route ? "medial" : "power",
+                        sk.balls.size(), sk.edges.size(), sk.faces.size(), topo.components, topo.betti1, report.genus,
+                        report.thin_handles,
                         sk.edges.empty() ? 0.0 : 100.0 * double(leave) / double(sk.edges.size()), t);
             std::fflush(stdout);
         }

@@ -34,7 +34,8 @@ ca_status ca_connect(ca_context* ctx, const ca_candidate_set* set, const ca_sele
         const ca::ConnectOptions co = connect_options(o, set->core, ctx->desc.threads);
         const bool has_mesh = !set->core.surface.point_cloud && !set->core.surface.mesh.triangles.empty();
         ca::Skeleton sk;
-        st = ca::connect_balls(set->core, selection->core, co, ctx->monitor(), sk);
+        ca::ConnectReport report;
+        st = ca::connect_balls(set->core, selection->core, co, ctx->monitor(), sk, &report);
         if (!st.ok()) return st;
         if (o.fit_iterations < 0) return ca::fail(Code::invalid_argument, "fit_iterations must be >= 0");
         ca::FitStats fs;
@@ -75,6 +76,8 @@ ca_status ca_connect(ca_context* ctx, const ca_candidate_set* set, const ca_sele
         s.fit_error_before = 100 * fs.error_before;
         s.fit_error_after = 100 * fs.error_after;
         s.fit_uncovered = fs.uncovered;
+        s.genus = report.genus;
+        s.thin_handles = report.thin_handles;
         *out = res.release();
         return Status::success();
     });

@@ -64,7 +64,7 @@ struct ca_skeleton_stats {
 }  // namespace abi1
 
 // ---- as first published in ABI 2: ca_context_desc before time_limit_s, ca_select_stats before
-// hd_reached were appended ----
+// hd_reached, ca_skeleton_stats before genus were appended ----
 namespace abi2_first {
 struct ca_context_desc {
     abi1::ca_context_desc abi1_fields;
@@ -74,6 +74,12 @@ struct ca_select_stats {
     abi1::ca_select_stats abi1_fields;
     double time_coverage_s;
     uint64_t cbc_components, rowgen_rounds;
+};
+struct ca_skeleton_stats {
+    abi1::ca_skeleton_stats abi1_fields;
+    double fit_time_s, fit_error_before, fit_error_after;
+    uint64_t fit_uncovered;
+    int32_t fitted;
 };
 }  // namespace abi2_first
 
@@ -94,7 +100,8 @@ CA_PUBLISHED(ca_select_options, sizeof(abi1::ca_select_options), sizeof(ca_selec
 CA_PUBLISHED(ca_select_stats, sizeof(abi1::ca_select_stats), sizeof(abi2_first::ca_select_stats),
              sizeof(ca_select_stats))
 CA_PUBLISHED(ca_connect_options, sizeof(abi1::ca_connect_options), sizeof(ca_connect_options))
-CA_PUBLISHED(ca_skeleton_stats, sizeof(abi1::ca_skeleton_stats), sizeof(ca_skeleton_stats))
+CA_PUBLISHED(ca_skeleton_stats, sizeof(abi1::ca_skeleton_stats), sizeof(abi2_first::ca_skeleton_stats),
+             sizeof(ca_skeleton_stats))
 CA_PUBLISHED(ca_skeleton_view, sizeof(ca_skeleton_view))
 CA_PUBLISHED(ca_evaluate_options, sizeof(ca_evaluate_options))
 CA_PUBLISHED(ca_evaluation, sizeof(ca_evaluation))
@@ -123,6 +130,9 @@ static_assert(offsetof(ca_connect_options, reconnect) == offsetof(abi1::ca_conne
 static_assert(offsetof(ca_skeleton_stats, method) == offsetof(abi1::ca_skeleton_stats, method) &&
                   offsetof(ca_skeleton_stats, fit_time_s) >= sizeof(abi1::ca_skeleton_stats),
               "ca_skeleton_stats: ABI 1 is a prefix of ABI 2");
+static_assert(offsetof(ca_skeleton_stats, fitted) == offsetof(abi2_first::ca_skeleton_stats, fitted) &&
+                  offsetof(ca_skeleton_stats, genus) >= sizeof(abi2_first::ca_skeleton_stats),
+              "ca_skeleton_stats: its first ABI 2 layout is a prefix of the current one");
 
 template <class T>
 bool published_size(uint32_t size) {

@@ -373,6 +373,13 @@ typedef struct ca_skeleton_stats {
     uint64_t fit_uncovered;      /* ABI 2. cover samples that no fitted ball covers within its
                                     dilated radius (0 = the cover still holds) */
     int32_t fitted;              /* ABI 2. 1 if the balls were fitted (fit on, mesh input) */
+    int64_t genus;               /* ABI 2 (appended after fitted). Genus of the input mesh (sum over
+                                    its connected parts), -1 if unknown: a point cloud, or a part
+                                    that is open or not edge-manifold. When known, the connection
+                                    removes loops while betti1 > genus (docs/method.md). */
+    uint64_t thin_handles;       /* ABI 2. max(0, genus - betti1): handles of the shape that the
+                                    skeleton has no loop for (too thin for the dilation); 0 if
+                                    the genus is unknown */
 } ca_skeleton_stats;
 
 CA_API ca_status ca_skeleton_stats_get(const ca_skeleton* skeleton, ca_skeleton_stats* stats);

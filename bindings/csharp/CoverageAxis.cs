@@ -118,6 +118,8 @@ namespace CoverageAxis
             public double fit_time_s, fit_error_before, fit_error_after;   // ABI 2
             public ulong fit_uncovered;
             public int fitted;
+            public long genus;           // ABI 2 (appended after fitted)
+            public ulong thin_handles;
         }
 
         [StructLayout(LayoutKind.Sequential)]

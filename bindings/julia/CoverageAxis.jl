@@ -123,6 +123,8 @@ struct SkeletonStats
     fit_error_after::Float64
     fit_uncovered::UInt64
     fitted::Int32
+    genus::Int64           # ABI 2 (appended after fitted)
+    thin_handles::UInt64
 end
 
 struct SkeletonView

@@ -87,6 +87,12 @@ void print_summary(const cli::Json& j, const cli::RunOptions& o) {
         std::printf("target      %llu balls at most: two-sided HD reached %.3f %% of the bbox diagonal\n",
                     (unsigned long long)o.select.target_count, j["hd_reached"].get<double>());
     }
+    const long long genus = j["genus"].get<long long>();
+    if (genus >= 0)
+        std::printf("topology    input genus %lld, %llu handle(s) too thin for the dilation to keep a loop\n", genus,
+                    u("thin_handles"));
+    else
+        std::printf("topology    input genus unknown (open, non-manifold or a point cloud): loops not checked\n");
     if (o.evaluate)
         std::printf("hausdorff   surface->skeleton %.3f %%, skeleton->surface %.3f %%, two-sided %.3f %% of the bbox diagonal\n",
                     j["hd_surface_to_recon"].get<double>(), j["hd_recon_to_surface"].get<double>(), j["hd_two_sided"].get<double>());

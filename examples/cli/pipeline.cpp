@@ -297,6 +297,8 @@ Outcome run_pipeline(const std::string& input, const RunOptions& o, const Output
     j["components"] = ks.components;
     j["isolated"] = ks.isolated;
     j["betti1"] = ks.betti1;
+    j["genus"] = ks.genus;
+    j["thin_handles"] = ks.thin_handles;
     if (ks.fitted) {
         j["fit"] = {{"error_before", ks.fit_error_before}, {"error_after", ks.fit_error_after},
                     {"time_s", ks.fit_time_s}, {"uncovered", ks.fit_uncovered}};

@@ -2,6 +2,8 @@
 // route (power_route.cpp or medial_route.cpp), then the shared repairs (repairs.cpp).
 #include "connect.h"
 
+#include "distance.h"
+#include "mesh_topology.h"
 #include "parallel.h"
 
 #include <algorithm>
@@ -10,14 +12,27 @@ namespace ca {
 
 namespace {
 
+// The mesh part nearest each ball's centre (mesh_topology.h numbering).
+std::vector<uint32_t> ball_parts(const CandidateSet& set, const MeshTopology& topo, const std::vector<Ball>& balls) {
+    std::shared_ptr<const MeshDistance> distance = set.distance;
+    if (!distance) distance = std::make_shared<const MeshDistance>(set.surface.mesh);
+    std::vector<uint32_t> part(balls.size(), 0);
+    for (size_t i = 0; i < balls.size(); ++i) {
+        uint32_t tri = 0;
+        distance->distance(balls[i].center, nullptr, &tri);
+        if (tri < topo.triangle_part.size()) part[i] = topo.triangle_part[tri];
+    }
+    return part;
+}
 
 }  // namespace
 
 using namespace detail;
 
 Status connect_balls(const CandidateSet& set, const Selection& sel, const ConnectOptions& opt,
-                     const Monitor& monitor, Skeleton& out) {
+                     const Monitor& monitor, Skeleton& out, ConnectReport* report) {
     out = Skeleton{};
+    if (report) *report = ConnectReport{};
     if (sel.indices.size() != sel.dilated_radii.size()) return fail(Code::internal, "inconsistent selection");
     for (uint32_t i : sel.indices)
         if (i >= set.balls.size()) return fail(Code::invalid_argument, "the selection does not belong to this candidate set");
@@ -34,7 +49,10 @@ Status connect_balls(const CandidateSet& set, const Selection& sel, const Connec
     if (!st.ok()) return st;
     canonicalize(out);
     if (!monitor.report("connect", 0.5)) return monitor.stop_status("connect");
-    if ((opt.remove_outside || opt.fill_holes || opt.reconnect) && out.balls.size() > 1) {
+    const bool mesh = !set.surface.mesh.triangles.empty();
+    const MeshTopology shape = mesh ? mesh_topology(set.surface.mesh) : MeshTopology{};
+    if (report) report->genus = shape.genus;
+    if ((opt.remove_outside || opt.fill_holes || opt.reconnect || opt.repair_loops) && out.balls.size() > 1) {
         const InsideTest test(set);
         const double h = (sel.delta > 0 ? sel.delta : 0.02) / 4;
         const int threads = resolve_threads(opt.threads);
@@ -54,9 +72,15 @@ Status connect_balls(const CandidateSet& set, const Selection& sel, const Connec
             if (!fill_small_holes(test, h, tol, threads, monitor, failed, out)) return monitor.stop_status("connect");
             if (medial) keep_loops(before, target, out);
         }
-        if (opt.reconnect) reconnect(test, h, tol, out);
+        if (opt.reconnect) {
+            std::vector<uint32_t> parts;
+            if (mesh && topology(out).components > 1) parts = ball_parts(set, shape, out.balls);
+            reconnect(test, h, tol, out, mesh ? &parts : nullptr);
+        }
         canonicalize(out);
+        if (opt.repair_loops && shape.genus >= 0) repair_loops(test, h, tol, shape.genus, out);
     }
+    if (report && shape.genus >= 0) report->thin_handles = size_t(std::max(0L, shape.genus - topology(out).betti1));
     if (!monitor.report("connect", 1)) return monitor.stop_status("connect");
     return Status::success();
 }

@@ -49,8 +49,19 @@
 //    shortest segments between balls of different components whose test points (same rule)
 //    are all inside; a connected shape thus gets a connected skeleton unless no such segment
 //    exists. On the medial route a first pass takes only segments that also pass the envelope
-//    rule, the centre-line pass then joins what is left (same components in the end). Only
-//    edges are added (each joins two components, so b1 does not change).
+//    rule, the centre-line pass then joins what is left. On meshes a last pass joins what is
+//    still apart within one connected part of the mesh (each ball belongs to the part nearest
+//    its centre), accepting test points up to 4h = delta outside the surface: a thin neck or limb
+//    of a low-poly part whose balls do not see each other by the stricter rule. Only edges are
+//    added (each joins two components, so b1 does not change).
+//  * repair_loops (closed meshes): while the skeleton's b1 exceeds the genus of the input
+//    (mesh_topology.h, from the Euler characteristic of each closed, edge-manifold part), the
+//    shortest cycle (edge length) that bounds no union of triangles is spanned by triangles
+//    that pass the inside test (same rule), else cut at its longest edge whose removal lowers b1
+//    without splitting a component, else (a hole in a sheet) spanned by triangles that pass the
+//    centre-line rule alone. Afterwards b1 <= genus unless neither
+//    repair applies; the report's thin_handles = max(0, genus - b1) counts handles too thin
+//    for the dilation to keep a loop around.
 #pragma once
 #include "candidates.h"
 #include "selection.h"
@@ -67,13 +78,20 @@ struct ConnectOptions {
     bool remove_outside = true;   // drop edges/triangles that leave the shape
     bool fill_holes = true;       // fill 3- and 4-edge holes whose triangles stay inside
     bool reconnect = true;        // join components by the shortest inside edges
+    bool repair_loops = true;     // no more loops than the input's genus (closed meshes)
     int32_t threads = 0;          // 0 = all cores
+};
+
+// What the connection found out about the shape's topology.
+struct ConnectReport {
+    long genus = -1;           // of the input mesh (mesh_topology.h); -1 unknown or a point cloud
+    size_t thin_handles = 0;   // max(0, genus - b1): handles with no loop in the skeleton
 };
 
 // Skeleton in internal units; its balls are the selected balls (undilated radii), in selection order.
 // The medial route needs a mesh: point clouds give Code::invalid_argument.
 Status connect_balls(const CandidateSet& set, const Selection& sel, const ConnectOptions& opt,
-                     const Monitor& monitor, Skeleton& out);
+                     const Monitor& monitor, Skeleton& out, ConnectReport* report = nullptr);
 
 // Whether the boundary of the mesh (as a 2-chain) vanishes: for every undirected edge, as many
 // half-edges a->b as b->a, and every triangle valid. Then the winding number is integer-valued.
@@ -117,10 +135,16 @@ bool remove_outside(const InsideTest& test, double h, double tol, bool collapse,
 // Fills holes bounded by 3 or 4 edges that pass the inside test. False if cancelled.
 bool fill_small_holes(const InsideTest& test, double h, double tol, int threads, const Monitor& monitor,
                       const std::vector<Tri>& failed, Skeleton& s);
-// Joins components by the shortest inside segments between their balls.
-void reconnect(const InsideTest& test, double h, double tol, Skeleton& s);
+// Joins components by the shortest inside segments between their balls. With `ball_part` (the
+// mesh part nearest each ball), a last pass accepts segments up to 4h outside the surface between
+// balls of one part.
+void reconnect(const InsideTest& test, double h, double tol, Skeleton& s,
+               const std::vector<uint32_t>* ball_part = nullptr);
 // Medial route: undoes hole filling that spans one of the loops left after removal.
 void keep_loops(const Skeleton& before, long target, Skeleton& s);
+// While b1 exceeds `genus` (>= 0), fills or cuts the shortest non-bounding cycle (loops.cpp).
+// Returns max(0, genus - b1) (genus < 0: does nothing, returns 0). Output canonical.
+size_t repair_loops(const InsideTest& test, double h, double tol, long genus, Skeleton& s);
 }  // namespace detail
 
 }  // namespace ca

@@ -166,8 +166,10 @@ bool fill_small_holes(const InsideTest& test, double h, double tol, int threads,
 // so that a component is joined by a longer segment that stays in the shape rather than by the
 // shortest one whose cone bulges out (which raises the two-sided Hausdorff error); the second
 // pass uses the centre-line rule alone. Both passes accept only edges between components, so
-// the components reached and b1 are those of the centre-line rule alone.
-void reconnect(const InsideTest& test, double h, double tol, Skeleton& s) {
+// the components reached and b1 are those of the centre-line rule alone. With `ball_part`, a
+// third pass joins balls of one mesh part by segments whose test points are at most 4h outside
+// the surface (a part of the shape gives one component; distinct parts stay apart).
+void reconnect(const InsideTest& test, double h, double tol, Skeleton& s, const std::vector<uint32_t>* ball_part) {
     const uint32_t n = uint32_t(s.balls.size());
     UnionFind uf(n);
     size_t components = n;
@@ -181,11 +183,13 @@ void reconnect(const InsideTest& test, double h, double tol, Skeleton& s) {
     std::sort(pairs.begin(), pairs.end(), [](const Pair& a, const Pair& b) {
         return a.d2 != b.d2 ? a.d2 < b.d2 : (a.i != b.i ? a.i < b.i : a.j < b.j);
     });
-    for (int pass = tol >= 0 ? 0 : 1; pass < 2; ++pass)
+    const int passes = ball_part && ball_part->size() == n ? 3 : 2;
+    for (int pass = tol >= 0 ? 0 : 1; pass < passes; ++pass)
         for (const Pair& p : pairs) {
             if (components <= 1) break;
             if (uf.find(p.i) == uf.find(p.j)) continue;
-            if (!test.segment_inside(s.balls[p.i], s.balls[p.j], h, pass == 0 ? tol : -1, h)) continue;
+            if (pass == 2 && (*ball_part)[p.i] != (*ball_part)[p.j]) continue;
+            if (!test.segment_inside(s.balls[p.i], s.balls[p.j], h, pass == 0 ? tol : -1, pass == 2 ? 4 * h : h)) continue;
             uf.unite(p.i, p.j);
             s.edges.push_back({p.i, p.j});
             --components;

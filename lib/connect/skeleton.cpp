@@ -22,24 +22,24 @@ std::vector<uint32_t> xor_sorted(const std::vector<uint32_t>& a, const std::vect
     return out;
 }
 
-// Rank over GF(2) of the given sparse column vectors (sorted row indices), by column
-// reduction on the largest row index ("pivot").
-size_t gf2_rank(std::vector<std::vector<uint32_t>> columns, size_t rows) {
-    std::vector<int64_t> column_with_pivot(rows, -1);
-    size_t rank = 0;
-    for (size_t c = 0; c < columns.size(); ++c) {
-        std::vector<uint32_t>& col = columns[c];
-        while (!col.empty() && column_with_pivot[col.back()] >= 0)
-            col = xor_sorted(col, columns[size_t(column_with_pivot[col.back()])]);
-        if (!col.empty()) {
-            column_with_pivot[col.back()] = int64_t(c);
-            ++rank;
-        }
-    }
-    return rank;
+}  // namespace
+
+void Gf2Basis::reduce(std::vector<uint32_t>& v) const {
+    while (!v.empty() && column_with_pivot_[v.back()] >= 0) v = xor_sorted(v, columns_[size_t(column_with_pivot_[v.back()])]);
 }
 
-}  // namespace
+bool Gf2Basis::add(std::vector<uint32_t> v) {
+    reduce(v);
+    if (v.empty()) return false;
+    column_with_pivot_[v.back()] = int64_t(columns_.size());
+    columns_.push_back(std::move(v));
+    return true;
+}
+
+bool Gf2Basis::spans(std::vector<uint32_t> v) const {
+    reduce(v);
+    return v.empty();
+}
 
 void canonicalize(Skeleton& s) {
     std::vector<Tri> faces;
@@ -100,15 +100,14 @@ TopologyStats topology(const Skeleton& input) {
         const Edge key{a, b};
         return uint32_t(std::lower_bound(s.edges.begin(), s.edges.end(), key) - s.edges.begin());
     };
-    std::vector<std::vector<uint32_t>> columns;
-    columns.reserve(s.faces.size());
+    Gf2Basis boundaries(s.edges.size());
     for (const Tri& f : s.faces) {
         std::vector<uint32_t> col{edge_index(f[0], f[1]), edge_index(f[0], f[2]),
                                   edge_index(f[1], f[2])};
         std::sort(col.begin(), col.end());
-        columns.push_back(std::move(col));
+        boundaries.add(std::move(col));
     }
-    const size_t rank2 = gf2_rank(std::move(columns), s.edges.size());
+    const size_t rank2 = boundaries.rank();
     // dim ker(boundary_1) = E - rank(boundary_1) = E - (V - C)
     st.betti1 = long(s.edges.size()) - long(V) + long(components) - long(rank2);
     return st;

@@ -114,6 +114,8 @@ int main(void) {
     FIELD(ca_skeleton_stats, fit_error_after);
     FIELD(ca_skeleton_stats, fit_uncovered);
     FIELD(ca_skeleton_stats, fitted);
+    FIELD(ca_skeleton_stats, genus);
+    FIELD(ca_skeleton_stats, thin_handles);
     STRUCT(ca_skeleton_view);
     FIELD(ca_skeleton_view, struct_size);
     FIELD(ca_skeleton_view, centers);

@@ -241,6 +241,7 @@ static void test_connect_layouts(void) {
     CHECK(ca_connect(ctx, set, sel, (const ca_connect_options*)(void*)&old, &sk) == CA_OK);
     ks.struct_size = sizeof ks;
     CHECK(ca_skeleton_stats_get(sk, &ks) == CA_OK && ks.fitted == 0 && ks.fit_time_s == 0);
+    CHECK(ks.genus == 0 && ks.thin_handles == 0); /* a closed box */
     memset(&oks, CANARY, sizeof oks);
     oks.s.struct_size = (uint32_t)sizeof oks.s;
     CHECK(ca_skeleton_stats_get(sk, (ca_skeleton_stats*)(void*)&oks) == CA_OK && oks.s.vertices == ks.vertices &&

@@ -4,6 +4,8 @@
 #include "common.h"
 #include "mesh_io.h"
 
+#include <string>
+
 inline ca::Mesh to_core_mesh(const caio::MeshData& m) {
     ca::Mesh out;
     for (size_t i = 0; i + 2 < m.positions.size(); i += 3)
@@ -11,4 +13,12 @@ inline ca::Mesh to_core_mesh(const caio::MeshData& m) {
     for (size_t i = 0; i + 2 < m.triangles.size(); i += 3)
         out.triangles.push_back({m.triangles[i], m.triangles[i + 1], m.triangles[i + 2]});
     return out;
+}
+
+// Reads a mesh file as a core mesh; false (and `error` set) when it cannot be read.
+inline bool read_core_mesh(const std::string& path, ca::Mesh& out, std::string& error) {
+    caio::MeshData data;
+    if (!caio::read_mesh(path, data, error)) return false;
+    out = to_core_mesh(data);
+    return true;
 }

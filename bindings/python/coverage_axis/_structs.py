@@ -52,7 +52,8 @@ class _SkeletonStats(Structure):
     _fields_ = [("struct_size", c_uint32), ("vertices", c_uint64), ("edges", c_uint64), ("faces", c_uint64),
                 ("components", c_uint64), ("isolated", c_uint64), ("betti1", c_int64), ("time_s", c_double),
                 ("method", c_int32), ("fit_time_s", c_double), ("fit_error_before", c_double),
-                ("fit_error_after", c_double), ("fit_uncovered", c_uint64), ("fitted", c_int32)]
+                ("fit_error_after", c_double), ("fit_uncovered", c_uint64), ("fitted", c_int32),
+                ("genus", c_int64), ("thin_handles", c_uint64)]
 
 
 class _SkeletonView(Structure):

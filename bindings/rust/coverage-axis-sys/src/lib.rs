@@ -220,6 +220,10 @@ ca_struct!(#[derive(Debug, Default)] ca_skeleton_stats {
     fit_uncovered: u64,
     /// ABI 2
     fitted: i32,
+    /// ABI 2 (appended after fitted)
+    genus: i64,
+    /// ABI 2
+    thin_handles: u64,
 });
 
 ca_struct!(ca_skeleton_view {
