@@ -38,9 +38,9 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
         SurfaceStructures built;
         const Mesh& mesh = out.surface.mesh;
         Beside structures(
-            [&built, &mesh] {
-                const auto tree = detail::build_triangle_tree(mesh);   // one tree for both
-                built.winding = std::make_shared<const WindingNumber>(tree);
+            [&built, &mesh, threads] {
+                const auto tree = detail::build_triangle_tree(mesh, threads);   // one tree for both
+                built.winding = std::make_shared<const WindingNumber>(tree, 2.0, threads);
                 built.distance = std::make_shared<const MeshDistance>(tree);
             },
             threads > 1);

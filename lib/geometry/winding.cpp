@@ -6,6 +6,7 @@
 #include "winding.h"
 #include "bvh.h"
 #include "far_field.h"
+#include "parallel.h"
 #include <Eigen/Geometry>
 #include <cmath>
 
@@ -71,18 +72,19 @@ struct WindingNumber::Impl {
 
 WindingNumber::WindingNumber(const Mesh& mesh, double beta) : WindingNumber(detail::build_triangle_tree(mesh), beta) {}
 
-WindingNumber::WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, double beta)
+WindingNumber::WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, double beta, int threads)
     : impl_(std::make_unique<Impl>(std::move(tree))) {
     Impl& m = *impl_;
     m.beta = (beta >= 0 && std::isfinite(beta)) ? beta : 2.0;
     // Bottom-up (children follow their parent in bvh.nodes): a leaf sums its triangles' moments
     // about its centre, a parent shifts its children's moments to its own centre, so the build
     // is O(F) apart from the radius (the farthest corner from the centre, over the node's triangles:
-    // farthest_corner prunes that walk by the node boxes).
+    // farthest_corner prunes that walk by the node boxes). The root's two subtrees are separate
+    // id ranges, [1, right) and [right, end), done at once with threads > 1.
     m.exp.resize(m.bvh.nodes.size());
     std::vector<double> weight(m.bvh.nodes.size(), 0.0);   // total area per node
     std::vector<Vec3> weighted(m.bvh.nodes.size());        // area-weighted centroid sum per node
-    for (size_t n = m.bvh.nodes.size(); n-- > 0;) {
+    auto expand = [&](size_t n) {
         const detail::BvhNode& node = m.bvh.nodes[n];
         Expansion e;
         if (node.leaf()) {
@@ -124,7 +126,19 @@ WindingNumber::WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, d
         }
         e.radius = std::sqrt(farthest_corner(m.bvh.nodes, m.tris, uint32_t(n), e.centre));
         m.exp[n] = detail::FarField(e, m.beta);
+    };
+    const size_t count = m.bvh.nodes.size();
+    if (count == 0) return;
+    const detail::BvhNode& root = m.bvh.nodes[0];
+    const size_t right = root.leaf() ? 1 : root.right;
+    if (threads > 1 && !root.leaf()) {
+        run_workers(2, [&](size_t w) {
+            for (size_t n = w == 1 ? count : right, stop = w == 1 ? right : 1; n-- > stop;) expand(n);
+        });
+    } else {
+        for (size_t n = count; n-- > 1;) expand(n);
     }
+    expand(0);
 }
 
 WindingNumber::~WindingNumber() = default;
