@@ -23,7 +23,9 @@ struct Expansion {
 
     // Solid angle at q (not yet divided by 4 pi). With r = centre - q the kernel is
     // K(r) = r / |r|^3 and the three terms are K.N + J:M + 1/2 H:Q.
-    double eval(const Vec3& q) const {
+    double eval(const Vec3& q) const { return eval_terms(centre, N, M, Q, q); }
+    static double eval_terms(const Vec3& centre, const Vec3& N, const Eigen::Matrix3d& M, const Eigen::Matrix3d* Q,
+                             const Vec3& q) {
         const Vec3 r = centre - q;
         const double r2 = r.squaredNorm();
         const double inv = 1.0 / std::sqrt(r2), inv3 = inv * inv * inv, inv5 = inv3 * inv * inv;
@@ -61,19 +63,26 @@ struct FarField {
             std::copy(v, v + 6, Q[k]);
         }
     }
+    void full_Q(Eigen::Matrix3d* out) const {
+        for (int k = 0; k < 3; ++k) {
+            const double* v = Q[k];
+            out[k] << v[0], v[1], v[2], v[1], v[3], v[4], v[2], v[4], v[5];
+        }
+    }
     // The expansion's moments (radius 0: only eval and the parent shift read them).
     Expansion full() const {
         Expansion e;
         e.centre = centre;
         e.N = N;
         e.M = M;
-        for (int k = 0; k < 3; ++k) {
-            const double* v = Q[k];
-            e.Q[k] << v[0], v[1], v[2], v[1], v[3], v[4], v[2], v[4], v[5];
-        }
+        full_Q(e.Q);
         return e;
     }
-    double eval(const Vec3& q) const { return full().eval(q); }
+    double eval(const Vec3& q) const {
+        Eigen::Matrix3d full[3];
+        full_Q(full);
+        return Expansion::eval_terms(centre, N, M, full, q);
+    }
 };
 
 // The solid angle at q (not yet divided by 4 pi) of everything under the tree `nodes`: a node
