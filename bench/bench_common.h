@@ -188,6 +188,7 @@ struct Outcome {
     size_t triangles = 0, balls = 0;
     bool read_ok = false;
     char message[240] = {};
+    double t_read = 0, t_candidates = 0, t_select = 0, t_connect = 0;   // the run's phases
 };
 
 // Reads `path` and runs the pipeline in a child process (fork): its time (read + pipeline) and
@@ -205,11 +206,15 @@ inline Outcome run_isolated(const std::string& path, const ca_candidate_options&
         caio::MeshData mesh;
         std::string err;
         o.read_ok = caio::read_mesh(path, mesh, err);
+        o.t_read = seconds_since(t);
         if (o.read_ok) {
             o.triangles = mesh.triangles.size() / 3;
             PipelineRun r = run_pipeline(mesh, co, so, cop);
             o.status = r.status;
             o.balls = r.balls;
+            o.t_candidates = r.t_candidates;
+            o.t_select = r.t_select;
+            o.t_connect = r.t_connect;
             err = r.message;
         }
         o.seconds = seconds_since(t);

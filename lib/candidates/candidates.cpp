@@ -33,20 +33,23 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
         out.time_sampling_s = seconds_since(t0);
         st = point_cloud_candidates(opt, monitor, threads, out);
     } else {
-        // The surface structures are built on a second thread while this one samples and runs
-        // the Delaunay step (the same structures either way); they only read the mesh.
+        // The surface trees are built on a second thread while this one finds the hole caps,
+        // samples and runs the Delaunay step (the same structures either way); they only read the mesh.
         SurfaceStructures built;
         const Mesh& mesh = out.surface.mesh;
         Beside structures(
-            [&built, &mesh] {
-                const auto tree = detail::build_triangle_tree(mesh);   // one tree for both
-                built.winding = std::make_shared<const WindingNumber>(tree);
+            [&built, &mesh, threads] {
+                const auto tree = detail::build_triangle_tree(mesh, threads);   // one tree for both
+                built.winding = std::make_shared<const WindingNumber>(tree, 2.0, threads);
                 built.distance = std::make_shared<const MeshDistance>(tree);
-                // open meshes: no ball reaches out through a hole (hole_caps.cpp)
-                const Mesh caps = hole_caps(mesh);
-                if (!caps.triangles.empty()) built.cap_distance = std::make_unique<const MeshDistance>(caps);
             },
             threads > 1);
+        // open meshes: no ball reaches out through a hole (hole_caps.cpp); found on this thread
+        // while the trees are built (its own member of `built`)
+        {
+            const Mesh caps = hole_caps(mesh);
+            if (!caps.triangles.empty()) built.cap_distance = std::make_unique<const MeshDistance>(caps);
+        }
         out.cover_samples = sample_surface(mesh, opt.cover_samples, stream_seed(opt.seed, 1));
         out.time_sampling_s = seconds_since(t0);
         st = opt.generator == Generator::voronoi ? mesh_voronoi_candidates(opt, monitor, structures, built, threads, out)

@@ -21,21 +21,32 @@ namespace ca {
 Mesh hole_caps(const Mesh& mesh) {
     // vertices with identical coordinates are one vertex (split seams are not holes)
     const std::vector<uint32_t> weld = weld_map(mesh.vertices);
-    // edges used by one triangle only, ascending
-    std::vector<std::array<uint32_t, 2>> edges;
-    edges.reserve(3 * mesh.triangles.size());
-    for (const Tri& t : mesh.triangles)
-        for (int a = 0; a < 3; ++a) {
-            const uint32_t u = weld[t[size_t(a)]], w = weld[t[size_t((a + 1) % 3)]];
-            if (u != w) edges.push_back({std::min(u, w), std::max(u, w)});
-        }
-    std::sort(edges.begin(), edges.end());
+    // edges used by one triangle only, ascending: the edges (u < w) bucketed by u (a counting
+    // sort), each bucket's w sorted, runs of length 1 kept
+    const size_t nv = mesh.vertices.size();
+    std::vector<uint32_t> start(nv + 1, 0);
+    auto for_each_edge = [&](auto&& f) {
+        for (const Tri& t : mesh.triangles)
+            for (int a = 0; a < 3; ++a) {
+                const uint32_t u = weld[t[size_t(a)]], w = weld[t[size_t((a + 1) % 3)]];
+                if (u != w) f(std::min(u, w), std::max(u, w));
+            }
+    };
+    for_each_edge([&](uint32_t u, uint32_t) { ++start[u + 1]; });
+    for (size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+    std::vector<uint32_t> other(start[nv]), fill(start.begin(), start.end() - 1);
+    for_each_edge([&](uint32_t u, uint32_t w) { other[fill[u]++] = w; });
+    fill = std::vector<uint32_t>();
     std::vector<std::array<uint32_t, 2>> boundary;
-    for (size_t k = 0; k < edges.size();) {
-        size_t e = k;
-        while (e < edges.size() && edges[e] == edges[k]) ++e;
-        if (e - k == 1) boundary.push_back(edges[k]);
-        k = e;
+    for (uint32_t u = 0; u < nv; ++u) {
+        const auto b = other.begin() + start[u], e = other.begin() + start[u + 1];
+        std::sort(b, e);
+        for (auto k = b; k != e;) {
+            auto run = k;
+            while (run != e && *run == *k) ++run;
+            if (run - k == 1) boundary.push_back({u, *k});
+            k = run;
+        }
     }
     Mesh caps;
     if (boundary.empty()) return caps;

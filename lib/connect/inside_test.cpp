@@ -40,22 +40,36 @@ constexpr size_t kProbeWindow = 48;
 }  // namespace
 
 bool closed_mesh(const Mesh& mesh) {
-    // half-edges a->b with a < b, and b->a ones stored as (b, a): equal multisets iff balanced
-    std::vector<uint64_t> up, down;
-    up.reserve(mesh.triangles.size() * 3 / 2 + 1);
-    down.reserve(mesh.triangles.size() * 3 / 2 + 1);
-    for (const Tri& f : mesh.triangles) {
+    // half-edges bucketed by their smaller vertex (a counting sort), each stored as its larger
+    // vertex * 2 + (1 if it runs downwards); a bucket sorted, every larger vertex must have as
+    // many upward as downward entries
+    const size_t nv = mesh.vertices.size();
+    for (const Tri& f : mesh.triangles)
         if (!detail::triangle_ok(mesh, f)) return false;
-        for (int i = 0; i < 3; ++i) {
-            const uint32_t a = f[size_t(i)], b = f[size_t((i + 1) % 3)];
-            if (a < b) up.push_back((uint64_t(a) << 32) | b);
-            else if (b < a) down.push_back((uint64_t(b) << 32) | a);
+    std::vector<uint32_t> start(nv + 1, 0);
+    auto for_each_half_edge = [&](auto&& g) {
+        for (const Tri& f : mesh.triangles)
+            for (int i = 0; i < 3; ++i) {
+                const uint32_t a = f[size_t(i)], b = f[size_t((i + 1) % 3)];
+                if (a != b) g(std::min(a, b), uint64_t(std::max(a, b)) * 2 + (b < a));
+            }
+    };
+    for_each_half_edge([&](uint32_t u, uint64_t) { ++start[u + 1]; });
+    for (size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+    std::vector<uint64_t> other(start[nv]);
+    std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+    for_each_half_edge([&](uint32_t u, uint64_t key) { other[fill[u]++] = key; });
+    for (size_t u = 0; u < nv; ++u) {
+        const auto b = other.begin() + start[u], e = other.begin() + start[u + 1];
+        std::sort(b, e);
+        for (auto k = b; k != e;) {
+            const uint64_t w = *k >> 1;
+            long balance = 0;
+            for (; k != e && (*k >> 1) == w; ++k) balance += (*k & 1) ? -1 : 1;
+            if (balance != 0) return false;
         }
     }
-    if (up.size() != down.size()) return false;
-    std::sort(up.begin(), up.end());
-    std::sort(down.begin(), down.end());
-    return up == down;
+    return true;
 }
 
 struct InsideTest::Impl {

@@ -3,6 +3,7 @@
 // axis of the centroid box; leaves hold at most `leaf_size` triangles. Internal header.
 #pragma once
 #include "common.h"
+#include "parallel.h"
 #include <algorithm>
 #include <array>
 #include <limits>
@@ -39,7 +40,9 @@ inline std::vector<uint32_t> valid_triangles(const Mesh& mesh) {
 
 // Each node's box is the union of its children's (leaves: of their triangles' corners), and
 // the split compares precomputed centroids, so a build costs O(F log F) comparisons of doubles.
-inline Bvh build_bvh(const Mesh& mesh, std::vector<uint32_t> ids, uint32_t leaf_size = 8) {
+// With threads > 1 the root's two subtrees are built at once (the right one into a vector of
+// its own, renumbered on appending): the same nodes in the same order as one thread builds.
+inline Bvh build_bvh(const Mesh& mesh, std::vector<uint32_t> ids, uint32_t leaf_size = 8, int threads = 1) {
     Bvh bvh;
     if (ids.empty()) return bvh;
     const auto& V = mesh.vertices;
@@ -56,38 +59,71 @@ inline Bvh build_bvh(const Mesh& mesh, std::vector<uint32_t> ids, uint32_t leaf_
     ids = std::vector<uint32_t>();
     const uint32_t leaf = std::max<uint32_t>(leaf_size, 1);
     bvh.nodes.reserve(2 * (items.size() / leaf) + 1);
+    const double inf = std::numeric_limits<double>::infinity();
 
-    // Recursion depth is about log2(F / leaf_size): the split is always at the median.
-    auto build = [&](auto&& self, uint32_t begin, uint32_t end) -> uint32_t {
-        const uint32_t id = uint32_t(bvh.nodes.size());
-        bvh.nodes.emplace_back();
-        const double inf = std::numeric_limits<double>::infinity();
+    // The median split of items[begin, end) along the longest axis of its centroid box.
+    auto split = [&](uint32_t begin, uint32_t end) {
+        Vec3 clo = Vec3::Constant(inf), chi = Vec3::Constant(-inf);
+        for (uint32_t i = begin; i < end; ++i) {
+            clo = clo.cwiseMin(items[i].centroid); chi = chi.cwiseMax(items[i].centroid);
+        }
+        int axis = 0;
+        (chi - clo).maxCoeff(&axis);
+        const uint32_t mid = begin + (end - begin) / 2;
+        std::nth_element(items.begin() + begin, items.begin() + mid, items.begin() + end,
+                         [axis](const Item& a, const Item& b) { return a.centroid[axis] < b.centroid[axis]; });
+        return mid;
+    };
+    auto join = [](BvhNode& node, const std::vector<BvhNode>& nodes) {
+        for (uint32_t c : {node.left, node.right}) {
+            node.lo = node.lo.cwiseMin(nodes[c].lo); node.hi = node.hi.cwiseMax(nodes[c].hi);
+        }
+    };
+    // Recursion depth is about log2(F / leaf_size): the split is always at the median. Node ids
+    // are positions in `nodes` (a parent before its children, the left subtree first).
+    auto build = [&](auto&& self, std::vector<BvhNode>& nodes, uint32_t begin, uint32_t end) -> uint32_t {
+        const uint32_t id = uint32_t(nodes.size());
+        nodes.emplace_back();
         BvhNode node;
         node.begin = begin; node.end = end;
         node.lo = Vec3::Constant(inf); node.hi = Vec3::Constant(-inf);
         if (end - begin > leaf) {
-            Vec3 clo = node.lo, chi = node.hi;
-            for (uint32_t i = begin; i < end; ++i) {
-                clo = clo.cwiseMin(items[i].centroid); chi = chi.cwiseMax(items[i].centroid);
-            }
-            int axis = 0;
-            (chi - clo).maxCoeff(&axis);
-            const uint32_t mid = begin + (end - begin) / 2;
-            std::nth_element(items.begin() + begin, items.begin() + mid, items.begin() + end,
-                             [axis](const Item& a, const Item& b) { return a.centroid[axis] < b.centroid[axis]; });
-            node.left = self(self, begin, mid);
-            node.right = self(self, mid, end);
-            for (uint32_t c : {node.left, node.right}) {
-                node.lo = node.lo.cwiseMin(bvh.nodes[c].lo); node.hi = node.hi.cwiseMax(bvh.nodes[c].hi);
-            }
+            const uint32_t mid = split(begin, end);
+            node.left = self(self, nodes, begin, mid);
+            node.right = self(self, nodes, mid, end);
+            join(node, nodes);
         } else {
             for (uint32_t i = begin; i < end; ++i)
                 for (uint32_t k : T[items[i].id]) { node.lo = node.lo.cwiseMin(V[k]); node.hi = node.hi.cwiseMax(V[k]); }
         }
-        bvh.nodes[id] = node;
+        nodes[id] = node;
         return id;
     };
-    build(build, 0, uint32_t(items.size()));
+    const uint32_t n = uint32_t(items.size());
+    if (threads > 1 && n > 64 * leaf) {
+        BvhNode root;
+        root.begin = 0; root.end = n;
+        root.lo = Vec3::Constant(inf); root.hi = Vec3::Constant(-inf);
+        const uint32_t mid = split(0, n);
+        bvh.nodes.emplace_back();
+        std::vector<BvhNode> right;
+        right.reserve(2 * ((n - mid) / leaf) + 1);
+        run_workers(2, [&](size_t w) {
+            if (w == 0) build(build, bvh.nodes, 0, mid);
+            else build(build, right, mid, n);
+        });
+        const uint32_t offset = uint32_t(bvh.nodes.size());
+        for (BvhNode b : right) {
+            if (!b.leaf()) b.left += offset, b.right += offset;
+            bvh.nodes.push_back(b);
+        }
+        root.left = 1;
+        root.right = offset;
+        join(root, bvh.nodes);
+        bvh.nodes[0] = root;
+    } else {
+        build(build, bvh.nodes, 0, n);
+    }
     bvh.order.resize(items.size());
     for (size_t i = 0; i < items.size(); ++i) bvh.order[i] = items[i].id;
     return bvh;
@@ -100,9 +136,9 @@ struct TriangleTree {
     std::vector<std::array<Vec3, 3>> tris;   // triangle corners, in bvh.order
 };
 
-inline std::shared_ptr<const TriangleTree> build_triangle_tree(const Mesh& mesh) {
+inline std::shared_ptr<const TriangleTree> build_triangle_tree(const Mesh& mesh, int threads = 1) {
     auto tree = std::make_shared<TriangleTree>();
-    tree->bvh = build_bvh(mesh, valid_triangles(mesh));
+    tree->bvh = build_bvh(mesh, valid_triangles(mesh), 8, threads);
     tree->tris.reserve(tree->bvh.order.size());
     for (uint32_t t : tree->bvh.order) {
         const Tri& f = mesh.triangles[t];

@@ -2,27 +2,37 @@
 #include "duplicates.h"
 
 #include <algorithm>
+#include <cstring>
 
 namespace ca {
 
+// One pass in index order over an open-addressing hash table of first occurrences: a vertex
+// equal (==) to an earlier one gets that one's index, so each gets the smallest index at its
+// position. Keys hash the coordinates' bits with -0 folded onto +0, which == treats as equal.
 std::vector<uint32_t> weld_map(const std::vector<Vec3>& vertices) {
-    struct Key {
-        double x, y, z;
-        uint32_t index;
-    };
     const size_t nv = vertices.size();
-    std::vector<Key> keys(nv);
-    for (size_t i = 0; i < nv; ++i) keys[i] = {vertices[i].x(), vertices[i].y(), vertices[i].z(), uint32_t(i)};
-    auto same = [](const Key& a, const Key& b) { return a.x == b.x && a.y == b.y && a.z == b.z; };
-    std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) {
-        if (a.x != b.x) return a.x < b.x;
-        if (a.y != b.y) return a.y < b.y;
-        if (a.z != b.z) return a.z < b.z;
-        return a.index < b.index;
-    });
     std::vector<uint32_t> weld(nv);
-    for (size_t k = 0; k < nv; ++k)
-        weld[keys[k].index] = (k > 0 && same(keys[k], keys[k - 1])) ? weld[keys[k - 1].index] : keys[k].index;
+    size_t size = 16;
+    while (size < 2 * nv) size *= 2;
+    constexpr uint32_t kEmpty = UINT32_MAX;
+    std::vector<uint32_t> table(size, kEmpty);
+    auto bits = [](double x) {
+        x += 0.0;   // -0 -> +0
+        uint64_t b;
+        std::memcpy(&b, &x, sizeof b);
+        return b;
+    };
+    for (size_t i = 0; i < nv; ++i) {
+        const Vec3& v = vertices[i];
+        uint64_t h = bits(v.x()) * 0x9E3779B97F4A7C15ull;
+        h = (h ^ (h >> 31) ^ bits(v.y())) * 0xC2B2AE3D27D4EB4Full;
+        h = (h ^ (h >> 29) ^ bits(v.z())) * 0x165667B19E3779F9ull;
+        h ^= h >> 32;
+        size_t slot = size_t(h) & (size - 1);
+        while (table[slot] != kEmpty && vertices[table[slot]] != v) slot = (slot + 1) & (size - 1);
+        if (table[slot] == kEmpty) table[slot] = uint32_t(i);
+        weld[i] = table[slot];
+    }
     return weld;
 }
 

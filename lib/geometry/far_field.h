@@ -5,6 +5,7 @@
 #include "bvh.h"
 #include "common.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace ca {
@@ -22,7 +23,9 @@ struct Expansion {
 
     // Solid angle at q (not yet divided by 4 pi). With r = centre - q the kernel is
     // K(r) = r / |r|^3 and the three terms are K.N + J:M + 1/2 H:Q.
-    double eval(const Vec3& q) const {
+    double eval(const Vec3& q) const { return eval_terms(centre, N, M, Q, q); }
+    static double eval_terms(const Vec3& centre, const Vec3& N, const Eigen::Matrix3d& M, const Eigen::Matrix3d* Q,
+                             const Vec3& q) {
         const Vec3 r = centre - q;
         const double r2 = r.squaredNorm();
         const double inv = 1.0 / std::sqrt(r2), inv3 = inv * inv * inv, inv5 = inv3 * inv * inv;
@@ -41,11 +44,52 @@ struct Expansion {
     }
 };
 
+// An Expansion as a tree stores it: Q[i] is symmetric (a sum of area-scaled symmetric second
+// moments, shifted by symmetric terms), so six of its nine entries are kept and the other three
+// copied back exactly; `reach2` = (beta * radius)^2, the squared distance beyond which it is used.
+struct FarField {
+    Vec3 centre = Vec3::Zero();
+    double reach2 = 0;
+    Vec3 N = Vec3::Zero();
+    Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
+    double Q[3][6] = {};   // (0,0) (0,1) (0,2) (1,1) (1,2) (2,2)
+
+    FarField() = default;
+    FarField(const Expansion& e, double beta)
+        : centre(e.centre), reach2(beta * beta * e.radius * e.radius), N(e.N), M(e.M) {
+        for (int k = 0; k < 3; ++k) {
+            const Eigen::Matrix3d& q = e.Q[k];
+            const double v[6] = {q(0, 0), q(0, 1), q(0, 2), q(1, 1), q(1, 2), q(2, 2)};
+            std::copy(v, v + 6, Q[k]);
+        }
+    }
+    void full_Q(Eigen::Matrix3d* out) const {
+        for (int k = 0; k < 3; ++k) {
+            const double* v = Q[k];
+            out[k] << v[0], v[1], v[2], v[1], v[3], v[4], v[2], v[4], v[5];
+        }
+    }
+    // The expansion's moments (radius 0: only eval and the parent shift read them).
+    Expansion full() const {
+        Expansion e;
+        e.centre = centre;
+        e.N = N;
+        e.M = M;
+        full_Q(e.Q);
+        return e;
+    }
+    double eval(const Vec3& q) const {
+        Eigen::Matrix3d full[3];
+        full_Q(full);
+        return Expansion::eval_terms(centre, N, M, full, q);
+    }
+};
+
 // The solid angle at q (not yet divided by 4 pi) of everything under the tree `nodes`: a node
 // farther than beta * radius from its expansion's centre contributes its expansion, a leaf near
 // q the exact sum leaf_term(q, i) over its items, any other node its two children.
 template <class LeafTerm>
-double far_field_sum(const std::vector<BvhNode>& nodes, const std::vector<Expansion>& exp, double beta,
+double far_field_sum(const std::vector<BvhNode>& nodes, const std::vector<FarField>& exp,
                      const Vec3& q, LeafTerm leaf_term) {
     double omega = 0;
     uint32_t stack[128];   // DFS with a median-split tree: depth + 1 entries at most
@@ -53,8 +97,8 @@ double far_field_sum(const std::vector<BvhNode>& nodes, const std::vector<Expans
     stack[top++] = 0;
     while (top > 0) {
         const uint32_t n = stack[--top];
-        const Expansion& e = exp[n];
-        if ((q - e.centre).squaredNorm() > beta * beta * e.radius * e.radius) {
+        const FarField& e = exp[n];
+        if ((q - e.centre).squaredNorm() > e.reach2) {
             omega += e.eval(q);
             continue;
         }

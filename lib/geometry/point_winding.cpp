@@ -80,7 +80,7 @@ std::vector<double> tangent_voronoi_areas(const std::vector<Vec3>& pts, const st
 struct PointCloudWinding::Impl {
     double beta = 2.0;
     detail::Bvh bvh;
-    std::vector<Expansion> exp;     // one per BVH node
+    std::vector<detail::FarField> exp;   // one per BVH node
     std::vector<Vec3> pos, moment;  // points and a_i n_i, in bvh.order
     std::vector<double> areas;      // per input point
 };
@@ -106,7 +106,7 @@ PointCloudWinding::PointCloudWinding(const std::vector<Vec3>& pts, const std::ve
     m.exp.resize(m.bvh.nodes.size());
     for (size_t n = 0; n < m.bvh.nodes.size(); ++n) {
         const detail::BvhNode& node = m.bvh.nodes[n];
-        Expansion& e = m.exp[n];
+        Expansion e;
         double wsum = 0;
         Vec3 csum = Vec3::Zero();
         for (uint32_t i = node.begin; i < node.end; ++i) {
@@ -123,6 +123,7 @@ PointCloudWinding::PointCloudWinding(const std::vector<Vec3>& pts, const std::ve
             for (int k = 0; k < 3; ++k) e.Q[k] += m.moment[i][k] * S;
             e.radius = std::max(e.radius, d.norm());
         }
+        m.exp[n] = detail::FarField(e, m.beta);
     }
 }
 
@@ -135,7 +136,7 @@ const std::vector<double>& PointCloudWinding::areas() const { return impl_->area
 double PointCloudWinding::operator()(const Vec3& q) const {
     if (!impl_ || impl_->bvh.nodes.empty()) return 0.0;
     const Impl& m = *impl_;
-    return detail::far_field_sum(m.bvh.nodes, m.exp, m.beta, q, [&](const Vec3& p, uint32_t i) {
+    return detail::far_field_sum(m.bvh.nodes, m.exp, q, [&](const Vec3& p, uint32_t i) {
                return dipole(p, m.pos[i], m.moment[i]);
            }) / kFourPi;
 }

@@ -6,6 +6,7 @@
 #include "winding.h"
 #include "bvh.h"
 #include "far_field.h"
+#include "parallel.h"
 #include <Eigen/Geometry>
 #include <cmath>
 
@@ -26,6 +27,37 @@ double solid_angle(const Vec3& q, const Vec3& a0, const Vec3& b0, const Vec3& c0
     return 2.0 * std::atan2(num, den);
 }
 
+// The largest squared distance from c to a triangle corner under node `root`: the maximum over
+// all of them, with a subtree skipped when even its box's farthest corner is no farther than
+// the best so far (a box corner bounds every point in the box; the factor 1 + 1e-12 covers
+// rounding, so no skipped corner could have raised the maximum: the value is the full walk's).
+double farthest_corner(const std::vector<detail::BvhNode>& nodes, const std::vector<std::array<Vec3, 3>>& tris,
+                       uint32_t root, const Vec3& c) {
+    auto bound = [&](uint32_t n) {
+        const detail::BvhNode& b = nodes[n];
+        return Vec3((c - b.lo).cwiseMax(b.hi - c)).squaredNorm();
+    };
+    double r2 = 0;
+    uint32_t stack[128];   // median-split tree: depth + 1 entries at most
+    int top = 0;
+    stack[top++] = root;
+    while (top > 0) {
+        const uint32_t n = stack[--top];
+        if (bound(n) * (1 + 1e-12) <= r2) continue;
+        const detail::BvhNode& node = nodes[n];
+        if (node.leaf()) {
+            for (uint32_t i = node.begin; i < node.end; ++i)
+                for (const Vec3& p : tris[i]) r2 = std::max(r2, (p - c).squaredNorm());
+        } else if (bound(node.left) > bound(node.right)) {   // the farther child first
+            stack[top++] = node.right;
+            stack[top++] = node.left;
+        } else {
+            stack[top++] = node.left;
+            stack[top++] = node.right;
+        }
+    }
+    return r2;
+}
 
 }  // namespace
 
@@ -34,25 +66,27 @@ struct WindingNumber::Impl {
     std::shared_ptr<const detail::TriangleTree> tree;
     const detail::Bvh& bvh;
     const std::vector<std::array<Vec3, 3>>& tris;   // triangle corners, in bvh.order
-    std::vector<Expansion> exp;                     // one per BVH node
+    std::vector<detail::FarField> exp;              // one per BVH node
     explicit Impl(std::shared_ptr<const detail::TriangleTree> t) : tree(std::move(t)), bvh(tree->bvh), tris(tree->tris) {}
 };
 
 WindingNumber::WindingNumber(const Mesh& mesh, double beta) : WindingNumber(detail::build_triangle_tree(mesh), beta) {}
 
-WindingNumber::WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, double beta)
+WindingNumber::WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, double beta, int threads)
     : impl_(std::make_unique<Impl>(std::move(tree))) {
     Impl& m = *impl_;
     m.beta = (beta >= 0 && std::isfinite(beta)) ? beta : 2.0;
     // Bottom-up (children follow their parent in bvh.nodes): a leaf sums its triangles' moments
     // about its centre, a parent shifts its children's moments to its own centre, so the build
-    // is O(F) apart from the radius (the farthest corner from the centre, over the node's triangles).
+    // is O(F) apart from the radius (the farthest corner from the centre, over the node's triangles:
+    // farthest_corner prunes that walk by the node boxes). The root's two subtrees are separate
+    // id ranges, [1, right) and [right, end), done at once with threads > 1.
     m.exp.resize(m.bvh.nodes.size());
     std::vector<double> weight(m.bvh.nodes.size(), 0.0);   // total area per node
     std::vector<Vec3> weighted(m.bvh.nodes.size());        // area-weighted centroid sum per node
-    for (size_t n = m.bvh.nodes.size(); n-- > 0;) {
+    auto expand = [&](size_t n) {
         const detail::BvhNode& node = m.bvh.nodes[n];
-        Expansion& e = m.exp[n];
+        Expansion e;
         if (node.leaf()) {
             weighted[n].setZero();
             for (uint32_t i = node.begin; i < node.end; ++i) {
@@ -80,7 +114,7 @@ WindingNumber::WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, d
             weighted[n] = weighted[node.left] + weighted[node.right];
             e.centre = weight[n] > 0 ? Vec3(weighted[n] / weight[n]) : Vec3(0.5 * (node.lo + node.hi));
             for (uint32_t c : {node.left, node.right}) {
-                const Expansion& ch = m.exp[c];
+                const Expansion ch = m.exp[c].full();
                 const Vec3 s = ch.centre - e.centre;   // d about the parent = d about the child + s
                 e.N += ch.N;
                 e.M += ch.M + ch.N * s.transpose();
@@ -90,11 +124,21 @@ WindingNumber::WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, d
                 }
             }
         }
-        double r2 = 0;
-        for (uint32_t i = node.begin; i < node.end; ++i)
-            for (const Vec3& p : m.tris[i]) r2 = std::max(r2, (p - e.centre).squaredNorm());
-        e.radius = std::sqrt(r2);
+        e.radius = std::sqrt(farthest_corner(m.bvh.nodes, m.tris, uint32_t(n), e.centre));
+        m.exp[n] = detail::FarField(e, m.beta);
+    };
+    const size_t count = m.bvh.nodes.size();
+    if (count == 0) return;
+    const detail::BvhNode& root = m.bvh.nodes[0];
+    const size_t right = root.leaf() ? 1 : root.right;
+    if (threads > 1 && !root.leaf()) {
+        run_workers(2, [&](size_t w) {
+            for (size_t n = w == 1 ? count : right, stop = w == 1 ? right : 1; n-- > stop;) expand(n);
+        });
+    } else {
+        for (size_t n = count; n-- > 1;) expand(n);
     }
+    expand(0);
 }
 
 WindingNumber::~WindingNumber() = default;
@@ -104,7 +148,7 @@ WindingNumber& WindingNumber::operator=(WindingNumber&&) noexcept = default;
 double WindingNumber::operator()(const Vec3& q) const {
     if (!impl_ || impl_->bvh.nodes.empty()) return 0.0;
     const Impl& m = *impl_;
-    return detail::far_field_sum(m.bvh.nodes, m.exp, m.beta, q, [&](const Vec3& p, uint32_t i) {
+    return detail::far_field_sum(m.bvh.nodes, m.exp, q, [&](const Vec3& p, uint32_t i) {
                return solid_angle(p, m.tris[i][0], m.tris[i][1], m.tris[i][2]);
            }) / kFourPi;
 }

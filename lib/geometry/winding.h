@@ -16,8 +16,9 @@ public:
     // `beta` is Barill's accuracy parameter: a cluster of radius r at distance d is expanded
     // when d > beta * r (2 is their default).
     explicit WindingNumber(const Mesh& mesh, double beta = 2.0);
-    // On a tree already built over the mesh (shared with MeshDistance; bvh.h).
-    explicit WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, double beta = 2.0);
+    // On a tree already built over the mesh (shared with MeshDistance; bvh.h); `threads` > 1
+    // builds the expansions of the root's two subtrees at once (the same values).
+    explicit WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, double beta = 2.0, int threads = 1);
     ~WindingNumber();
     WindingNumber(WindingNumber&&) noexcept;
     WindingNumber& operator=(WindingNumber&&) noexcept;

@@ -1,6 +1,7 @@
 // test_winding.cpp: generalised winding numbers: exact values on closed meshes (cube, sphere,
 // torus), the hierarchical approximation against the brute-force sum (closed, open, soup),
 // inverted orientation, signed volume, degenerate and empty input.
+#include "bvh.h"
 #include "distance.h"
 #include "winding.h"
 #include "rng.h"
@@ -265,4 +266,27 @@ TEST_CASE("winding: open meshes decide inside at w > 1/2, also where w lies in (
         CHECK(low >= 3);
         CHECK(high >= 3);
     }
+}
+
+TEST_CASE("winding: the tree and the expansions built on two threads equal one thread's") {
+    const Mesh mesh = merge(icosphere(4, Vec3(0, 0, 0), 1.0), torus(64, 32, Vec3(3, 0, 0), 1.2, 0.4));
+    const auto one = detail::build_triangle_tree(mesh, 1), two = detail::build_triangle_tree(mesh, 2);
+    REQUIRE(one->bvh.nodes.size() == two->bvh.nodes.size());
+    REQUIRE(one->bvh.nodes.size() > 1000);
+    CHECK(one->bvh.order == two->bvh.order);
+    size_t differ = 0;
+    for (size_t n = 0; n < one->bvh.nodes.size(); ++n) {
+        const detail::BvhNode &a = one->bvh.nodes[n], &b = two->bvh.nodes[n];
+        differ += a.lo != b.lo || a.hi != b.hi || a.begin != b.begin || a.end != b.end || a.left != b.left ||
+                  a.right != b.right;
+    }
+    CHECK(differ == 0);
+    const WindingNumber w1(one, 2.0, 1), w2(one, 2.0, 2);
+    Rng rng(11);
+    size_t unequal = 0;
+    for (int i = 0; i < 300; ++i) {
+        const Vec3 q = random_point(rng, Vec3(-2, -2.5, -1.5), Vec3(5.5, 2.5, 1.5));
+        unequal += w1(q) != w2(q);
+    }
+    CHECK(unequal == 0);
 }
