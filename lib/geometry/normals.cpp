@@ -1,4 +1,5 @@
-// normals.cpp: PCA normal estimation and minimum-spanning-tree orientation (normals.h).
+// normals.cpp: PCA normal estimation, minimum-spanning-tree orientation and the sign-disagreement
+// check (normals.h).
 #include "normals.h"
 
 #include "kdtree.h"
@@ -26,6 +27,27 @@ std::vector<Vec3> estimate_normals(const std::vector<Vec3>& pts, size_t k) {
     });
     return normals;
 }
+
+namespace {
+
+// Side by side on the surface: the offset within 30 degrees of both tangent planes,
+// |d . n| <= sin(30 degrees) |d| (the rule sign_disagreement counts by).
+constexpr double kMaxSine = 0.5;
+
+bool side_by_side(const Vec3& d, const Vec3& a, const Vec3& b) {
+    const double len = d.norm();
+    return len > 0 && std::abs(d.dot(a)) <= kMaxSine * len && std::abs(d.dot(b)) <= kMaxSine * len;
+}
+
+// 1 - |n_u . n_v| for neighbours side by side; 2 more for a pair across a thin part (the offset
+// along a normal, where the true normals are opposite while parallel up to sign), so the tree
+// crosses a thin part only where nothing else joins its two sides.
+double edge_weight(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, uint32_t u, uint32_t v) {
+    const double w = 1.0 - std::abs(normals[u].dot(normals[v]));
+    return side_by_side(pts[u] - pts[v], normals[u], normals[v]) ? w : w + 2.0;
+}
+
+}  // namespace
 
 void orient_normals(const std::vector<Vec3>& pts, std::vector<Vec3>& normals, size_t k) {
     const size_t n = pts.size();
@@ -57,9 +79,25 @@ void orient_normals(const std::vector<Vec3>& pts, std::vector<Vec3>& normals, si
             done[v] = 1;
             if (v != parent && normals[v].dot(normals[parent]) < 0) normals[v] = -normals[v];
             for (uint32_t u : adj[v])
-                if (!done[u]) heap.push({1.0 - std::abs(normals[u].dot(normals[v])), {u, v}});
+                if (!done[u]) heap.push({edge_weight(pts, normals, u, v), {u, v}});
         }
     }
+}
+
+double sign_disagreement(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, size_t k) {
+    if (pts.size() < 2 || normals.size() != pts.size()) return 0;
+    size_t counted = 0, against = 0;
+    for_each_neighbourhood(pts, k, [&](size_t i, const size_t* idx, const double*, size_t found) {
+        for (size_t j = 0; j < found; ++j) {
+            if (idx[j] == i) continue;
+            const Vec3 d = pts[idx[j]] - pts[i];
+            const double len = d.norm();
+            if (!(len > 0) || std::abs(d.dot(normals[i])) > kMaxSine * len) continue;
+            ++counted;
+            against += normals[i].dot(normals[idx[j]]) < 0;
+        }
+    });
+    return counted ? double(against) / double(counted) : 0.0;
 }
 
 }  // namespace ca

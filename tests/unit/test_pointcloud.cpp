@@ -21,12 +21,12 @@ struct Run {
 };
 
 // Runs the three steps on a cloud; balls come back in the cloud's own units.
-Run run(shapes::Cloud cloud, ca::CandidateOptions copt = {}, bool oriented = true) {
+Run run(shapes::Cloud cloud, ca::CandidateOptions copt = {}, ca::PointNormals trust = ca::PointNormals::trusted) {
     Run r;
     ca::SelectOptions sopt;
     sopt.cover.time_limit_s = 0;
     ca::Surface surface;
-    ca::Status st = ca::prepare_surface(ca::Mesh{std::move(cloud.points), {}}, std::move(cloud.normals), surface, true, oriented);
+    ca::Status st = ca::prepare_surface(ca::Mesh{std::move(cloud.points), {}}, std::move(cloud.normals), surface, true, trust);
     REQUIRE_MESSAGE(st.ok(), st.message);
     ca::Monitor monitor;
     st = ca::generate_candidates(std::move(surface), copt, monitor, r.set);
@@ -114,7 +114,7 @@ TEST_CASE("point cloud: shuffled-sign and missing normals give the same skeleton
     const Run exact = run(c);
     shapes::Cloud shuffled = c;
     for (size_t i = 0; i < shuffled.normals.size(); i += 2) shuffled.normals[i] = -shuffled.normals[i];
-    const Run oriented = run(shuffled, {}, false);
+    const Run oriented = run(shuffled, {}, ca::PointNormals::unoriented);
     CHECK(oriented.set.surface.normals_source == ca::NormalSource::oriented);
     check_ring(oriented, R, tube);
     shapes::Cloud bare = c;
