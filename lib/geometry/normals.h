@@ -1,11 +1,13 @@
 // normals.h: normals of a point cloud that has none, or whose normals are not consistently
 // oriented. estimate_normals: per point, the direction of least variance of its k nearest
-// neighbours (PCA). orient_normals: Hoppe et al. 1992: a minimum spanning tree of the symmetric
-// k-nearest-neighbour graph weighted by 1 - |n_i . n_j| (nearly parallel neighbours first), the
-// sign propagated from the root along the tree; each connected part of the graph is rooted at its
-// highest point with a normal pointing up (+z). The global sign (outward) is fixed later by the
-// winding number (point_cloud.cpp). sign_disagreement: a cheap check that normals given as
-// oriented really are.
+// neighbours (PCA). orient_normals: after Hoppe et al. 1992: a minimum spanning tree of the
+// symmetric k-nearest-neighbour graph weighted by 1 - |n_i . n_j| (nearly parallel neighbours
+// first; pairs facing across a thin part or a crease last), the sign propagated from the root
+// along the tree (side by side: the same way; facing across: away from each other); each connected
+// part of the graph is rooted at its highest point with a normal pointing up (+z). The global
+// sign (outward) is fixed later by the winding number (point_cloud.cpp). sign_disagreement: the
+// fraction of neighbouring pairs whose signs disagree by the same rule, a cheap check that normals
+// given as oriented really are.
 #pragma once
 #include "common.h"
 
@@ -14,12 +16,11 @@ namespace ca {
 std::vector<Vec3> estimate_normals(const std::vector<Vec3>& pts, size_t k = 16);
 void orient_normals(const std::vector<Vec3>& pts, std::vector<Vec3>& normals, size_t k = 16);
 
-// The fraction of neighbouring pairs (j among i's k nearest) that lie side by side on the surface
-// (the offset p_j - p_i within 30 degrees of i's tangent plane) and whose normals point against
-// each other (n_i . n_j < 0). Pairs across a thin part (offset along the normal) are not counted:
-// their normals are opposite by right. Consistently oriented normals of a sampled surface give
-// few such pairs (only across creases sharper than a right angle), random per-point signs about
-// half. 0 when no pair is counted.
+// The fraction of neighbouring pairs (j among i's k nearest) whose signs disagree: side by side
+// on a smooth part, normals pointing against each other; facing across a thin part, a crease or
+// a sharp edge (the offset well out of both tangent planes), not each point behind the other's
+// tangent plane (nor each in front of it). Consistent normals of a sampled surface give few such
+// pairs (across concave creases), random per-point signs about half.
 double sign_disagreement(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, size_t k = 8);
 // Above this sign_disagreement normals given as oriented are not trusted (re-oriented), and
 // oriented or estimated normals are refused: clean sampled clouds stay far below it, clouds with

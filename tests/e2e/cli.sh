@@ -97,6 +97,11 @@ check "out-of-range ball index is a clear failure" test $? -eq 3 -a -s "$tmp/err
 check "point cloud run exits 0" test $? -eq 0
 check "point cloud skeleton has balls" test "$(json_field selected "$tmp/pc.json")" -ge 5
 check "point cloud skeleton is connected" test "$(json_field components "$tmp/pc.json")" -eq 1
+check "the report says the given normals were used" grep -q '"normals":"given"' "$tmp/pc.json"
+"$tool" "$data/fish_points.xyz" -o "$tmp/pce.ma" --json --normals estimate --time-limit 5 > "$tmp/pce.json"
+check "--normals estimate: the report says estimated" grep -q '"normals":"estimated"' "$tmp/pce.json"
+"$tool" "$data/fox.obj" -o "$tmp/m.ma" --json --samples 300 > "$tmp/m.json"
+check "a mesh has no point normals" grep -q '"normals":"none"' "$tmp/m.json"
 
 # 5. evaluation: of our own skeleton and as a separate command on the written .ma
 "$tool" "$data/fox.obj" -o "$tmp/e.ma" --evaluate --json > "$tmp/e.json"
