@@ -85,9 +85,10 @@ _POINT_NORMALS = {"given": 0, "unoriented": 1, "estimate": 2}
 _NORMALS_USED = {0: "none", 1: "given", 2: "oriented", 3: "estimated"}
 
 
-def _surface(vertices, triangles, normals, point_normals="given"):
-    """A ca_surface_view over the caller's arrays, and the buffers it borrows."""
-    if point_normals not in _POINT_NORMALS:
+def _surface(vertices, triangles, normals, point_normals=None):
+    """A ca_surface_view over the caller's arrays, and the buffers it borrows (point_normals None:
+    the library's default)."""
+    if point_normals is not None and point_normals not in _POINT_NORMALS:
         raise CoverageAxisError(CA_ERROR_INVALID_ARGUMENT, "point_normals must be one of %s, not %r" %
                                 (", ".join(_POINT_NORMALS), point_normals))
     pos = _arrays.points(vertices, "vertices")
@@ -95,7 +96,8 @@ def _surface(vertices, triangles, normals, point_normals="given"):
     view = fill_defaults("ca_surface_view_defaults", _SurfaceView)
     view.positions, view.vertex_count, view.position_stride = pos.address, pos.count, pos.stride
     view.triangles, view.triangle_count, view.triangle_stride = tri.address, tri.count, tri.stride
-    view.point_normals = _POINT_NORMALS[point_normals]
+    if point_normals is not None:
+        view.point_normals = _POINT_NORMALS[point_normals]
     keep = [pos, tri]
     if normals is not None:
         nrm = _arrays.points(normals, "normals")
@@ -185,11 +187,11 @@ class Skeleton:
                    {name: _named(name, v) for name, v in struct_dict(stats).items()})
 
 
-def candidates(vertices, triangles=None, normals=None, *, context=None, point_normals="given", **options):
+def candidates(vertices, triangles=None, normals=None, *, context=None, point_normals=None, **options):
     """Step 1: samples of the surface and inner candidate balls. A mesh (vertices (n, 3), triangles
     (m, 3)) or a point cloud (no triangles; normals (n, 3) or None: estimated). point_normals:
-    "given" (oriented; checked, re-oriented if their signs disagree), "unoriented" (re-oriented)
-    or "estimate" (ignored); CandidateSet.normals says which were used.
+    "given" (oriented; checked, re-oriented if their signs disagree; the library's default),
+    "unoriented" (re-oriented) or "estimate" (ignored); CandidateSet.normals says which were used.
     Options: generator, cover_samples, voronoi_samples, random_candidates, seed, connect_samples."""
     view, keep = _surface(vertices, triangles, normals, point_normals)
     opts = _options("candidates", options)
@@ -259,11 +261,12 @@ def _column(values):
     return [(v,) for v in values]
 
 
-def skeletonize(vertices, triangles=None, normals=None, *, context=None, connect=None, point_normals="given",
+def skeletonize(vertices, triangles=None, normals=None, *, context=None, connect=None, point_normals=None,
                 **options):
     """candidates() -> select() -> connect() in one call; options of all three steps (connect= is
-    method=; point_normals= as in candidates()). The skeleton's stats hold the selection's and the skeleton's statistics (the
-    skeleton's where both have a name, e.g. components) and the candidate count."""
+    method=; point_normals= as in candidates()). The skeleton's stats hold the selection's and the
+    skeleton's statistics (the skeleton's where both have a name, e.g. components) and the
+    candidate count."""
     steps = {step: {} for step in ("candidates", "select", "connect")}
     if connect is not None:
         options.setdefault("method", connect)
