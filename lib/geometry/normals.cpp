@@ -67,7 +67,7 @@ double edge_weight(const std::vector<Vec3>& pts, const std::vector<Vec3>& normal
 
 }  // namespace
 
-void orient_normals(const std::vector<Vec3>& pts, std::vector<Vec3>& normals, size_t k) {
+void orient_normals(const std::vector<Vec3>& pts, std::vector<Vec3>& normals, size_t k, bool estimated) {
     const size_t n = pts.size();
     if (n < 2 || normals.size() != n) return;
     std::vector<std::vector<uint32_t>> adj(n);
@@ -95,9 +95,13 @@ void orient_normals(const std::vector<Vec3>& pts, std::vector<Vec3>& normals, si
             const uint32_t v = e.first, parent = e.second;
             if (done[v]) continue;
             done[v] = 1;
-            if (v != parent && !agrees(pts[v] - pts[parent], normals[parent], normals[v])) normals[v] = -normals[v];
+            const bool same = estimated ? normals[v].dot(normals[parent]) >= 0
+                                        : agrees(pts[v] - pts[parent], normals[parent], normals[v]);
+            if (v != parent && !same) normals[v] = -normals[v];
             for (uint32_t u : adj[v])
-                if (!done[u]) heap.push({edge_weight(pts, normals, u, v), {u, v}});
+                if (!done[u])
+                    heap.push({estimated ? 1.0 - std::abs(normals[u].dot(normals[v])) : edge_weight(pts, normals, u, v),
+                               {u, v}});
         }
     }
 }

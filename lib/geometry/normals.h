@@ -14,7 +14,9 @@
 namespace ca {
 
 std::vector<Vec3> estimate_normals(const std::vector<Vec3>& pts, size_t k = 16);
-void orient_normals(const std::vector<Vec3>& pts, std::vector<Vec3>& normals, size_t k = 16);
+// `estimated`: PCA normals, which average across thin parts and edges, so the facing rule has
+// nothing to go by there: every pair by the side-by-side rule, weights 1 - |n_i . n_j| only.
+void orient_normals(const std::vector<Vec3>& pts, std::vector<Vec3>& normals, size_t k = 16, bool estimated = false);
 
 // The fraction of neighbouring pairs (j among i's k nearest) whose signs disagree: side by side
 // on a smooth part, normals pointing against each other; facing across a thin part, a crease or

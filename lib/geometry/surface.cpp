@@ -122,7 +122,8 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
             if (trust == PointNormals::unoriented || out.disagreement_given > kMaxSignDisagreement)
                 out.normals_source = NormalSource::oriented;
         }
-        if (out.normals_source != NormalSource::given) orient_normals(raw.vertices, normals);
+        if (out.normals_source != NormalSource::given)
+            orient_normals(raw.vertices, normals, 16, out.normals_source == NormalSource::estimated);
         out.disagreement = out.normals_source == NormalSource::given ? out.disagreement_given
                                                                      : sign_disagreement(raw.vertices, normals);
         if (out.disagreement > kMaxSignDisagreement)
