@@ -62,6 +62,7 @@ struct PipelineRun {
     size_t samples = 0, candidates = 0, balls = 0, edges = 0, faces = 0, components = 0;
     long betti1 = 0;
     int optimal = 0;
+    int32_t normals = CA_NORMALS_NONE;   // ca_candidate_set_normals: which normals a cloud used
     double gap = 0, t_candidates = 0, t_select = 0, t_connect = 0;
     ca_evaluation eval{};   // filled when run_pipeline is asked to evaluate
     double t_evaluate = 0;
@@ -113,11 +114,13 @@ inline ca_surface_view surface_view(const caio::MeshData& mesh) {
 
 inline PipelineRun run_pipeline(const caio::MeshData& mesh, const ca_candidate_options& co, const ca_select_options& so,
                                 const ca_connect_options& cop, bool evaluate = false,
-                                const ca_connect_options* alt = nullptr, const ca_connect_options* fitted = nullptr) {
+                                const ca_connect_options* alt = nullptr, const ca_connect_options* fitted = nullptr,
+                                int32_t point_normals = CA_POINT_NORMALS_TRUSTED) {
     PipelineRun r;
     ca_context* ctx = nullptr;
     ca_context_create(nullptr, &ctx);
-    const ca_surface_view v = surface_view(mesh);
+    ca_surface_view v = surface_view(mesh);
+    v.point_normals = point_normals;
     ca_candidate_set* set = nullptr;
     ca_selection* sel = nullptr;
     ca_skeleton* sk = nullptr;
@@ -126,6 +129,7 @@ inline PipelineRun run_pipeline(const caio::MeshData& mesh, const ca_candidate_o
     r.t_candidates = seconds_since(t);
     if (r.status == CA_OK) {
         r.samples = ca_candidate_set_sample_count(set);
+        r.normals = ca_candidate_set_normals(set);
         r.candidates = ca_candidate_set_count(set);
         t = std::chrono::steady_clock::now();
         r.status = ca_select(ctx, set, &so, &sel);

@@ -40,11 +40,16 @@ ca_status ca_candidates(ca_context* ctx, const ca_surface_view* surface, const c
             return ca::fail(Code::invalid_argument, "unknown candidate generator " + std::to_string(o.generator));
         ca::Mesh raw;
         std::vector<Vec3> normals;
-        st = read_surface(surface, true, raw, normals);
+        ca::PointNormals trust = ca::PointNormals::trusted;
+        st = read_surface(surface, true, raw, normals, &trust);
         if (!st.ok()) return st;
         ca::Surface surf;
-        st = ca::prepare_surface(std::move(raw), std::move(normals), surf);
+        st = ca::prepare_surface(std::move(raw), std::move(normals), surf, true, trust);
         if (!st.ok()) return st;
+        if (trust == ca::PointNormals::trusted && surf.normals_source == ca::NormalSource::oriented)
+            ctx->log(2, "the point normals point against each other at " +
+                            std::to_string(int(std::lround(100 * surf.disagreement_given))) +
+                            "% of neighbouring pairs; they were re-oriented");
         if (surf.flipped) ctx->log(2, "the mesh faces inward (negative signed volume); it was flipped");
         if (surf.dropped_triangles)
             ctx->log(1, std::to_string(surf.dropped_triangles) + " zero-area triangles were ignored");

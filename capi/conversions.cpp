@@ -37,10 +37,15 @@ Status read_points(const double* base, size_t count, size_t stride, const char* 
     return Status::success();
 }
 
-Status read_surface(const ca_surface_view* in, bool want_normals, ca::Mesh& raw, std::vector<Vec3>& normals) {
+Status read_surface(const ca_surface_view* in, bool want_normals, ca::Mesh& raw, std::vector<Vec3>& normals,
+                    ca::PointNormals* trust) {
     ca_surface_view surface;
     Status st = read_input(in, surface);
     if (!st.ok()) return st;
+    if (surface.point_normals < CA_POINT_NORMALS_TRUSTED || surface.point_normals > CA_POINT_NORMALS_ESTIMATE)
+        return ca::fail(Code::invalid_argument, "surface->point_normals is " + std::to_string(surface.point_normals) +
+                                                    "; expected CA_POINT_NORMALS_TRUSTED (0), UNORIENTED (1) or ESTIMATE (2)");
+    if (trust) *trust = static_cast<ca::PointNormals>(surface.point_normals);
     if (surface.vertex_count > 0 && !surface.positions) return null_pointer("surface->positions");
     if (surface.triangle_count > 0 && !surface.triangles) return null_pointer("surface->triangles");
     if (surface.vertex_count > UINT32_MAX) return ca::fail(Code::invalid_argument, "more than 2^32 - 1 vertices");

@@ -48,9 +48,11 @@ std::array<T, N> read_element(const T* base, size_t stride, size_t i) {
 // x y z per item from a strided array (values are not checked).
 ca::Status read_points(const double* base, size_t count, size_t stride, const char* name, std::vector<ca::Vec3>& out);
 
-// A surface view into raw arrays (struct size, pointers and strides checked; values are checked
-// by prepare_surface). Normals are read for point clouds when want_normals.
-ca::Status read_surface(const ca_surface_view* surface, bool want_normals, ca::Mesh& raw, std::vector<ca::Vec3>& normals);
+// A surface view into raw arrays (struct size, pointers, strides and point_normals checked; values
+// are checked by prepare_surface). Normals are read for point clouds when want_normals; `trust`
+// (if set) receives point_normals.
+ca::Status read_surface(const ca_surface_view* surface, bool want_normals, ca::Mesh& raw, std::vector<ca::Vec3>& normals,
+                        ca::PointNormals* trust = nullptr);
 
 // Points in the caller's units, x y z per point, in memory from the result's allocator.
 void fill(Array<double>& a, const Allocator& al, const std::vector<ca::Vec3>& pts, const ca::Normalization& n);

@@ -54,6 +54,15 @@ struct ca_connect_options {
     uint32_t struct_size;
     int32_t method, remove_outside, fill_holes, reconnect;
 };
+struct ca_surface_view {
+    uint32_t struct_size;
+    const double* positions;
+    size_t vertex_count, position_stride;
+    const uint32_t* triangles;
+    size_t triangle_count, triangle_stride;
+    const double* normals;
+    size_t normal_stride;
+};
 struct ca_skeleton_stats {
     uint32_t struct_size;
     uint64_t vertices, edges, faces, components, isolated;
@@ -94,7 +103,7 @@ template <class T> struct Published;
     };
 CA_PUBLISHED(ca_context_desc, sizeof(abi1::ca_context_desc), sizeof(abi2_first::ca_context_desc),
              sizeof(ca_context_desc))
-CA_PUBLISHED(ca_surface_view, sizeof(ca_surface_view))
+CA_PUBLISHED(ca_surface_view, sizeof(abi1::ca_surface_view), sizeof(ca_surface_view))
 CA_PUBLISHED(ca_candidate_options, sizeof(ca_candidate_options))
 CA_PUBLISHED(ca_select_options, sizeof(abi1::ca_select_options), sizeof(ca_select_options))
 CA_PUBLISHED(ca_select_stats, sizeof(abi1::ca_select_stats), sizeof(abi2_first::ca_select_stats),
@@ -114,6 +123,9 @@ static_assert(offsetof(ca_context_desc, progress_interval_s) ==
                       offsetof(abi2_first::ca_context_desc, progress_interval_s) &&
                   offsetof(ca_context_desc, time_limit_s) >= sizeof(abi2_first::ca_context_desc),
               "ca_context_desc: its first ABI 2 layout is a prefix of the current one");
+static_assert(offsetof(ca_surface_view, normal_stride) == offsetof(abi1::ca_surface_view, normal_stride) &&
+                  offsetof(ca_surface_view, point_normals) >= sizeof(abi1::ca_surface_view),
+              "ca_surface_view: ABI 1 is a prefix of ABI 2");
 static_assert(offsetof(ca_select_stats, scale_used) == offsetof(abi1::ca_select_stats, scale_used) &&
                   offsetof(ca_select_stats, time_coverage_s) >= sizeof(abi1::ca_select_stats),
               "ca_select_stats: ABI 1 is a prefix of ABI 2");

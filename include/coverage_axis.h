@@ -150,9 +150,14 @@ CA_API const char* ca_context_last_error(const ca_context* ctx);
 
 /* ---- input views --------------------------------------------------------------------------- */
 /* A triangle mesh (triangle_count > 0) or a point cloud (triangle_count == 0; normals: one per
-   point, consistently oriented, inward or outward; NULL = estimated from the points by PCA and
-   oriented, see docs/pointclouds.md). Meshes may be open, soups, or self-intersecting:
+   point, inward or outward, trusted as point_normals says; NULL = estimated from the points by
+   PCA and oriented, see docs/pointclouds.md). Meshes may be open, soups, or self-intersecting:
    inside/outside comes from the generalised winding number (of the points, for a cloud). */
+/* How far a point cloud's normals are trusted (ca_surface_view.point_normals, ABI 2). */
+#define CA_POINT_NORMALS_TRUSTED    0 /* consistently oriented: used as given, but checked (signs
+                                         disagreeing between neighbours: re-oriented) */
+#define CA_POINT_NORMALS_UNORIENTED 1 /* directions right, signs not: re-oriented */
+#define CA_POINT_NORMALS_ESTIMATE   2 /* ignored: estimated from the points by PCA and oriented */
 typedef struct ca_surface_view {
     uint32_t struct_size;       /* sizeof(ca_surface_view) */
     const double* positions;    /* x y z per vertex */
@@ -163,6 +168,7 @@ typedef struct ca_surface_view {
     size_t triangle_stride;     /* bytes between triangles; 0 = 3 * sizeof(uint32_t) */
     const double* normals;      /* point clouds: nx ny nz per point; ignored for meshes */
     size_t normal_stride;       /* 0 = 3 * sizeof(double) */
+    int32_t point_normals;      /* ABI 2: CA_POINT_NORMALS_*; default TRUSTED */
 } ca_surface_view;
 
 CA_API ca_status ca_surface_view_defaults(ca_surface_view* view, uint32_t struct_size); /* all zero */

@@ -56,6 +56,7 @@ namespace CoverageAxis
             public UIntPtr triangle_count, triangle_stride;
             public IntPtr normals;
             public UIntPtr normal_stride;
+            public int point_normals; // ABI 2
         }
 
         [StructLayout(LayoutKind.Sequential)]

@@ -42,6 +42,7 @@ struct SurfaceView
     triangle_stride::Csize_t
     normals::Ptr{Float64}
     normal_stride::Csize_t
+    point_normals::Int32  # ABI 2
 end
 
 struct CandidateOptions

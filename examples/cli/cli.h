@@ -26,6 +26,8 @@ struct RunOptions {
     ca_evaluate_options evaluation;
     std::string format;                      // input format name; "" = by extension
     std::string candidate_kind = "voronoi";  // voronoi | random | a ball file
+    std::string normals = "given";           // a point cloud's normals: given | unoriented | estimate
+    int32_t point_normals = CA_POINT_NORMALS_TRUSTED;   // `normals` as CA_POINT_NORMALS_*
     std::string solver, effort, connect_route;
     std::string surface_samples_file, ignore_samples_file, force_in_file, force_out_file;
     bool evaluate = false;
@@ -72,8 +74,11 @@ Failure file_failure(const std::string& message);
 // format_version, tool_version, library_version, abi_version, input: the start of every report.
 Json report_header(const std::string& input);
 
-// A borrowed view of a mesh or point cloud read from a file.
-ca_surface_view surface_view(const caio::MeshData& mesh);
+// A borrowed view of a mesh or point cloud read from a file; a cloud's normals trusted as
+// `point_normals` (CA_POINT_NORMALS_*) says.
+ca_surface_view surface_view(const caio::MeshData& mesh, int32_t point_normals = CA_POINT_NORMALS_TRUSTED);
+// The report's name of ca_candidate_set_normals: none (a mesh), given, oriented or estimated.
+const char* normals_name(int32_t normals);
 // Evaluates a skeleton against the input surface (Hausdorff distances, see ca_evaluate).
 bool evaluate(ca_context* ctx, const caio::MeshData& mesh, const ca_skeleton_view& skeleton,
               const ca_evaluate_options& options, ca_evaluation& out, Failure& failure);

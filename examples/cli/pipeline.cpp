@@ -12,7 +12,7 @@
 
 namespace cli {
 
-ca_surface_view surface_view(const caio::MeshData& mesh) {
+ca_surface_view surface_view(const caio::MeshData& mesh, int32_t point_normals) {
     ca_surface_view view;
     ca_surface_view_init(&view);
     view.positions = mesh.positions.data();
@@ -20,7 +20,17 @@ ca_surface_view surface_view(const caio::MeshData& mesh) {
     view.triangles = mesh.triangles.data();
     view.triangle_count = mesh.triangles.size() / 3;
     view.normals = mesh.normals.empty() ? nullptr : mesh.normals.data();
+    view.point_normals = point_normals;
     return view;
+}
+
+const char* normals_name(int32_t normals) {
+    switch (normals) {
+        case CA_NORMALS_GIVEN: return "given";
+        case CA_NORMALS_ORIENTED: return "oriented";
+        case CA_NORMALS_ESTIMATED: return "estimated";
+        default: return "none";
+    }
 }
 
 Failure library_failure(ca_context* ctx, ca_status st, const std::string& step) {
@@ -117,7 +127,7 @@ bool make_candidates(Owned& owned, const caio::MeshData& mesh, const RunOptions&
     }
     ca_status st;
     if (!(from_file && !o.surface_samples_file.empty())) {
-        const ca_surface_view view = surface_view(mesh);
+        const ca_surface_view view = surface_view(mesh, o.point_normals);
         if ((st = ca_candidates(owned.ctx, &view, &o.candidates, &owned.set)) != CA_OK)
             return failure = library_failure(owned.ctx, st, "candidates"), false;
         owned.normals = ca_candidate_set_normals(owned.set);

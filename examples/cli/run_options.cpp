@@ -26,6 +26,8 @@ const Names kSolvers = {{"exact", CA_SOLVER_EXACT}, {"greedy", CA_SOLVER_GREEDY}
 const Names kEfforts = {{"fast", CA_EFFORT_FAST}, {"prove", CA_EFFORT_PROVE}};
 const Names kRoutes = {{"auto", CA_CONNECT_AUTO}, {"medial", CA_CONNECT_MEDIAL}, {"power", CA_CONNECT_POWER}};
 const Names kGenerators = {{"voronoi", CA_CANDIDATES_VORONOI}, {"random", CA_CANDIDATES_RANDOM}};
+const Names kNormals = {{"given", CA_POINT_NORMALS_TRUSTED}, {"unoriented", CA_POINT_NORMALS_UNORIENTED},
+                        {"estimate", CA_POINT_NORMALS_ESTIMATE}};
 
 std::string name_of(const Names& names, int32_t value) {
     for (const auto& n : names)
@@ -110,6 +112,10 @@ void add_run_options(CLI::App& app, RunOptions& o) {
     app.add_option("--surface-samples", o.surface_samples_file, "cover these samples (v x y z, input units) instead of sampling")
         ->group(sampling);
     app.add_option("--seed", o.candidates.seed, "random seed")->capture_default_str()->group(sampling);
+    app.add_option("--normals", o.normals,
+                   "a point cloud's normals: given (oriented; checked, re-oriented if their signs disagree) | "
+                   "unoriented (re-oriented) | estimate (ignored, estimated from the points)")
+        ->capture_default_str()->check(CLI::IsMember(keys(kNormals)))->group(sampling);
 
     app.add_option("--delta", o.select.delta, "dilation offset, fraction of the longest bbox side")
         ->capture_default_str()->check(at_least(0))->group(cover);
@@ -154,6 +160,7 @@ bool finish_run_options(const CLI::App& app, RunOptions& o, std::string& error) 
     if (app.count("--scale")) o.select.dilation = CA_DILATE_SCALE;
     o.select.skip_uncoverable = app.count("--skip-uncoverable") ? 1 : 0;
     o.select.solver = value_of(kSolvers, o.solver);
+    o.point_normals = value_of(kNormals, o.normals);
     o.select.effort = value_of(kEfforts, o.effort);
     o.connect.method = value_of(kRoutes, o.connect_route);
     o.connect.fit = app.count("--fit") ? 1 : 0;
@@ -206,6 +213,7 @@ Json options_json(const RunOptions& o) {
                 {"random_candidates", o.candidates.random_candidates},
                 {"connect_samples", o.candidates.connect_samples},
                 {"seed", o.candidates.seed},
+                {"normals", o.normals},
                 {"surface_samples", file(o.surface_samples_file)},
                 {"dilation", s.dilation == CA_DILATE_SCALE ? "scale" : "offset"},
                 {"delta", s.delta},

@@ -1,4 +1,5 @@
-// normals.cpp: PCA normal estimation and minimum-spanning-tree orientation (normals.h).
+// normals.cpp: PCA normal estimation, minimum-spanning-tree orientation and the sign-disagreement
+// check (normals.h).
 #include "normals.h"
 
 #include "kdtree.h"
@@ -27,7 +28,46 @@ std::vector<Vec3> estimate_normals(const std::vector<Vec3>& pts, size_t k) {
     return normals;
 }
 
-void orient_normals(const std::vector<Vec3>& pts, std::vector<Vec3>& normals, size_t k) {
+namespace {
+
+// A pair facing across: the offset d = p_b - p_a well out of both tangent planes
+// (|d . n| > 0.35 |d| for both normals: more than 20 degrees out), as across a thin part, a crease or a sharp edge. Other
+// pairs lie side by side on a smooth part (|d . n| is about |d|^2 times the curvature).
+constexpr double kFacing = 0.35;
+
+bool facing(const Vec3& d, const Vec3& a, const Vec3& b) {
+    const double len = d.norm();
+    return std::abs(d.dot(a)) > kFacing * len && std::abs(d.dot(b)) > kFacing * len;
+}
+
+// Whether the signs of n_a and n_b agree (d = p_b - p_a): side by side, the normals point the same
+// way; facing across, each point lies behind the other's tangent plane (outward normals) or each
+// in front of it (inward ones), which flipping one normal of the pair breaks.
+bool agrees(const Vec3& d, const Vec3& a, const Vec3& b) {
+    return facing(d, a, b) ? d.dot(a) * d.dot(b) < 0 : a.dot(b) >= 0;
+}
+
+// Below the facing threshold but above this (|d . n| > |d| / 20 for both normals), a pair whose
+// two rules disagree is uncertain: a concave part where the normals point the same way, or a
+// sharp edge seen from the side where they face away.
+constexpr double kUncertain = 0.05;
+
+bool uncertain(const Vec3& d, const Vec3& a, const Vec3& b) {
+    const double len = d.norm(), da = d.dot(a), db = d.dot(b);
+    return !facing(d, a, b) && std::abs(da) > kUncertain * len && std::abs(db) > kUncertain * len &&
+           (a.dot(b) >= 0) != (da * db < 0);
+}
+
+// 1 - |n_u . n_v|; 2 more for an uncertain pair, so the tree takes one only where nothing else
+// joins its two ends.
+double edge_weight(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, uint32_t u, uint32_t v) {
+    const double w = 1.0 - std::abs(normals[u].dot(normals[v]));
+    return uncertain(pts[u] - pts[v], normals[u], normals[v]) ? w + 2.0 : w;
+}
+
+}  // namespace
+
+void orient_normals(const std::vector<Vec3>& pts, std::vector<Vec3>& normals, size_t k, bool estimated) {
     const size_t n = pts.size();
     if (n < 2 || normals.size() != n) return;
     std::vector<std::vector<uint32_t>> adj(n);
@@ -55,11 +95,30 @@ void orient_normals(const std::vector<Vec3>& pts, std::vector<Vec3>& normals, si
             const uint32_t v = e.first, parent = e.second;
             if (done[v]) continue;
             done[v] = 1;
-            if (v != parent && normals[v].dot(normals[parent]) < 0) normals[v] = -normals[v];
+            const bool same = estimated ? normals[v].dot(normals[parent]) >= 0
+                                        : agrees(pts[v] - pts[parent], normals[parent], normals[v]);
+            if (v != parent && !same) normals[v] = -normals[v];
             for (uint32_t u : adj[v])
-                if (!done[u]) heap.push({1.0 - std::abs(normals[u].dot(normals[v])), {u, v}});
+                if (!done[u])
+                    heap.push({estimated ? 1.0 - std::abs(normals[u].dot(normals[v])) : edge_weight(pts, normals, u, v),
+                               {u, v}});
         }
     }
+}
+
+double sign_disagreement(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, size_t k) {
+    if (pts.size() < 2 || normals.size() != pts.size()) return 0;
+    size_t counted = 0, against = 0;
+    for_each_neighbourhood(pts, k, [&](size_t i, const size_t* idx, const double*, size_t found) {
+        for (size_t j = 0; j < found; ++j) {
+            if (idx[j] == i) continue;
+            const Vec3 d = pts[idx[j]] - pts[i];
+            if (!(d.squaredNorm() > 0)) continue;
+            ++counted;
+            against += !agrees(d, normals[i], normals[idx[j]]);
+        }
+    });
+    return counted ? double(against) / double(counted) : 0.0;
 }
 
 }  // namespace ca

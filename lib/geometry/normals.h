@@ -1,16 +1,32 @@
 // normals.h: normals of a point cloud that has none, or whose normals are not consistently
 // oriented. estimate_normals: per point, the direction of least variance of its k nearest
-// neighbours (PCA). orient_normals: Hoppe et al. 1992: a minimum spanning tree of the symmetric
-// k-nearest-neighbour graph weighted by 1 - |n_i . n_j| (nearly parallel neighbours first), the
-// sign propagated from the root along the tree; each connected part of the graph is rooted at its
-// highest point with a normal pointing up (+z). The global sign (outward) is fixed later by the
-// winding number (point_cloud.cpp).
+// neighbours (PCA). orient_normals: after Hoppe et al. 1992: a minimum spanning tree of the
+// symmetric k-nearest-neighbour graph weighted by 1 - |n_i . n_j| (nearly parallel neighbours
+// first; pairs facing across a thin part or a crease last), the sign propagated from the root
+// along the tree (side by side: the same way; facing across: away from each other); each connected
+// part of the graph is rooted at its highest point with a normal pointing up (+z). The global
+// sign (outward) is fixed later by the winding number (point_cloud.cpp). sign_disagreement: the
+// fraction of neighbouring pairs whose signs disagree by the same rule, a cheap check that normals
+// given as oriented really are.
 #pragma once
 #include "common.h"
 
 namespace ca {
 
 std::vector<Vec3> estimate_normals(const std::vector<Vec3>& pts, size_t k = 16);
-void orient_normals(const std::vector<Vec3>& pts, std::vector<Vec3>& normals, size_t k = 16);
+// `estimated`: PCA normals, which average across thin parts and edges, so the facing rule has
+// nothing to go by there: every pair by the side-by-side rule, weights 1 - |n_i . n_j| only.
+void orient_normals(const std::vector<Vec3>& pts, std::vector<Vec3>& normals, size_t k = 16, bool estimated = false);
+
+// The fraction of neighbouring pairs (j among i's k nearest) whose signs disagree: side by side
+// on a smooth part, normals pointing against each other; facing across a thin part, a crease or
+// a sharp edge (the offset well out of both tangent planes), not each point behind the other's
+// tangent plane (nor each in front of it). Consistent normals of a sampled surface give few such
+// pairs (across concave creases), random per-point signs about half.
+double sign_disagreement(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, size_t k = 8);
+// Above this sign_disagreement normals given as oriented are not trusted (re-oriented), and
+// oriented or estimated normals are refused: clean sampled clouds stay far below it, clouds with
+// random per-point signs far above (docs/pointclouds.md has the measurements).
+constexpr double kMaxSignDisagreement = 0.1;
 
 }  // namespace ca

@@ -34,7 +34,7 @@ static bool all_in_one_plane(const std::vector<Vec3>& pts, const Vec3& lo, doubl
     return std::sqrt(std::max(0.0, es.eigenvalues()[0])) <= 1e-9;
 }
 
-Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool require_normals, bool normals_oriented) {
+Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool require_normals, PointNormals trust) {
     out = Surface{};
     const size_t nv = raw.vertices.size();
     if (nv == 0) return fail(Code::degenerate_input, "the input has no vertices");
@@ -53,7 +53,7 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
         out.dropped_triangles = merged.degenerate;
         out.duplicate_triangles = merged.duplicate;
     }
-    if (cloud && !require_normals) normals.clear();
+    if (cloud && (!require_normals || trust == PointNormals::estimate)) normals.clear();
     if (cloud && require_normals && !normals.empty()) {
         if (normals.size() != nv)
             return fail(Code::invalid_input, "a point cloud (no triangles) needs one normal per point (" +
@@ -110,17 +110,27 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
         }
     }
     if (cloud && require_normals) {
-        // missing normals are estimated, unoriented ones oriented (normals.h); the outward sign
-        // is fixed by the winding number when the candidates are built
+        // missing normals are estimated, unoriented ones oriented (normals.h), trusted ones
+        // checked and oriented when their signs disagree; the outward sign is fixed by the
+        // winding number when the candidates are built
         out.normals_source = NormalSource::given;
         if (normals.empty()) {
             normals = estimate_normals(raw.vertices);
-            orient_normals(raw.vertices, normals);
             out.normals_source = NormalSource::estimated;
-        } else if (!normals_oriented) {
-            orient_normals(raw.vertices, normals);
-            out.normals_source = NormalSource::oriented;
+        } else {
+            out.disagreement_given = sign_disagreement(raw.vertices, normals);
+            if (trust == PointNormals::unoriented || out.disagreement_given > kMaxSignDisagreement)
+                out.normals_source = NormalSource::oriented;
         }
+        if (out.normals_source != NormalSource::given)
+            orient_normals(raw.vertices, normals, 16, out.normals_source == NormalSource::estimated);
+        out.disagreement = out.normals_source == NormalSource::given ? out.disagreement_given
+                                                                     : sign_disagreement(raw.vertices, normals);
+        if (out.disagreement > kMaxSignDisagreement)
+            return fail(Code::invalid_input,
+                        "the point cloud's normals could not be oriented consistently: after orientation " +
+                            std::to_string(int(std::lround(100 * out.disagreement))) +
+                            "% of neighbouring pairs still point against each other (too sparse or too noisy?)");
     }
     out.mesh = std::move(raw);
     out.normals = std::move(normals);

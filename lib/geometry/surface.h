@@ -17,11 +17,19 @@ struct Normalization {
 // (normals.h), or estimated from the points. Meshes: none.
 enum class NormalSource : int32_t { none = 0, given = 1, oriented = 2, estimated = 3 };
 
+// How far the caller trusts a point cloud's normals (the C ABI's CA_POINT_NORMALS_*): oriented
+// (checked: signs disagreeing between neighbours are re-oriented), right up to sign (re-oriented),
+// or not at all (estimated).
+enum class PointNormals : int32_t { trusted = 0, unoriented = 1, estimate = 2 };
+
 struct Surface {
     Mesh mesh;                    // internal units; empty triangles for a point cloud
     std::vector<Vec3> normals;    // point clouds: unit outward normals, one per vertex
     bool point_cloud = false;
     NormalSource normals_source = NormalSource::none;
+    // sign_disagreement (normals.h) of the normals as given (-1: none given or not measured)
+    // and of the normals used
+    double disagreement_given = -1, disagreement = 0;
     bool flipped = false;         // the mesh faced inward and was flipped
     size_t dropped_triangles = 0; // zero-area triangles ignored
     size_t duplicate_triangles = 0; // repeats of a kept triangle merged into it (duplicates.h)
@@ -30,11 +38,13 @@ struct Surface {
 
 // Validates raw caller data (finite coordinates, indices in range, non-degenerate, not all in
 // one plane, unit normals for point clouds) and normalises it. `mesh.triangles` empty means a
-// point cloud, which takes `normals` (one per vertex; empty: estimated by PCA and oriented; with
-// `normals_oriented` false: re-oriented) unless `require_normals` is false (the evaluation only
-// measures distances: normals are dropped). Takes its arguments by value (moved in).
+// point cloud, which takes `normals` (one per vertex, trusted as `trust` says; empty or
+// `estimate`: estimated by PCA and oriented) unless `require_normals` is false (the evaluation
+// only measures distances: normals are dropped). Trusted normals whose signs disagree between
+// neighbours (sign_disagreement above kMaxSignDisagreement) are re-oriented once; normals that
+// still disagree after orientation are refused (invalid_input). Takes its arguments by value.
 Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool require_normals = true,
-                       bool normals_oriented = true);
+                       PointNormals trust = PointNormals::trusted);
 
 // Axis-aligned bounding box of points (min, max); empty input gives (0, 0).
 std::pair<Vec3, Vec3> bounding_box(const std::vector<Vec3>& pts);

@@ -43,6 +43,7 @@ int main(void) {
     FIELD(ca_surface_view, triangle_stride);
     FIELD(ca_surface_view, normals);
     FIELD(ca_surface_view, normal_stride);
+    FIELD(ca_surface_view, point_normals);
     STRUCT(ca_candidate_options);
     FIELD(ca_candidate_options, struct_size);
     FIELD(ca_candidate_options, generator);

@@ -121,6 +121,20 @@ static void test_bad_input(void) {
           (st != CA_OK && set == NULL && ca_context_last_error(ctx)[0] != 0));
     if (set) ca_candidate_set_destroy(set), set = NULL;
     }
+    /* point_normals outside CA_POINT_NORMALS_*: refused before anything is read */
+    {
+    ca_surface_view sv;
+    ca_candidate_options o = small_options();
+    ca_surface_view_init(&sv);
+    CHECK(sv.point_normals == CA_POINT_NORMALS_TRUSTED);
+    sv.positions = box_v;
+    sv.vertex_count = 8;
+    sv.point_normals = 3;
+    CHECK(ca_candidates(ctx, &sv, &o, &set) == CA_ERROR_INVALID_ARGUMENT && set == NULL);
+    CHECK(strstr(ca_context_last_error(ctx), "point_normals") != NULL);
+    sv.point_normals = -1;
+    CHECK(ca_candidates(ctx, &sv, &o, &set) == CA_ERROR_INVALID_ARGUMENT && set == NULL);
+    }
     /* point cloud: 100 points that are copies of 4 distinct points (a tetrahedron) */
     for (i = 0; i < 100; ++i) {
         const int k = i % 4;

@@ -124,6 +124,10 @@ for f in fish500.xyz:given fish500.ply:given fish500.obj:given fish500_nonormals
 done
 "$tool" "$data/formats/fish500_nonormals.xyz" -o "$tmp/pcf.ma" --time-limit 5 > "$tmp/pcf.txt"
 check "the summary says the normals were estimated" grep -q '^normals     estimated by PCA and oriented (the file has none)' "$tmp/pcf.txt"
+"$tool" "$data/fish_points.xyz" -o "$tmp/pce.ma" --json --normals estimate --time-limit 5 > "$tmp/pce.json"
+check "--normals estimate: the report says estimated" grep -q '"normals":"estimated"' "$tmp/pce.json"
+"$tool" "$data/fox.obj" -o "$tmp/m.ma" --json --samples 300 > "$tmp/m.json"
+check "a mesh has no point normals" grep -q '"normals":"none"' "$tmp/m.json"
 
 # 5. evaluation: of our own skeleton and as a separate command on the written .ma
 "$tool" "$data/fox.obj" -o "$tmp/e.ma" --evaluate --json > "$tmp/e.json"

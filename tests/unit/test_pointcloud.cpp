@@ -1,11 +1,13 @@
 // test_pointcloud.cpp: the pipeline on point clouds sampled from shapes with known medial axes:
 // a sphere (one ball at its centre), a torus (a ring with b1 = 1); flipped normals give the same
-// skeleton size; the random generator works on clouds; an outlier point creates no ball outside
-// the shape.
+// skeleton size, and so do random per-point signs (passed as trusted or as unoriented) and
+// missing normals; the random generator works on clouds; an outlier point creates no ball
+// outside the shape.
 #include <doctest/doctest.h>
 
 #include "candidates.h"
 #include "connect.h"
+#include "rng.h"
 #include "selection.h"
 #include "support/clouds.h"
 #include "support/shapes.h"
@@ -21,12 +23,12 @@ struct Run {
 };
 
 // Runs the three steps on a cloud; balls come back in the cloud's own units.
-Run run(shapes::Cloud cloud, ca::CandidateOptions copt = {}, bool oriented = true) {
+Run run(shapes::Cloud cloud, ca::CandidateOptions copt = {}, ca::PointNormals trust = ca::PointNormals::trusted) {
     Run r;
     ca::SelectOptions sopt;
     sopt.cover.time_limit_s = 0;
     ca::Surface surface;
-    ca::Status st = ca::prepare_surface(ca::Mesh{std::move(cloud.points), {}}, std::move(cloud.normals), surface, true, oriented);
+    ca::Status st = ca::prepare_surface(ca::Mesh{std::move(cloud.points), {}}, std::move(cloud.normals), surface, true, trust);
     REQUIRE_MESSAGE(st.ok(), st.message);
     ca::Monitor monitor;
     st = ca::generate_candidates(std::move(surface), copt, monitor, r.set);
@@ -43,6 +45,14 @@ Run run(shapes::Cloud cloud, ca::CandidateOptions copt = {}, bool oriented = tru
 }
 
 shapes::Cloud sphere_cloud(double R, size_t n) { return shapes::sample_cloud(shapes::sphere(R, 96, 192), n); }
+
+// The cloud with each normal's sign chosen at random.
+shapes::Cloud with_random_signs(shapes::Cloud c, uint64_t seed) {
+    ca::Rng rng(seed);
+    for (ca::Vec3& n : c.normals)
+        if (rng.uniform() < 0.5) n = -n;
+    return c;
+}
 
 // The ring test of test_pipeline.cpp: every ball near the core circle, b1 = 1.
 void check_ring(const Run& r, double R, double tube) {
@@ -108,27 +118,44 @@ TEST_CASE("point cloud: an outlier point creates no ball outside the shape") {
     for (const ca::Ball& b : r.skeleton.balls) CHECK(b.center.norm() + b.radius < 1.02 * R);
 }
 
-TEST_CASE("point cloud: shuffled-sign and missing normals give the same skeleton size (sphere, torus)") {
+TEST_CASE("point cloud: random-sign and missing normals give the same skeleton size (torus)") {
     const double R = 1.0, tube = 0.3;
     shapes::Cloud c = shapes::sample_cloud(shapes::torus(R, tube, 128, 48), 8000);
     const Run exact = run(c);
-    shapes::Cloud shuffled = c;
-    for (size_t i = 0; i < shuffled.normals.size(); i += 2) shuffled.normals[i] = -shuffled.normals[i];
-    const Run oriented = run(shuffled, {}, false);
-    CHECK(oriented.set.surface.normals_source == ca::NormalSource::oriented);
-    check_ring(oriented, R, tube);
+    CHECK(exact.set.surface.normals_source == ca::NormalSource::given);
+    const double n = double(exact.skeleton.balls.size());
+    // random per-point signs, passed as trusted (the sign check catches them) and as unoriented
+    const shapes::Cloud shuffled = with_random_signs(c, 3);
+    for (ca::PointNormals trust : {ca::PointNormals::trusted, ca::PointNormals::unoriented}) {
+        CAPTURE(int(trust));
+        const Run oriented = run(shuffled, {}, trust);
+        CHECK(oriented.set.surface.normals_source == ca::NormalSource::oriented);
+        check_ring(oriented, R, tube);
+        CHECK(std::abs(double(oriented.skeleton.balls.size()) - n) <= 0.1 * n);
+    }
     shapes::Cloud bare = c;
     bare.normals.clear();
     const Run estimated = run(bare);
     CHECK(estimated.set.surface.normals_source == ca::NormalSource::estimated);
     check_ring(estimated, R, tube);
-    const double n = double(exact.skeleton.balls.size());
-    CHECK(std::abs(double(oriented.skeleton.balls.size()) - n) <= 0.1 * n);
     CHECK(std::abs(double(estimated.skeleton.balls.size()) - n) <= 0.1 * n);
-    shapes::Cloud sphere = sphere_cloud(2.0, 5000);
-    sphere.normals.clear();
-    const Run s = run(sphere);
-    REQUIRE(s.skeleton.balls.size() == 1);
-    CHECK(s.skeleton.balls[0].center.norm() < 0.06);
+}
+
+TEST_CASE("point cloud: random-sign and missing normals on a sphere give one ball at its centre") {
+    const double R = 2.0;
+    const shapes::Cloud c = sphere_cloud(R, 5000);
+    shapes::Cloud bare = c;
+    bare.normals.clear();
+    const Run runs[] = {run(with_random_signs(c, 4)), run(with_random_signs(c, 4), {}, ca::PointNormals::unoriented),
+                        run(bare), run(c, {}, ca::PointNormals::estimate)};
+    const ca::NormalSource used[] = {ca::NormalSource::oriented, ca::NormalSource::oriented, ca::NormalSource::estimated,
+                                     ca::NormalSource::estimated};
+    for (size_t i = 0; i < 4; ++i) {
+        CAPTURE(i);
+        CHECK(runs[i].set.surface.normals_source == used[i]);
+        REQUIRE(runs[i].skeleton.balls.size() == 1);
+        CHECK(runs[i].skeleton.balls[0].center.norm() < 0.03 * R);
+        CHECK(std::abs(runs[i].skeleton.balls[0].radius - R) < 0.05 * R);
+    }
 }
 

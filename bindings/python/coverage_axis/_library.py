@@ -62,6 +62,7 @@ _SIGNATURES = {
     "ca_candidate_set_centers": (P, [P]), "ca_candidate_set_radii": (P, [P]),
     "ca_candidate_set_sample_count": (c_size_t, [P]), "ca_candidate_set_samples": (P, [P]),
     "ca_candidate_set_reference_length": (c_double, [P]), "ca_candidate_set_flipped": (c_int32, [P]),
+    "ca_candidate_set_normals": (c_int32, [P]),
     "ca_select_options_defaults": (c_int32, [POINTER(_SelectOptions), c_uint32]),
     "ca_select": (c_int32, [P, P, POINTER(_SelectOptions), POINTER(P)]),
     "ca_selection_destroy": (None, [P]), "ca_selection_count": (c_size_t, [P]),

@@ -79,13 +79,25 @@ def _run(context, function, *args):
         return ctx.run(function, *args)
 
 
-def _surface(vertices, triangles, normals):
-    """A ca_surface_view over the caller's arrays, and the buffers it borrows."""
+# point_normals= of candidates() and skeletonize(): how far a point cloud's normals are trusted
+_POINT_NORMALS = {"given": 0, "unoriented": 1, "estimate": 2}
+# CandidateSet.normals: the normals a point cloud's candidates used (ca_candidate_set_normals)
+_NORMALS_USED = {0: "none", 1: "given", 2: "oriented", 3: "estimated"}
+
+
+def _surface(vertices, triangles, normals, point_normals=None):
+    """A ca_surface_view over the caller's arrays, and the buffers it borrows (point_normals None:
+    the library's default)."""
+    if point_normals is not None and point_normals not in _POINT_NORMALS:
+        raise CoverageAxisError(CA_ERROR_INVALID_ARGUMENT, "point_normals must be one of %s, not %r" %
+                                (", ".join(_POINT_NORMALS), point_normals))
     pos = _arrays.points(vertices, "vertices")
     tri = _arrays.indices(triangles, "triangles", 3)
     view = fill_defaults("ca_surface_view_defaults", _SurfaceView)
     view.positions, view.vertex_count, view.position_stride = pos.address, pos.count, pos.stride
     view.triangles, view.triangle_count, view.triangle_stride = tri.address, tri.count, tri.stride
+    if point_normals is not None:
+        view.point_normals = _POINT_NORMALS[point_normals]
     keep = [pos, tri]
     if normals is not None:
         nrm = _arrays.points(normals, "normals")
@@ -122,6 +134,7 @@ class CandidateSet:
         self.sample_count = h.get("ca_candidate_set_sample_count")
         self.reference_length = h.get("ca_candidate_set_reference_length")  # the length delta is a fraction of
         self.flipped = bool(h.get("ca_candidate_set_flipped"))  # the mesh faced inward and was flipped
+        self.normals = _NORMALS_USED.get(h.get("ca_candidate_set_normals"), "none")  # a cloud's normals used
         self.centers = h.view("ca_candidate_set_centers", self.count, 3)
         self.radii = h.view("ca_candidate_set_radii", self.count, 1)
         self.samples = h.view("ca_candidate_set_samples", self.sample_count, 3)
@@ -174,11 +187,13 @@ class Skeleton:
                    {name: _named(name, v) for name, v in struct_dict(stats).items()})
 
 
-def candidates(vertices, triangles=None, normals=None, *, context=None, **options):
+def candidates(vertices, triangles=None, normals=None, *, context=None, point_normals=None, **options):
     """Step 1: samples of the surface and inner candidate balls. A mesh (vertices (n, 3), triangles
-    (m, 3)) or an oriented point cloud (no triangles; normals (n, 3), outward).
+    (m, 3)) or a point cloud (no triangles; normals (n, 3) or None: estimated). point_normals:
+    "given" (oriented; checked, re-oriented if their signs disagree; the library's default),
+    "unoriented" (re-oriented) or "estimate" (ignored); CandidateSet.normals says which were used.
     Options: generator, cover_samples, voronoi_samples, random_candidates, seed, connect_samples."""
-    view, keep = _surface(vertices, triangles, normals)
+    view, keep = _surface(vertices, triangles, normals, point_normals)
     opts = _options("candidates", options)
     out = ctypes.c_void_p()
     _run(context, lib().ca_candidates, ctypes.byref(view), ctypes.byref(opts), ctypes.byref(out))
@@ -247,10 +262,12 @@ def _column(values):
     return [(v,) for v in values]
 
 
-def skeletonize(vertices, triangles=None, normals=None, *, context=None, connect=None, **options):
+def skeletonize(vertices, triangles=None, normals=None, *, context=None, connect=None, point_normals=None,
+                **options):
     """candidates() -> select() -> connect() in one call; options of all three steps (connect= is
-    method=). The skeleton's stats hold the selection's and the skeleton's statistics (the
-    skeleton's where both have a name, e.g. components) and the candidate count."""
+    method=; point_normals= as in candidates()). The skeleton's stats hold the selection's and the
+    skeleton's statistics (the skeleton's where both have a name, e.g. components) and the
+    candidate count."""
     steps = {step: {} for step in ("candidates", "select", "connect")}
     if connect is not None:
         options.setdefault("method", connect)
@@ -259,7 +276,8 @@ def skeletonize(vertices, triangles=None, normals=None, *, context=None, connect
         if step is None:
             raise TypeError("skeletonize() got an unknown option %r" % name)
         steps[step][name] = value
-    cset = candidates(vertices, triangles, normals, context=context, **steps["candidates"])
+    cset = candidates(vertices, triangles, normals, context=context, point_normals=point_normals,
+                      **steps["candidates"])
     sel = select(cset, context=context, **steps["select"])
     sk = _connect_step(sel, context=context, **steps["connect"])
     sk.stats = dict(sel.stats, **sk.stats, candidates=cset.count)

@@ -16,7 +16,8 @@ class _ContextDesc(Structure):
 class _SurfaceView(Structure):
     _fields_ = [("struct_size", c_uint32), ("positions", c_void_p), ("vertex_count", c_size_t),
                 ("position_stride", c_size_t), ("triangles", c_void_p), ("triangle_count", c_size_t),
-                ("triangle_stride", c_size_t), ("normals", c_void_p), ("normal_stride", c_size_t)]
+                ("triangle_stride", c_size_t), ("normals", c_void_p), ("normal_stride", c_size_t),
+                ("point_normals", c_int32)]
 
 
 class _CandidateOptions(Structure):

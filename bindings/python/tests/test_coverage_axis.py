@@ -92,6 +92,25 @@ class CommonTest(unittest.TestCase):
         for i, j in rows(sk.edges):
             self.assertLess(max(i, j), len(sk.radii))
 
+    def test_point_normals_trust(self):
+        # a sphere cloud (Fibonacci points, exact normals); random signs passed as given are re-oriented
+        n, golden = 2000, math.pi * (3 - math.sqrt(5))
+        pts = []
+        for i in range(n):
+            z = 1 - 2 * (i + 0.5) / n
+            r = math.sqrt(1 - z * z)
+            pts.append((r * math.cos(golden * i), r * math.sin(golden * i), z))
+        signs = [1 if (i * 7919) % 13 < 6 else -1 for i in range(n)]
+        shuffled = [(s * x, s * y, s * z) for s, (x, y, z) in zip(signs, pts)]
+        opts = dict(cover_samples=300, voronoi_samples=600)
+        self.assertEqual(ca.candidates(pts, None, pts, **opts).normals, "given")
+        self.assertEqual(ca.candidates(pts, None, shuffled, **opts).normals, "oriented")
+        self.assertEqual(ca.candidates(pts, None, shuffled, point_normals="unoriented", **opts).normals, "oriented")
+        self.assertEqual(ca.candidates(pts, None, shuffled, point_normals="estimate", **opts).normals, "estimated")
+        self.assertEqual(ca.candidates(BOX_V, BOX_F, **SMALL).normals, "none")
+        with self.assertRaises(ca.CoverageAxisError):
+            ca.candidates(pts, None, pts, point_normals="sometimes")
+
     def test_defaults_come_from_the_library(self):
         # the binding states no option default itself: its functions default every option to None
         for fn in (ca.candidates, ca.select, ca.connect, ca.evaluate, ca.skeletonize, ca.Context):

@@ -127,6 +127,8 @@ ca_struct!(ca_surface_view {
     triangle_stride: usize,
     normals: *const f64,
     normal_stride: usize,
+    /// ABI 2: CA_POINT_NORMALS_*
+    point_normals: i32,
 });
 
 ca_struct!(ca_candidate_options {
