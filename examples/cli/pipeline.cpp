@@ -218,15 +218,6 @@ bool write_outputs(const caio::MeshData& mesh, const caio::SkeletonData& sd, con
     return true;
 }
 
-const char* normals_name(int32_t normals) {
-    switch (normals) {
-        case CA_NORMALS_GIVEN: return "given";
-        case CA_NORMALS_ORIENTED: return "oriented";
-        case CA_NORMALS_ESTIMATED: return "estimated";
-        default: return "none";
-    }
-}
-
 Json outputs_json(const Outputs& out) {
     Json j = {{"ma", out.ma}};
     for (const auto& [key, path] : {std::pair<const char*, const std::string&>{"obj", out.obj}, {"ply", out.ply},

@@ -355,7 +355,8 @@ int main(void) {
     test_sizes_refused();
     test_old_output_struct_and_lifetimes();
     test_connect_layouts();
-/* ---- the layouts of ABI 1 (ca_context_desc, ca_surface_view, ca_select_options, ca_select_stats,
+    test_select_layouts();
+    test_old_surface_view();
     printf("test_struct_size: %d checks, %d failed\n", checks, failures);
     return failures ? 1 : 0;
 }
