@@ -126,7 +126,10 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
             orient_normals(raw.vertices, normals, 16, out.normals_source == NormalSource::estimated);
         out.disagreement = out.normals_source == NormalSource::given ? out.disagreement_given
                                                                      : sign_disagreement(raw.vertices, normals);
-        if (out.disagreement > kMaxSignDisagreement)
+        // estimated normals are judged by the winding number's jump across the surface when the
+        // candidates are built: on sparse clouds PCA's own neighbourhoods disagree at thin parts
+        // without the orientation being wrong, so the pair rule would refuse usable clouds
+        if (out.normals_source != NormalSource::estimated && out.disagreement > kMaxSignDisagreement)
             return fail(Code::invalid_input,
                         "the point cloud's normals could not be oriented consistently: after orientation " +
                             std::to_string(int(std::lround(100 * out.disagreement))) +

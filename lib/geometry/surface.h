@@ -42,7 +42,8 @@ struct Surface {
 // `estimate`: estimated by PCA and oriented) unless `require_normals` is false (the evaluation
 // only measures distances: normals are dropped). Trusted normals whose signs disagree between
 // neighbours (sign_disagreement above kMaxSignDisagreement) are re-oriented once; normals that
-// still disagree after orientation are refused (invalid_input). Takes its arguments by value.
+// still disagree after orientation are refused (invalid_input); estimated ones are judged by the
+// winding number when the candidates are built. Takes its arguments by value.
 Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool require_normals = true,
                        PointNormals trust = PointNormals::trusted);
 
