@@ -302,6 +302,12 @@ static void test_index_equal_to_count(void) {
     sk.face_count = 1;
     CHECK(ca_evaluate(ctx, &v, &sk, NULL, &e) == CA_ERROR_INVALID_INPUT);
     CHECK(strstr(ca_context_last_error(ctx), "references vertex 3 of 3") != NULL);
+    /* the surface ca_evaluate measures against takes triangles too */
+    sk.face_count = 0;
+    CHECK(ca_evaluate(ctx, &v, &sk, NULL, &e) == CA_OK);
+    v.triangles = tri;
+    CHECK(ca_evaluate(ctx, &v, &sk, NULL, &e) == CA_ERROR_INVALID_INPUT);
+    CHECK(strstr(ca_context_last_error(ctx), "references vertex 8 of 8") != NULL);
     ca_context_destroy(ctx);
 }
 
