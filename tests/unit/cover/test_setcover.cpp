@@ -560,6 +560,36 @@ TEST_CASE("coverage: bad input and cancellation") {
     CHECK(build_coverage(S, C, {1.0}, mon, cov).code == Code::cancelled);
 }
 
+TEST_CASE("coverage: a cancel from the first progress call of a many-batch build stops it there") {
+    // 20 000 balls are several batches: the build must return at the first report that is
+    // refused, with no further progress call, and leave the output untouched.
+    Rng rng(31);
+    std::vector<Vec3> S, C;
+    for (int i = 0; i < 2000; ++i) S.emplace_back(rng.uniform(), rng.uniform(), rng.uniform());
+    for (int i = 0; i < 20000; ++i) C.emplace_back(rng.uniform(), rng.uniform(), rng.uniform());
+    const std::vector<double> radii(C.size(), 0.05);
+    for (int threads : {1, 2}) {
+        int calls = 0;
+        Monitor mon;
+        mon.progress = [&](const char* stage, double) {
+            CHECK(std::string(stage) == "coverage");
+            ++calls;
+            return false;
+        };
+        Coverage cov;
+        cov.n_balls = 7;
+        CHECK(build_coverage(S, C, radii, mon, cov, threads).code == Code::cancelled);
+        CHECK(calls == 1);
+        CHECK(cov.n_balls == 7);
+        // uncancelled, the same build reports once per batch and at the end
+        calls = 0;
+        mon.progress = [&](const char*, double) { return ++calls, true; };
+        REQUIRE(build_coverage(S, C, radii, mon, cov, threads).ok());
+        CHECK(calls >= 5);
+        CHECK(cov.n_balls == C.size());
+    }
+}
+
 namespace {
 // The compact problem of a coverage in which every sample is covered (internal form).
 sc::Problem to_problem(const Coverage& c) {
