@@ -720,10 +720,16 @@ TEST_CASE("set cover: run_cbc under every search setting reaches the brute-force
 
 TEST_CASE("set cover: every exact solve's lower bound is at most the brute-force minimum") {
     // Both efforts, with and without row generation, on the instances the brute force reaches:
-    // a bound above the optimum would let a solver claim a non-optimal cover proven.
-    const auto insts = small_instances(777, 160);
+    // a bound above the optimum would let a solver claim a non-optimal cover proven. Besides the
+    // small instances, ones that reach the LP phase (odd cycles, sparse instances up to 30 rows).
+    std::vector<Coverage> insts;
+    for (const Instance& in : small_instances(777, 160)) insts.push_back(in.cov);
+    Rng rng(1357);
+    for (int t = 0; t < 60; ++t)
+        insts.push_back(t % 2 == 0 ? random_cover(rng, 22 + rng.below(9), 16 + rng.below(9), 0.12 + 0.08 * rng.uniform())
+                                   : odd_cycles(rng));
     for (size_t t = 0; t < insts.size(); ++t) {
-        const Coverage& c = insts[t].cov;
+        const Coverage& c = insts[t];
         const int best = brute_min(c);
         for (int variant = 0; variant < 4; ++variant) {
             CoverOptions opt;
