@@ -1,10 +1,13 @@
 // bvh.h: a small binary bounding-volume hierarchy over triangles, shared by winding.cpp and
 // distance.cpp (one TriangleTree can serve both). Built top-down by a median split (of the triangle centroids) along the longest
-// axis of the centroid box; leaves hold at most `leaf_size` triangles. Internal header.
+// axis of the centroid box; leaves hold at most `leaf_size` triangles. The builds take an optional
+// stop request, tested every few thousand triangles so that a cancel takes effect at once; a
+// stopped build returns an empty tree, which the caller must not use. Internal header.
 #pragma once
 #include "common.h"
 #include <algorithm>
 #include <array>
+#include <functional>
 #include <limits>
 #include <memory>
 
@@ -39,7 +42,11 @@ inline std::vector<uint32_t> valid_triangles(const Mesh& mesh) {
 
 // Each node's box is the union of its children's (leaves: of their triangles' corners), and
 // the split compares precomputed centroids, so a build costs O(F log F) comparisons of doubles.
-inline Bvh build_bvh(const Mesh& mesh, std::vector<uint32_t> ids, uint32_t leaf_size = 8) {
+// `stop` is tested at every node of more than kStopCheckItems triangles and every
+// kStopCheckItems centroids, so at most O(kStopCheckItems log kStopCheckItems) work separates two tests.
+constexpr uint32_t kStopCheckItems = 4096;
+inline Bvh build_bvh(const Mesh& mesh, std::vector<uint32_t> ids, uint32_t leaf_size = 8,
+                     const std::function<bool()>& stop = {}) {
     Bvh bvh;
     if (ids.empty()) return bvh;
     const auto& V = mesh.vertices;
@@ -48,8 +55,11 @@ inline Bvh build_bvh(const Mesh& mesh, std::vector<uint32_t> ids, uint32_t leaf_
         Vec3 centroid;
         uint32_t id;
     };
+    bool stopped = false;
+    auto stop_now = [&] { return stopped || (stop && (stopped = stop())); };
     std::vector<Item> items(ids.size());
     for (size_t i = 0; i < ids.size(); ++i) {
+        if (i % kStopCheckItems == 0 && stop_now()) return Bvh{};
         const Tri& f = T[ids[i]];
         items[i] = {Vec3((V[f[0]] + V[f[1]] + V[f[2]]) / 3.0), ids[i]};
     }
@@ -65,6 +75,10 @@ inline Bvh build_bvh(const Mesh& mesh, std::vector<uint32_t> ids, uint32_t leaf_
         BvhNode node;
         node.begin = begin; node.end = end;
         node.lo = Vec3::Constant(inf); node.hi = Vec3::Constant(-inf);
+        if (end - begin > kStopCheckItems && stop_now()) {
+            bvh.nodes[id] = node;   // a leaf over its range: the tree is discarded anyway
+            return id;
+        }
         if (end - begin > leaf) {
             Vec3 clo = node.lo, chi = node.hi;
             for (uint32_t i = begin; i < end; ++i) {
@@ -88,6 +102,7 @@ inline Bvh build_bvh(const Mesh& mesh, std::vector<uint32_t> ids, uint32_t leaf_
         return id;
     };
     build(build, 0, uint32_t(items.size()));
+    if (stopped) return Bvh{};
     bvh.order.resize(items.size());
     for (size_t i = 0; i < items.size(); ++i) bvh.order[i] = items[i].id;
     return bvh;
@@ -100,9 +115,9 @@ struct TriangleTree {
     std::vector<std::array<Vec3, 3>> tris;   // triangle corners, in bvh.order
 };
 
-inline std::shared_ptr<const TriangleTree> build_triangle_tree(const Mesh& mesh) {
+inline std::shared_ptr<const TriangleTree> build_triangle_tree(const Mesh& mesh, const std::function<bool()>& stop = {}) {
     auto tree = std::make_shared<TriangleTree>();
-    tree->bvh = build_bvh(mesh, valid_triangles(mesh));
+    tree->bvh = build_bvh(mesh, valid_triangles(mesh), 8, stop);
     tree->tris.reserve(tree->bvh.order.size());
     for (uint32_t t : tree->bvh.order) {
         const Tri& f = mesh.triangles[t];

@@ -40,7 +40,8 @@ struct WindingNumber::Impl {
 
 WindingNumber::WindingNumber(const Mesh& mesh, double beta) : WindingNumber(detail::build_triangle_tree(mesh), beta) {}
 
-WindingNumber::WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, double beta)
+WindingNumber::WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, double beta,
+                             const std::function<bool()>& stop)
     : impl_(std::make_unique<Impl>(std::move(tree))) {
     Impl& m = *impl_;
     m.beta = (beta >= 0 && std::isfinite(beta)) ? beta : 2.0;
@@ -51,6 +52,13 @@ WindingNumber::WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, d
     std::vector<double> weight(m.bvh.nodes.size(), 0.0);   // total area per node
     std::vector<Vec3> weighted(m.bvh.nodes.size());        // area-weighted centroid sum per node
     for (size_t n = m.bvh.nodes.size(); n-- > 0;) {
+        // a node's radius pass reads all its triangles: near the root a test every node, below
+        // every kStopCheckItems nodes
+        if (stop && (n % detail::kStopCheckItems == 0 || m.bvh.nodes[n].end - m.bvh.nodes[n].begin > detail::kStopCheckItems) &&
+            stop()) {
+            impl_.reset();
+            return;
+        }
         const detail::BvhNode& node = m.bvh.nodes[n];
         Expansion& e = m.exp[n];
         if (node.leaf()) {

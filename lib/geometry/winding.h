@@ -5,6 +5,7 @@
 // and safe from several threads at once.
 #pragma once
 #include "common.h"
+#include <functional>
 #include <memory>
 
 namespace ca {
@@ -16,8 +17,10 @@ public:
     // `beta` is Barill's accuracy parameter: a cluster of radius r at distance d is expanded
     // when d > beta * r (2 is their default).
     explicit WindingNumber(const Mesh& mesh, double beta = 2.0);
-    // On a tree already built over the mesh (shared with MeshDistance; bvh.h).
-    explicit WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, double beta = 2.0);
+    // On a tree already built over the mesh (shared with MeshDistance; bvh.h). `stop` is tested
+    // every few thousand nodes; a stopped build answers 0 everywhere and must not be used.
+    explicit WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, double beta = 2.0,
+                           const std::function<bool()>& stop = {});
     ~WindingNumber();
     WindingNumber(WindingNumber&&) noexcept;
     WindingNumber& operator=(WindingNumber&&) noexcept;
