@@ -49,6 +49,10 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
                     return;
                 }
                 built.distance = std::make_shared<const MeshDistance>(tree);
+                if (stop()) {
+                    built.stopped = true;
+                    return;
+                }
                 // open meshes: no ball reaches out through a hole (hole_caps.cpp)
                 const Mesh caps = hole_caps(mesh);
                 if (!caps.triangles.empty()) built.cap_distance = std::make_unique<const MeshDistance>(caps);
