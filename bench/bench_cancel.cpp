@@ -2,15 +2,35 @@
 // torus of 2 M triangles runs through ca_candidates and ca_select on a worker thread; the main
 // thread requests a cancel at several points of the run and measures the time from the request
 // to the call's return. Then a context with a time limit measures how far past its budget each
-// step returns. Prints the worst latency. usage: bench_cancel [MAJOR MINOR] (2 * MAJOR * MINOR
+// step returns. Prints the stages of the uncancelled run (when each first reported progress,
+// and the longest gap between two progress calls) and the worst latency. usage: bench_cancel [MAJOR MINOR] (2 * MAJOR * MINOR
 // triangles; default 2000 500)
 #include "bench_common.h"
 #include "support/shapes.h"
 
 #include <atomic>
+#include <string>
 #include <thread>
 
 namespace {
+
+// The progress calls of one run: when each stage first reported, and the longest gap between
+// two calls (a cancel request is seen at the latest at the next call).
+struct StageLog {
+    std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now(), last = t0;
+    std::string stage, gap_from, gap_to;
+    double gap = 0;
+    static int32_t record(void* user, const char* stage, double) {
+        StageLog& l = *static_cast<StageLog*>(user);
+        const auto now = std::chrono::steady_clock::now();
+        const double since_last = std::chrono::duration<double>(now - l.last).count();
+        if (since_last > l.gap) l.gap = since_last, l.gap_from = l.stage, l.gap_to = stage;
+        if (l.stage != stage) std::printf("| %s | %.3f |\n", stage, std::chrono::duration<double>(now - l.t0).count());
+        l.stage = stage;
+        l.last = now;
+        return 0;
+    }
+};
 
 struct Run {
     ca_status status = CA_OK;
@@ -49,9 +69,23 @@ int main(int argc, char** argv) {
     v.triangle_count = m.triangles.size();
     std::printf("\n## Cancel and time-limit latency (torus, %zu triangles)\n\n", m.triangles.size());
 
+    std::atomic<bool> finished{false};
+    {
+        StageLog log;
+        ca_context_desc d;
+        ca_context_desc_init(&d);
+        d.progress = StageLog::record;
+        d.progress_user = &log;
+        ca_context* c = nullptr;
+        if (ca_context_create(&d, &c) != CA_OK) return 1;
+        std::printf("| stage | first progress call at s |\n|---|---|\n");
+        pipeline(c, v, finished);
+        std::printf("\nlongest gap between progress calls: %.3f s (from %s to %s)\n\n", log.gap, log.gap_from.c_str(),
+                    log.gap_to.c_str());
+        ca_context_destroy(c);
+    }
     ca_context* ctx = nullptr;
     if (ca_context_create(nullptr, &ctx) != CA_OK) return 1;
-    std::atomic<bool> finished{false};
     const Run full = pipeline(ctx, v, finished);
     std::printf("uncancelled ca_candidates + ca_select: %.2f s (status %d)\n\n", full.seconds, int(full.status));
     std::printf("| cancel at s | returned after s | latency s | status |\n|---|---|---|---|\n");

@@ -33,6 +33,7 @@ ca_status ca_candidates(ca_context* ctx, const ca_surface_view* surface, const c
                         ca_candidate_set** out) {
     if (out) *out = nullptr;
     return capi::guarded(ctx, [&]() -> Status {
+        const ca::Monitor monitor = ctx->monitor();  // one budget for the whole call
         ca_candidate_options o;
         Status st = read_arguments({{out, "out"}, {surface, "surface"}}, options, o);
         if (!st.ok()) return st;
@@ -50,6 +51,7 @@ ca_status ca_candidates(ca_context* ctx, const ca_surface_view* surface, const c
             ctx->log(2, "the point normals point against each other at " +
                             std::to_string(int(std::lround(100 * surf.disagreement_given))) +
                             "% of neighbouring pairs; they were re-oriented");
+        if (monitor.stopped()) return monitor.stop_status("surface");
         if (surf.flipped) ctx->log(2, "the mesh faces inward (negative signed volume); it was flipped");
         if (surf.dropped_triangles)
             ctx->log(1, std::to_string(surf.dropped_triangles) + " zero-area triangles were ignored");
@@ -65,7 +67,7 @@ ca_status ca_candidates(ca_context* ctx, const ca_surface_view* surface, const c
         co.connect_samples = o.connect_samples;
         co.threads = ctx->desc.threads;
         capi::Pending<ca_candidate_set> res(capi::make_result<ca_candidate_set>(ctx));
-        st = ca::generate_candidates(std::move(surf), co, ctx->monitor(), res.obj->core);
+        st = ca::generate_candidates(std::move(surf), co, monitor, res.obj->core);
         if (!st.ok()) return st;
         publish(res.obj);
         ctx->log(1, std::to_string(res.obj->core.cover_samples.size()) + " surface samples, " +

@@ -30,12 +30,13 @@ ca_status ca_connect(ca_context* ctx, const ca_candidate_set* set, const ca_sele
         if (!st.ok()) return st;
         if (o.method != CA_CONNECT_POWER && o.method != CA_CONNECT_MEDIAL && o.method != CA_CONNECT_AUTO)
             return ca::fail(Code::invalid_argument, "unknown connection method " + std::to_string(o.method));
+        const ca::Monitor monitor = ctx->monitor();  // one budget for connection and fit
         const auto t0 = std::chrono::steady_clock::now();
         const ca::ConnectOptions co = connect_options(o, set->core, ctx->desc.threads);
         const bool has_mesh = !set->core.surface.point_cloud && !set->core.surface.mesh.triangles.empty();
         ca::Skeleton sk;
         ca::ConnectReport report;
-        st = ca::connect_balls(set->core, selection->core, co, ctx->monitor(), sk, &report);
+        st = ca::connect_balls(set->core, selection->core, co, monitor, sk, &report);
         if (!st.ok()) return st;
         if (o.fit_iterations < 0) return ca::fail(Code::invalid_argument, "fit_iterations must be >= 0");
         ca::FitStats fs;
@@ -44,7 +45,7 @@ ca_status ca_connect(ca_context* ctx, const ca_candidate_set* set, const ca_sele
             ca::FitOptions fo;
             fo.iterations = uint32_t(o.fit_iterations);
             fo.threads = ctx->desc.threads;
-            st = ca::fit_skeleton(set->core, selection->core, fo, ctx->monitor(), sk, fs);
+            st = ca::fit_skeleton(set->core, selection->core, fo, monitor, sk, fs);
             if (!st.ok()) return st;
         }
         const ca::TopologyStats topo = ca::topology(sk);

@@ -33,6 +33,7 @@ ca_status ca_evaluate(ca_context* ctx, const ca_surface_view* surface, const ca_
         if (!st.ok()) return st;
         if (o.surface_samples == 0 || o.envelope_samples == 0)
             return ca::fail(Code::invalid_argument, "surface_samples and envelope_samples must be at least 1");
+        const ca::Monitor monitor = ctx->monitor();  // one budget for the whole call
         ca::Mesh raw;
         std::vector<Vec3> normals;
         st = read_surface(surface, false, raw, normals);
@@ -40,6 +41,7 @@ ca_status ca_evaluate(ca_context* ctx, const ca_surface_view* surface, const ca_
         ca::Surface surf;
         st = ca::prepare_surface(std::move(raw), {}, surf, false);
         if (!st.ok()) return st;
+        if (monitor.stopped()) return monitor.stop_status("surface");
 
         const size_t nv = skeleton->vertex_count;
         if (nv == 0) return ca::fail(Code::degenerate_input, "the skeleton has no vertices");
@@ -80,7 +82,7 @@ ca_status ca_evaluate(ca_context* ctx, const ca_surface_view* surface, const ca_
         eo.threads = ctx->desc.threads;
         const auto t0 = std::chrono::steady_clock::now();
         ca::EvaluateResult er;
-        st = ca::evaluate(surf.mesh, sk, eo, ctx->monitor(), er);
+        st = ca::evaluate(surf.mesh, sk, eo, monitor, er);
         if (!st.ok()) return st;
         ca_evaluation out{};
         out.struct_size = sizeof out;

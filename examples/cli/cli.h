@@ -34,6 +34,7 @@ struct RunOptions {
     caio::PreviewOptions preview;
     std::string view = "auto", up, preview_size;
     int32_t threads = 0;  // 0 = all cores
+    double time_limit_s = 0;  // --time-limit: the whole run's budget, from the start of reading; 0 = none
     RunOptions();
 };
 

@@ -113,6 +113,29 @@ double longest_bbox_side(const caio::MeshData& mesh) {
     return std::isfinite(longest) && longest > 0 ? longest : 0;
 }
 
+// The context for the next step. With a whole-run budget (--time-limit), each step gets a fresh
+// context whose time limit is what is left of the budget since `start`, so whichever stage is
+// running when it runs out returns CA_ERROR_TIME_LIMIT naming itself; a step that would start
+// with nothing left fails the same way. Results outlive the context that made them.
+bool context_for(Owned& owned, const ca_context_desc& desc, double budget_s, Clock::time_point start,
+                 const std::string& step, Failure& failure) {
+    if (owned.ctx && budget_s <= 0) return true;
+    ca_context_desc d = desc;
+    if (budget_s > 0) {
+        d.time_limit_s = budget_s - since(start);
+        if (d.time_limit_s <= 0) {
+            failure = library_failure(nullptr, CA_ERROR_TIME_LIMIT, step);
+            failure.message = step + " failed: time limit reached before " + step;
+            return false;
+        }
+    }
+    ca_context_destroy(owned.ctx);
+    owned.ctx = nullptr;
+    const ca_status st = ca_context_create(&d, &owned.ctx);
+    if (st != CA_OK) return failure = library_failure(nullptr, st, "context"), false;
+    return true;
+}
+
 // Step 1: generated candidates, with the sample and ball files (if any) replacing their parts.
 bool make_candidates(Owned& owned, const caio::MeshData& mesh, const RunOptions& o, Failure& failure) {
     std::string err;
@@ -243,21 +266,23 @@ Outcome run_pipeline(const std::string& input, const RunOptions& o, const Output
     desc.threads = o.threads;
     desc.progress = progress;
     desc.progress_user = progress_user;
-    ca_status st = ca_context_create(&desc, &owned.ctx);
-    if (st != CA_OK) return r.failure = library_failure(nullptr, st, "context"), r;
+    ca_status st;
+    if (!context_for(owned, desc, o.time_limit_s, t_start, "candidates", r.failure)) return r;
 
     auto t0 = Clock::now();
     if (!make_candidates(owned, mesh, o, r.failure) || !export_candidates(owned.set, out, r.failure)) return r;
     const double t_candidates = since(t0);
 
     t0 = Clock::now();
-    if (!make_selection(owned, o, r.failure)) return r;
+    if (!context_for(owned, desc, o.time_limit_s, t_start, "selection", r.failure) || !make_selection(owned, o, r.failure))
+        return r;
     const double t_select = since(t0);
     ca_select_stats ss;
     ss.struct_size = sizeof ss;
     ca_selection_stats(owned.sel, &ss);
 
     t0 = Clock::now();
+    if (!context_for(owned, desc, o.time_limit_s, t_start, "connection", r.failure)) return r;
     if ((st = ca_connect(owned.ctx, owned.set, owned.sel, &o.connect, &owned.sk)) != CA_OK)
         return r.failure = library_failure(owned.ctx, st, "connection"), r;
     const double t_connect = since(t0);
@@ -279,6 +304,7 @@ Outcome run_pipeline(const std::string& input, const RunOptions& o, const Output
         ca_skeleton_view view;
         ca_skeleton_view_init(&view);
         ca_skeleton_get_view(owned.sk, &view);
+        if (!context_for(owned, desc, o.time_limit_s, t_start, "evaluation", r.failure)) return r;
         if (!evaluate(owned.ctx, mesh, view, o.evaluation, ev, r.failure)) return r;
         t_evaluate = since(t0);
     }

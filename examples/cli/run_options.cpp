@@ -126,7 +126,8 @@ void add_run_options(CLI::App& app, RunOptions& o) {
                    "exact solver: fast (LP bound + local search; CBC only for a one-ball gap on a small kernel) | "
                    "prove (CBC until proven optimal)")
         ->capture_default_str()->check(CLI::IsMember(keys(kEfforts)))->group(cover);
-    app.add_option("--time-limit", o.select.time_limit_s, "exact solver budget in seconds (<= 0: none)")
+    app.add_option("--time-limit", o.select.time_limit_s,
+                   "budget of the whole run in seconds, the exact solver's included (<= 0: none)")
         ->capture_default_str()->group(cover);
     app.add_option("--target-count", o.select.target_count, "at most K balls, with the smallest delta (or scale) that achieves it (0 = off)")
         ->capture_default_str()->check(CLI::Range(0u, 100000000u))->group(cover);
@@ -159,6 +160,8 @@ void add_run_options(CLI::App& app, RunOptions& o) {
 bool finish_run_options(const CLI::App& app, RunOptions& o, std::string& error) {
     if (app.count("--scale")) o.select.dilation = CA_DILATE_SCALE;
     o.select.skip_uncoverable = app.count("--skip-uncoverable") ? 1 : 0;
+    // --time-limit bounds the whole run; without it only the solver's default budget applies
+    if (app.count("--time-limit")) o.time_limit_s = std::isfinite(o.select.time_limit_s) ? std::max(0.0, o.select.time_limit_s) : 0.0;
     o.select.solver = value_of(kSolvers, o.solver);
     o.point_normals = value_of(kNormals, o.normals);
     o.select.effort = value_of(kEfforts, o.effort);

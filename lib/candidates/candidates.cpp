@@ -37,11 +37,19 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
         // samples and runs the Delaunay step (the same structures either way); they only read the mesh.
         SurfaceStructures built;
         const Mesh& mesh = out.surface.mesh;
+        const std::function<bool()> stop = [&built, &monitor] {
+            return built.abandon.load(std::memory_order_relaxed) || monitor.stopped();
+        };
         Beside structures(
-            [&built, &mesh, threads] {
-                const auto tree = detail::build_triangle_tree(mesh, threads);   // one tree for both
-                built.winding = std::make_shared<const WindingNumber>(tree, 2.0, threads);
+            [&built, &mesh, &stop, threads] {
+                const auto tree = detail::build_triangle_tree(mesh, threads, stop);   // one tree for both
+                if (!stop()) built.winding = std::make_shared<const WindingNumber>(tree, 2.0, threads, stop);
+                if (stop()) {
+                    built.stopped = true;
+                    return;
+                }
                 built.distance = std::make_shared<const MeshDistance>(tree);
+                if (stop()) built.stopped = true;
             },
             threads > 1);
         // open meshes: no ball reaches out through a hole (hole_caps.cpp); found on this thread
@@ -50,11 +58,15 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
             const Mesh caps = hole_caps(mesh);
             if (!caps.triangles.empty()) built.cap_distance = std::make_unique<const MeshDistance>(caps);
         }
-        out.cover_samples = sample_surface(mesh, opt.cover_samples, stream_seed(opt.seed, 1));
+        if (!sample_surface(mesh, opt.cover_samples, stream_seed(opt.seed, 1), out.cover_samples, monitor))
+            st = monitor.stop_status("sampling");
         out.time_sampling_s = seconds_since(t0);
-        st = opt.generator == Generator::voronoi ? mesh_voronoi_candidates(opt, monitor, structures, built, threads, out)
-                                                 : mesh_random_candidates(opt, monitor, structures, built, threads, out);
+        if (st.ok())
+            st = opt.generator == Generator::voronoi ? mesh_voronoi_candidates(opt, monitor, structures, built, threads, out)
+                                                     : mesh_random_candidates(opt, monitor, structures, built, threads, out);
+        if (!st.ok()) built.abandon = true;
         structures.wait();
+        if (st.ok()) st = structures_status(built, monitor);
         const MeshDistance* cap_distance = built.cap_distance.get();
         if (st.ok() && cap_distance && !clamp_to_hole_caps(out, *cap_distance, threads, monitor)) st = monitor.stop_status("hole caps");
         if (st.ok()) {

@@ -1,6 +1,7 @@
 // candidates_internal.h: what the candidate generators share (candidates.cpp drives them); not part
 // of the library's interface.
 #pragma once
+#include <atomic>
 #include "candidates.h"
 
 #include "distance.h"
@@ -28,7 +29,15 @@ struct SurfaceStructures {
     std::shared_ptr<const WindingNumber> winding;
     std::shared_ptr<const MeshDistance> distance;
     std::unique_ptr<const MeshDistance> cap_distance;   // null when the mesh has no holes
+    // The build stops early on a cancel, the time limit or `abandon` (the step failed meanwhile);
+    // then `stopped` is set and the structures must not be used.
+    std::atomic<bool> abandon{false};
+    bool stopped = false;
 };
+// After structures.wait(): the stop status if the build stopped early, else success.
+inline Status structures_status(const SurfaceStructures& built, const Monitor& monitor) {
+    return built.stopped ? monitor.stop_status("surface structures") : Status::success();
+}
 
 // voronoi.cpp: circumcentres of the Delaunay tetrahedra of pts, de-duplicated, within the (slightly
 // grown) bounding box. `accept(unique, raw, raw_tets, keep)` sees the candidate centres (raw, one

@@ -40,6 +40,7 @@ Status mesh_random_candidates(const CandidateOptions& opt, const Monitor& monito
                               const SurfaceStructures& built, int threads, CandidateSet& out) {
     const Mesh& mesh = out.surface.mesh;
     structures.wait();
+    if (const Status ss = structures_status(built, monitor); !ss.ok()) return ss;
     const WindingNumber& winding = *built.winding;
     std::vector<Vec3> inner;
     if (!random_inner_points(mesh.vertices, opt, [&](const Vec3& p) { return winding.inside(p); }, threads, monitor,

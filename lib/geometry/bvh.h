@@ -1,11 +1,15 @@
 // bvh.h: a small binary bounding-volume hierarchy over triangles, shared by winding.cpp and
 // distance.cpp (one TriangleTree can serve both). Built top-down by a median split (of the triangle centroids) along the longest
-// axis of the centroid box; leaves hold at most `leaf_size` triangles. Internal header.
+// axis of the centroid box; leaves hold at most `leaf_size` triangles. The builds take an optional
+// stop request, tested every few thousand triangles so that a cancel takes effect at once; a
+// stopped build returns an empty tree, which the caller must not use. Internal header.
 #pragma once
 #include "common.h"
 #include "parallel.h"
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <functional>
 #include <limits>
 #include <memory>
 
@@ -42,7 +46,12 @@ inline std::vector<uint32_t> valid_triangles(const Mesh& mesh) {
 // the split compares precomputed centroids, so a build costs O(F log F) comparisons of doubles.
 // With threads > 1 the root's two subtrees are built at once (the right one into a vector of
 // its own, renumbered on appending): the same nodes in the same order as one thread builds.
-inline Bvh build_bvh(const Mesh& mesh, std::vector<uint32_t> ids, uint32_t leaf_size = 8, int threads = 1) {
+// `stop` is tested at every node of more than kStopCheckItems triangles and every
+// kStopCheckItems centroids, so at most O(kStopCheckItems log kStopCheckItems) work separates two
+// tests; it may be called from both threads. A stopped build returns an empty tree.
+constexpr uint32_t kStopCheckItems = 4096;
+inline Bvh build_bvh(const Mesh& mesh, std::vector<uint32_t> ids, uint32_t leaf_size = 8, int threads = 1,
+                     const std::function<bool()>& stop = {}) {
     Bvh bvh;
     if (ids.empty()) return bvh;
     const auto& V = mesh.vertices;
@@ -51,8 +60,15 @@ inline Bvh build_bvh(const Mesh& mesh, std::vector<uint32_t> ids, uint32_t leaf_
         Vec3 centroid;
         uint32_t id;
     };
+    std::atomic<bool> stopped{false};
+    auto stop_now = [&] {
+        if (stopped.load(std::memory_order_relaxed)) return true;
+        if (stop && stop()) stopped.store(true, std::memory_order_relaxed);
+        return stopped.load(std::memory_order_relaxed);
+    };
     std::vector<Item> items(ids.size());
     for (size_t i = 0; i < ids.size(); ++i) {
+        if (i % kStopCheckItems == 0 && stop_now()) return Bvh{};
         const Tri& f = T[ids[i]];
         items[i] = {Vec3((V[f[0]] + V[f[1]] + V[f[2]]) / 3.0), ids[i]};
     }
@@ -87,6 +103,10 @@ inline Bvh build_bvh(const Mesh& mesh, std::vector<uint32_t> ids, uint32_t leaf_
         BvhNode node;
         node.begin = begin; node.end = end;
         node.lo = Vec3::Constant(inf); node.hi = Vec3::Constant(-inf);
+        if (end - begin > kStopCheckItems && stop_now()) {
+            nodes[id] = node;   // a leaf over its range: the tree is discarded anyway
+            return id;
+        }
         if (end - begin > leaf) {
             const uint32_t mid = split(begin, end);
             node.left = self(self, nodes, begin, mid);
@@ -124,6 +144,7 @@ inline Bvh build_bvh(const Mesh& mesh, std::vector<uint32_t> ids, uint32_t leaf_
     } else {
         build(build, bvh.nodes, 0, n);
     }
+    if (stopped) return Bvh{};
     bvh.order.resize(items.size());
     for (size_t i = 0; i < items.size(); ++i) bvh.order[i] = items[i].id;
     return bvh;
@@ -136,9 +157,10 @@ struct TriangleTree {
     std::vector<std::array<Vec3, 3>> tris;   // triangle corners, in bvh.order
 };
 
-inline std::shared_ptr<const TriangleTree> build_triangle_tree(const Mesh& mesh, int threads = 1) {
+inline std::shared_ptr<const TriangleTree> build_triangle_tree(const Mesh& mesh, int threads = 1,
+                                                             const std::function<bool()>& stop = {}) {
     auto tree = std::make_shared<TriangleTree>();
-    tree->bvh = build_bvh(mesh, valid_triangles(mesh), 8, threads);
+    tree->bvh = build_bvh(mesh, valid_triangles(mesh), 8, threads, stop);
     tree->tris.reserve(tree->bvh.order.size());
     for (uint32_t t : tree->bvh.order) {
         const Tri& f = mesh.triangles[t];

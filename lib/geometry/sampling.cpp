@@ -13,22 +13,31 @@ namespace ca {
 std::vector<Vec3> sample_surface(const Mesh& mesh, size_t n, uint64_t seed,
                                  std::vector<uint32_t>* triangle_of_sample) {
     std::vector<Vec3> out;
+    sample_surface(mesh, n, seed, out, Monitor{}, triangle_of_sample);
+    return out;
+}
+
+bool sample_surface(const Mesh& mesh, size_t n, uint64_t seed, std::vector<Vec3>& out, const Monitor& monitor,
+                    std::vector<uint32_t>* triangle_of_sample) {
+    out.clear();
     if (triangle_of_sample) triangle_of_sample->clear();
     const size_t nt = mesh.triangles.size();
-    if (nt == 0 || n == 0) return out;
+    if (nt == 0 || n == 0) return true;
     std::vector<double> cumulative(nt);
     double total = 0;
     for (size_t t = 0; t < nt; ++t) {
+        if (monitor.stopped_at(t)) return false;
         const Tri& f = mesh.triangles[t];
         const Vec3& a = mesh.vertices[f[0]];
         total += 0.5 * (mesh.vertices[f[1]] - a).cross(mesh.vertices[f[2]] - a).norm();
         cumulative[t] = total;
     }
-    if (!(total > 0)) return out;
+    if (!(total > 0)) return true;
     Rng rng(seed);
     out.reserve(n);
     if (triangle_of_sample) triangle_of_sample->reserve(n);
     for (size_t i = 0; i < n; ++i) {
+        if (monitor.stopped_at(i)) return false;
         const double x = rng.uniform() * total;
         size_t t = size_t(std::upper_bound(cumulative.begin(), cumulative.end(), x) - cumulative.begin());
         if (t >= nt) t = nt - 1;
@@ -39,7 +48,7 @@ std::vector<Vec3> sample_surface(const Mesh& mesh, size_t n, uint64_t seed,
                       su * v * mesh.vertices[f[2]]);
         if (triangle_of_sample) triangle_of_sample->push_back(uint32_t(t));
     }
-    return out;
+    return true;
 }
 
 std::vector<uint32_t> random_subset(size_t count, size_t n, uint64_t seed) {

@@ -8,6 +8,7 @@
 #include "far_field.h"
 #include "parallel.h"
 #include <Eigen/Geometry>
+#include <atomic>
 #include <cmath>
 
 namespace ca {
@@ -72,7 +73,8 @@ struct WindingNumber::Impl {
 
 WindingNumber::WindingNumber(const Mesh& mesh, double beta) : WindingNumber(detail::build_triangle_tree(mesh), beta) {}
 
-WindingNumber::WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, double beta, int threads)
+WindingNumber::WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, double beta, int threads,
+                             const std::function<bool()>& stop)
     : impl_(std::make_unique<Impl>(std::move(tree))) {
     Impl& m = *impl_;
     m.beta = (beta >= 0 && std::isfinite(beta)) ? beta : 2.0;
@@ -84,7 +86,16 @@ WindingNumber::WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, d
     m.exp.resize(m.bvh.nodes.size());
     std::vector<double> weight(m.bvh.nodes.size(), 0.0);   // total area per node
     std::vector<Vec3> weighted(m.bvh.nodes.size());        // area-weighted centroid sum per node
+    std::atomic<bool> halted{false};
     auto expand = [&](size_t n) {
+        // a node's radius pass reads all its triangles: near the root a test every node, below
+        // every kStopCheckItems nodes
+        if (halted.load(std::memory_order_relaxed)) return;
+        if (stop && (n % detail::kStopCheckItems == 0 || m.bvh.nodes[n].end - m.bvh.nodes[n].begin > detail::kStopCheckItems) &&
+            stop()) {
+            halted.store(true, std::memory_order_relaxed);
+            return;
+        }
         const detail::BvhNode& node = m.bvh.nodes[n];
         Expansion e;
         if (node.leaf()) {
@@ -133,12 +144,13 @@ WindingNumber::WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, d
     const size_t right = root.leaf() ? 1 : root.right;
     if (threads > 1 && !root.leaf()) {
         run_workers(2, [&](size_t w) {
-            for (size_t n = w == 1 ? count : right, stop = w == 1 ? right : 1; n-- > stop;) expand(n);
+            for (size_t n = w == 1 ? count : right, last = w == 1 ? right : 1; n-- > last;) expand(n);
         });
     } else {
         for (size_t n = count; n-- > 1;) expand(n);
     }
     expand(0);
+    if (halted.load(std::memory_order_relaxed)) impl_.reset();
 }
 
 WindingNumber::~WindingNumber() = default;

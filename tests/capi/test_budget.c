@@ -59,7 +59,7 @@ static void test_time_limit(void) {
     CHECK(strncmp(ca_status_string(CA_ERROR_TIME_LIMIT), "CA_ERROR_TIME_LIMIT", 19) == 0);
 
     CHECK(ca_candidates(tiny, &v, &o, &failed_set) == CA_ERROR_TIME_LIMIT && failed_set == NULL);
-    CHECK(names_stage(tiny, "sampling"));
+    CHECK(names_stage(tiny, "surface")); /* the budget counts from the call's start */
     CHECK(ca_candidates(ok, &v, &o, &set) == CA_OK && set != NULL);
     CHECK(ca_select(tiny, set, NULL, &failed_sel) == CA_ERROR_TIME_LIMIT && failed_sel == NULL);
     CHECK(names_stage(tiny, "selection"));
@@ -71,7 +71,7 @@ static void test_time_limit(void) {
     CHECK(ca_skeleton_get_view(sk, &view) == CA_OK);
     e.struct_size = sizeof e;
     CHECK(ca_evaluate(tiny, &v, &view, NULL, &e) == CA_ERROR_TIME_LIMIT);
-    CHECK(names_stage(tiny, "evaluate"));
+    CHECK(names_stage(tiny, "surface"));
     CHECK(ca_evaluate(ok, &v, &view, NULL, &e) == CA_OK);
     /* the spent context still works for what needs no budget, and reports it */
     CHECK(ca_candidates(tiny, &v, &o, &failed_set) == CA_ERROR_TIME_LIMIT && failed_set == NULL);
@@ -302,6 +302,12 @@ static void test_index_equal_to_count(void) {
     sk.face_count = 1;
     CHECK(ca_evaluate(ctx, &v, &sk, NULL, &e) == CA_ERROR_INVALID_INPUT);
     CHECK(strstr(ca_context_last_error(ctx), "references vertex 3 of 3") != NULL);
+    /* the surface ca_evaluate measures against takes triangles too */
+    sk.face_count = 0;
+    CHECK(ca_evaluate(ctx, &v, &sk, NULL, &e) == CA_OK);
+    v.triangles = tri;
+    CHECK(ca_evaluate(ctx, &v, &sk, NULL, &e) == CA_ERROR_INVALID_INPUT);
+    CHECK(strstr(ca_context_last_error(ctx), "references vertex 8 of 8") != NULL);
     ca_context_destroy(ctx);
 }
 

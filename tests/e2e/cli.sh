@@ -169,6 +169,10 @@ expect_fail 2 "delta" "$data/fox.obj" --delta -1
 expect_fail 2 "solver" "$data/fox.obj" --solver magic
 expect_fail 2 "effort" "$data/fox.obj" --effort harder
 expect_fail 2 "divide" "$data/fox.obj" --divide -1
+# --time-limit bounds the whole run: a budget spent before the first step ends it with the
+# library's time-limit status, naming the step
+expect_fail 1 "CA_ERROR_TIME_LIMIT.*candidates\|candidates.*CA_ERROR_TIME_LIMIT\|time limit reached" "$data/fox.obj" -o "$tmp/tl.ma" --time-limit 1e-9
+check "no .ma after a spent budget" test ! -e "$tmp/tl.ma"
 
 # 7. every bundled model, poor ones included: a skeleton (exit 0) or a clean failure (exit 1),
 # never a crash or a hang

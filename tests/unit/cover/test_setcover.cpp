@@ -106,6 +106,33 @@ bool valid_cover(const Coverage& c, const std::vector<uint32_t>& sel, const std:
     return std::is_sorted(sel.begin(), sel.end()) && std::adjacent_find(sel.begin(), sel.end()) == sel.end();
 }
 
+// Two or three odd cycles (3, 5 or 7 rows, each column two neighbouring rows) and a few random
+// columns of three rows: an odd cycle's LP is half its length, one ball below its minimum, so
+// solvers must branch (or cut) to reach the optimum. Up to 21 rows, for the brute force.
+Coverage odd_cycles(Rng& rng) {
+    std::vector<std::vector<uint32_t>> cols;
+    uint32_t rows = 0;
+    for (int k = 0, cycles = 2 + int(rng.below(2)); k < cycles; ++k) {
+        const uint32_t len = 3 + 2 * uint32_t(rng.below(3));
+        for (uint32_t i = 0; i < len; ++i) cols.push_back({rows + i, rows + (i + 1) % len});
+        rows += len;
+    }
+    for (int e = 0, extra = int(rng.below(4)); e < extra; ++e)
+        cols.push_back({uint32_t(rng.below(rows)), uint32_t(rng.below(rows)), uint32_t(rng.below(rows))});
+    Coverage c;
+    c.n_samples = rows;
+    c.n_balls = cols.size();
+    c.ball_ptr.push_back(0);
+    for (auto& l : cols) {
+        std::sort(l.begin(), l.end());
+        l.erase(std::unique(l.begin(), l.end()), l.end());
+        c.ball_samples.insert(c.ball_samples.end(), l.begin(), l.end());
+        c.ball_ptr.push_back(uint32_t(c.ball_samples.size()));
+    }
+    c.build_transpose();
+    return c;
+}
+
 struct Instance {
     Coverage cov;
     std::vector<Vec3> centers;
@@ -533,6 +560,36 @@ TEST_CASE("coverage: bad input and cancellation") {
     CHECK(build_coverage(S, C, {1.0}, mon, cov).code == Code::cancelled);
 }
 
+TEST_CASE("coverage: a cancel from the first progress call of a many-batch build stops it there") {
+    // 20 000 balls are several batches: the build must return at the first report that is
+    // refused, with no further progress call, and leave the output untouched.
+    Rng rng(31);
+    std::vector<Vec3> S, C;
+    for (int i = 0; i < 2000; ++i) S.emplace_back(rng.uniform(), rng.uniform(), rng.uniform());
+    for (int i = 0; i < 20000; ++i) C.emplace_back(rng.uniform(), rng.uniform(), rng.uniform());
+    const std::vector<double> radii(C.size(), 0.05);
+    for (int threads : {1, 2}) {
+        int calls = 0;
+        Monitor mon;
+        mon.progress = [&](const char* stage, double) {
+            CHECK(std::string(stage) == "coverage");
+            ++calls;
+            return false;
+        };
+        Coverage cov;
+        cov.n_balls = 7;
+        CHECK(build_coverage(S, C, radii, mon, cov, threads).code == Code::cancelled);
+        CHECK(calls == 1);
+        CHECK(cov.n_balls == 7);
+        // uncancelled, the same build reports once per batch and at the end
+        calls = 0;
+        mon.progress = [&](const char*, double) { return ++calls, true; };
+        REQUIRE(build_coverage(S, C, radii, mon, cov, threads).ok());
+        CHECK(calls >= 5);
+        CHECK(cov.n_balls == C.size());
+    }
+}
+
 namespace {
 // The compact problem of a coverage in which every sample is covered (internal form).
 sc::Problem to_problem(const Coverage& c) {
@@ -625,12 +682,54 @@ TEST_CASE("set cover: run_cbc reads its answer by rounding and reaches the brute
     CHECK(solved == int(insts.size()));
 }
 
+TEST_CASE("set cover: run_cbc under every search setting reaches the brute-force minimum on instances that need branching") {
+    // Instances whose LP leaves a gap (odd cycles, sparse random ones up to 30 rows), searched
+    // from no incumbent under each setting the solver uses: CBC's answer (column values such as
+    // 0.9999999 after cuts and preprocessing) must read back as the optimal cover, with a bound
+    // no higher than the optimum.
+    Rng rng(8642);
+    std::vector<Coverage> insts;
+    for (int t = 0; t < 60; ++t)
+        insts.push_back(t % 2 == 0 ? random_cover(rng, 22 + rng.below(9), 16 + rng.below(9), 0.12 + 0.08 * rng.uniform())
+                                   : odd_cycles(rng));
+    std::vector<sc::CbcSettings> settings(6);
+    settings[1].lean = true;
+    settings[2].heuristics = false;
+    settings[3].strong_branching = false;
+    settings[4].threads = 2;
+    settings[5].lean = true;
+    settings[5].heuristics = false;
+    settings[5].strong_branching = false;
+    for (size_t t = 0; t < insts.size(); ++t) {
+        const Coverage& c = insts[t];
+        const int best = brute_min(c);
+        REQUIRE(best >= 1);
+        const sc::Problem P = to_problem(c);
+        for (size_t k = 0; k < settings.size(); ++k) {
+            INFO("instance " << t << " setting " << k << " brute-force minimum " << best);
+            const sc::CbcOutcome out = sc::run_cbc(P, c.n_balls + 1, settings[k]);
+            REQUIRE(out.ok);
+            CHECK(out.has_solution);
+            CHECK(out.proven);
+            CHECK(int(out.solution.size()) == best);
+            CHECK(out.bound <= best + 1e-9);
+            CHECK(valid_cover(c, out.solution));
+        }
+    }
+}
+
 TEST_CASE("set cover: every exact solve's lower bound is at most the brute-force minimum") {
     // Both efforts, with and without row generation, on the instances the brute force reaches:
-    // a bound above the optimum would let a solver claim a non-optimal cover proven.
-    const auto insts = small_instances(777, 160);
+    // a bound above the optimum would let a solver claim a non-optimal cover proven. Besides the
+    // small instances, ones that reach the LP phase (odd cycles, sparse instances up to 30 rows).
+    std::vector<Coverage> insts;
+    for (const Instance& in : small_instances(777, 160)) insts.push_back(in.cov);
+    Rng rng(1357);
+    for (int t = 0; t < 60; ++t)
+        insts.push_back(t % 2 == 0 ? random_cover(rng, 22 + rng.below(9), 16 + rng.below(9), 0.12 + 0.08 * rng.uniform())
+                                   : odd_cycles(rng));
     for (size_t t = 0; t < insts.size(); ++t) {
-        const Coverage& c = insts[t].cov;
+        const Coverage& c = insts[t];
         const int best = brute_min(c);
         for (int variant = 0; variant < 4; ++variant) {
             CoverOptions opt;
@@ -730,33 +829,10 @@ TEST_CASE("set cover: branching on the LP never rules out the brute-force minimu
     int beyond_lp = 0, below = 0;
     Rng rng(2468);
     for (int t = 0; t < 200; ++t) {
-        // Random instances (up to 30 rows, for the brute force) and unions of odd cycles with a
-        // few random extra columns: an odd cycle's LP is half its length, one ball below its
-        // minimum, so the LP alone often leaves a gap there.
-        Coverage c;
-        if (t % 2 == 0) {
-            c = random_cover(rng, 22 + rng.below(9), 16 + rng.below(9), 0.12 + 0.08 * rng.uniform());
-        } else {
-            std::vector<std::vector<uint32_t>> cols;
-            uint32_t rows = 0;
-            for (int k = 0, cycles = 2 + int(rng.below(2)); k < cycles; ++k) {
-                const uint32_t len = 3 + 2 * uint32_t(rng.below(3));
-                for (uint32_t i = 0; i < len; ++i) cols.push_back({rows + i, rows + (i + 1) % len});
-                rows += len;
-            }
-            for (int e = 0, extra = int(rng.below(4)); e < extra; ++e)
-                cols.push_back({uint32_t(rng.below(rows)), uint32_t(rng.below(rows)), uint32_t(rng.below(rows))});
-            c.n_samples = rows;
-            c.n_balls = cols.size();
-            c.ball_ptr.push_back(0);
-            for (auto& l : cols) {
-                std::sort(l.begin(), l.end());
-                l.erase(std::unique(l.begin(), l.end()), l.end());
-                c.ball_samples.insert(c.ball_samples.end(), l.begin(), l.end());
-                c.ball_ptr.push_back(uint32_t(c.ball_samples.size()));
-            }
-            c.build_transpose();
-        }
+        // Random instances (up to 30 rows, for the brute force) and unions of odd cycles, whose
+        // LP alone often leaves a gap.
+        const Coverage c = t % 2 == 0 ? random_cover(rng, 22 + rng.below(9), 16 + rng.below(9), 0.12 + 0.08 * rng.uniform())
+                                      : odd_cycles(rng);
         const sc::Problem P = to_problem(c);
         const int best = brute_min(c);
         REQUIRE(best > 0);
