@@ -26,6 +26,8 @@ struct CandidateOptions {
     uint32_t connect_samples = 10000;
     uint64_t seed = 1;
     int32_t threads = 0;    // 0 = all cores
+    // Point clouds: drop outlier points (cloud_outliers.cpp) before building anything on them.
+    bool filter_outliers = true;
 };
 
 // Everything later steps need, in internal (unit-cube) units.
@@ -51,6 +53,7 @@ struct CandidateSet {
     // Point clouds: the winding number of the (de-duplicated, oriented) points, the inside test
     // of the candidates, the fallback balls and the connection step.
     std::shared_ptr<const PointCloudWinding> cloud_winding;
+    size_t outliers = 0;                  // point clouds: points dropped as outliers (cloud_outliers.cpp)
     double orientation_inconsistent = 0;  // point clouds: fraction of orientation probes failing (point_cloud.cpp)
     std::vector<Ball> balls;              // P, undilated medial radii
     size_t fallback_balls = 0;            // of which added by add_fallback_balls (at the end)

@@ -48,6 +48,9 @@ bool random_inner_points(const std::vector<Vec3>& pts, const CandidateOptions& o
 // random_candidates.cpp: random inner points of the bounding box, with their distances to the surface.
 Status mesh_random_candidates(const CandidateOptions& opt, const Monitor& monitor, Beside& structures,
                               const SurfaceStructures& built, int threads, CandidateSet& out);
+// cloud_outliers.cpp: marks the outliers of de-duplicated cloud points (outlier[i] = 1) and
+// returns their count (0 on clean clouds).
+size_t find_cloud_outliers(const std::vector<Vec3>& pts, std::vector<uint8_t>& outlier);
 // point_cloud.cpp: the candidates (Voronoi or random) and fallback balls of an oriented point cloud.
 Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monitor, int threads, CandidateSet& out);
 
