@@ -54,6 +54,9 @@ struct CandidateSet {
     // of the candidates, the fallback balls and the connection step.
     std::shared_ptr<const PointCloudWinding> cloud_winding;
     size_t outliers = 0;                  // point clouds: points dropped as outliers (cloud_outliers.cpp)
+    size_t outside_local_plane = 0;       // point clouds: candidates dropped outside the local surface (cloud_local_planes.cpp)
+    double noise_ratio = 0;               // point clouds: median off-plane distance / spacing (cloud_local_planes.cpp)
+    double noise_scale_growth = 0;        // point clouds: the same over 16 and 8 neighbours (cloud_local_planes.cpp)
     double orientation_inconsistent = 0;  // point clouds: fraction of orientation probes failing (point_cloud.cpp)
     std::vector<Ball> balls;              // P, undilated medial radii
     size_t fallback_balls = 0;            // of which added by add_fallback_balls (at the end)

@@ -151,11 +151,15 @@ Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monito
         winding = std::make_shared<PointCloudWinding>(upts, unrm);
         out.surface.flipped = true;
     }
+    // noisy clouds: cover the denoised surface (cloud_local_planes.cpp)
+    const LocalPlanes planes(upts, unrm);
+    out.noise_ratio = planes.noise_ratio();
+    out.noise_scale_growth = planes.scale_growth();
     std::vector<Vec3> sample_normals;
     const size_t pool = out.outliers ? kept.size() : pts.size();
     for (uint32_t k : random_subset(pool, opt.cover_samples, stream_seed(opt.seed, 1))) {
         const uint32_t i = out.outliers ? kept[k] : k;
-        out.cover_samples.push_back(pts[i]);
+        out.cover_samples.push_back(planes.noisy() ? planes.project(pts[i]) : pts[i]);
         sample_normals.push_back(nrm[i]);
     }
     out.dense_samples = upts;
@@ -163,6 +167,7 @@ Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monito
                     ? voronoi_cloud_candidates(upts, *winding, threads, monitor, out.balls)
                     : random_cloud_candidates(opt, upts, *winding, threads, monitor, out.balls);
     if (!st.ok()) return st;
+    if (planes.noisy()) out.outside_local_plane = drop_outside_local_planes(planes, threads, monitor, out.balls);
     out.fallback_balls = add_cloud_fallback_balls(out, *winding, sample_normals, threads);
     out.cloud_winding = std::move(winding);
     return Status::success();
