@@ -232,6 +232,9 @@ CA_API int32_t ca_candidate_set_flipped(const ca_candidate_set* set);
 #define CA_NORMALS_ORIENTED  2 /* the caller's normals, re-oriented */
 #define CA_NORMALS_ESTIMATED 3 /* estimated from the points (PCA) and oriented */
 CA_API int32_t ca_candidate_set_normals(const ca_candidate_set* set);
+/* Point clouds: how many (de-duplicated) points were dropped as outliers: isolated points and
+   points far off their neighbours' plane (docs/pointclouds.md). 0 for meshes and clean clouds. */
+CA_API uint64_t ca_candidate_set_outlier_count(const ca_candidate_set* set);
 /* Copy-out: capacity in balls; centers needs 3*capacity doubles, radii capacity doubles (either
    may be NULL). *count receives the number of balls; CA_ERROR_BUFFER_TOO_SMALL if capacity is
    smaller (nothing copied). */

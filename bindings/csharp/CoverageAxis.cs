@@ -183,6 +183,7 @@ namespace CoverageAxis
         [DllImport(Lib)] public static extern IntPtr ca_candidate_set_samples(CandidateSetHandle set);
         [DllImport(Lib)] public static extern double ca_candidate_set_reference_length(CandidateSetHandle set);
         [DllImport(Lib)] public static extern int ca_candidate_set_flipped(CandidateSetHandle set);
+        [DllImport(Lib)] public static extern ulong ca_candidate_set_outlier_count(CandidateSetHandle set);
 
         [DllImport(Lib)] public static extern int ca_select_options_defaults(ref SelectOptions o, uint size);
         [DllImport(Lib)] public static extern int ca_select(ContextHandle ctx, CandidateSetHandle set,
@@ -549,6 +550,8 @@ namespace CoverageAxis
         }
         public double ReferenceLength { get { return Native.ca_candidate_set_reference_length(Handle); } }
         public bool Flipped { get { return Native.ca_candidate_set_flipped(Handle) != 0; } }
+        /// <summary>Point clouds: points dropped as outliers.</summary>
+        public ulong Outliers { get { return Native.ca_candidate_set_outlier_count(Handle); } }
     }
 
     /// <summary>Balls chosen by step 2; outlives its candidate set and context.</summary>

@@ -26,6 +26,8 @@ struct CandidateOptions {
     uint32_t connect_samples = 10000;
     uint64_t seed = 1;
     int32_t threads = 0;    // 0 = all cores
+    // Point clouds: drop outlier points (cloud_outliers.cpp) before building anything on them.
+    bool filter_outliers = true;
 };
 
 // Everything later steps need, in internal (unit-cube) units.
@@ -51,6 +53,10 @@ struct CandidateSet {
     // Point clouds: the winding number of the (de-duplicated, oriented) points, the inside test
     // of the candidates, the fallback balls and the connection step.
     std::shared_ptr<const PointCloudWinding> cloud_winding;
+    size_t outliers = 0;                  // point clouds: points dropped as outliers (cloud_outliers.cpp)
+    size_t outside_local_plane = 0;       // point clouds: candidates dropped outside the local surface (cloud_local_planes.cpp)
+    double noise_ratio = 0;               // point clouds: median off-plane distance / spacing (cloud_local_planes.cpp)
+    double noise_scale_growth = 0;        // point clouds: the same over 16 and 8 neighbours (cloud_local_planes.cpp)
     double orientation_inconsistent = 0;  // point clouds: fraction of orientation probes failing (point_cloud.cpp)
     std::vector<Ball> balls;              // P, undilated medial radii
     size_t fallback_balls = 0;            // of which added by add_fallback_balls (at the end)

@@ -5,6 +5,7 @@
 #include "candidates.h"
 
 #include "distance.h"
+#include "kdtree.h"
 #include "parallel.h"
 #include "winding.h"
 
@@ -57,6 +58,28 @@ bool random_inner_points(const std::vector<Vec3>& pts, const CandidateOptions& o
 // random_candidates.cpp: random inner points of the bounding box, with their distances to the surface.
 Status mesh_random_candidates(const CandidateOptions& opt, const Monitor& monitor, Beside& structures,
                               const SurfaceStructures& built, int threads, CandidateSet& out);
+// cloud_outliers.cpp: marks the outliers of de-duplicated cloud points (outlier[i] = 1) and
+// returns their count (0 on clean clouds).
+size_t find_cloud_outliers(const std::vector<Vec3>& pts, std::vector<uint8_t>& outlier);
+// cloud_local_planes.cpp: the plane of each cloud point's 16 nearest neighbours, oriented by its
+// unit outward normal, and whether the cloud is noisy (the points lie off their planes by more
+// than the curvature of a clean cloud explains).
+class LocalPlanes {
+public:
+    LocalPlanes(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals);
+    bool noisy() const;
+    double noise_ratio() const { return noise_ratio_; }   // median off-plane distance / median d16
+    double scale_growth() const { return scale_growth_; } // median off-plane distance, 16 over 8 neighbours
+    double height(const Vec3& q) const;   // signed distance of q above the plane of its nearest point
+    Vec3 project(const Vec3& q) const;    // q moved onto the plane of its nearest point
+private:
+    size_t nearest(const Vec3& q) const;
+    std::vector<Vec3> mean_, normal_;
+    PointTree tree_;
+    double noise_ratio_ = 0, scale_growth_ = 0;
+};
+// Drops the balls whose centre is above the local plane (height > 0); returns how many.
+size_t drop_outside_local_planes(const LocalPlanes& planes, int threads, const Monitor& monitor, std::vector<Ball>& balls);
 // point_cloud.cpp: the candidates (Voronoi or random) and fallback balls of an oriented point cloud.
 Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monitor, int threads, CandidateSet& out);
 

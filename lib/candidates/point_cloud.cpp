@@ -1,6 +1,6 @@
-// point_cloud.cpp: candidates of an oriented point cloud. The points (de-duplicated) get their
-// winding number (point_winding.h); its sign fixes the orientation (normals pointing inward are
-// flipped); candidates are the Voronoi vertices with winding number > 1/2 (isolated ones dropped,
+// point_cloud.cpp: candidates of an oriented point cloud. The points (de-duplicated, outliers
+// dropped by cloud_outliers.cpp) get their winding number (point_winding.h); its sign fixes the
+// orientation (normals pointing inward are flipped); candidates are the Voronoi vertices with winding number > 1/2 (isolated ones dropped,
 // as in the paper), or random points of the bounding box with winding number > 1/2 and their
 // distance to the nearest point as radius; then fallback balls make every sample coverable.
 #include "candidates_internal.h"
@@ -67,6 +67,26 @@ OrientationProbes probe_orientation(const PointCloudWinding& w, const std::vecto
     return out;
 }
 
+// Drops the outliers of the de-duplicated points upts (and their normals unrm); `kept` gets the
+// input points that are not outliers nor duplicates of one (only when there are outliers).
+void drop_outliers(const std::vector<Vec3>& pts, std::vector<Vec3>& upts, std::vector<Vec3>& unrm,
+                   std::vector<uint32_t>& kept, size_t& count) {
+    std::vector<uint8_t> outlier;
+    count = find_cloud_outliers(upts, outlier);
+    if (count == 0) return;
+    const PointTree tree(upts);   // an input point is dropped with the unique point it merged into
+    for (size_t i = 0; i < pts.size(); ++i) {
+        size_t idx = 0;
+        double d2 = 0;
+        if (tree.nearest(pts[i], 1, &idx, &d2) == 1 && !outlier[idx]) kept.push_back(uint32_t(i));
+    }
+    size_t n = 0;
+    for (size_t i = 0; i < upts.size(); ++i)
+        if (!outlier[i]) upts[n] = upts[i], unrm[n] = unrm[i], ++n;
+    upts.resize(n);
+    unrm.resize(n);
+}
+
 Status voronoi_cloud_candidates(const std::vector<Vec3>& upts, const PointCloudWinding& winding, int threads,
                                 const Monitor& monitor, std::vector<Ball>& out) {
     std::vector<Ball> balls;
@@ -109,6 +129,9 @@ Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monito
     std::vector<uint32_t> unique = remove_near_duplicates(pts, kDuplicateTolerance);
     std::vector<Vec3> upts(unique.size()), unrm(unique.size());
     for (size_t i = 0; i < unique.size(); ++i) { upts[i] = pts[unique[i]]; unrm[i] = nrm[unique[i]]; }
+    // the points cover samples are drawn from: all of them unless outliers are dropped
+    std::vector<uint32_t> kept;
+    if (opt.filter_outliers) drop_outliers(pts, upts, unrm, kept, out.outliers);
     if (!monitor.report("inside", 0)) return monitor.stop_status("inside");
     auto winding = std::make_shared<PointCloudWinding>(upts, unrm);
     const OrientationProbes probes = probe_orientation(*winding, upts, unrm);
@@ -128,9 +151,15 @@ Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monito
         winding = std::make_shared<PointCloudWinding>(upts, unrm);
         out.surface.flipped = true;
     }
+    // noisy clouds: cover the denoised surface (cloud_local_planes.cpp)
+    const LocalPlanes planes(upts, unrm);
+    out.noise_ratio = planes.noise_ratio();
+    out.noise_scale_growth = planes.scale_growth();
     std::vector<Vec3> sample_normals;
-    for (uint32_t i : random_subset(pts.size(), opt.cover_samples, stream_seed(opt.seed, 1))) {
-        out.cover_samples.push_back(pts[i]);
+    const size_t pool = out.outliers ? kept.size() : pts.size();
+    for (uint32_t k : random_subset(pool, opt.cover_samples, stream_seed(opt.seed, 1))) {
+        const uint32_t i = out.outliers ? kept[k] : k;
+        out.cover_samples.push_back(planes.noisy() ? planes.project(pts[i]) : pts[i]);
         sample_normals.push_back(nrm[i]);
     }
     out.dense_samples = upts;
@@ -138,6 +167,7 @@ Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monito
                     ? voronoi_cloud_candidates(upts, *winding, threads, monitor, out.balls)
                     : random_cloud_candidates(opt, upts, *winding, threads, monitor, out.balls);
     if (!st.ok()) return st;
+    if (planes.noisy()) out.outside_local_plane = drop_outside_local_planes(planes, threads, monitor, out.balls);
     out.fallback_balls = add_cloud_fallback_balls(out, *winding, sample_normals, threads);
     out.cloud_winding = std::move(winding);
     return Status::success();

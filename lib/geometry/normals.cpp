@@ -12,18 +12,26 @@
 
 namespace ca {
 
+bool fit_plane(const std::vector<Vec3>& pts, const size_t* idx, size_t count, Vec3& mean, Vec3& normal) {
+    mean = Vec3::Zero();
+    if (count == 0) return false;
+    for (size_t j = 0; j < count; ++j) mean += pts[idx[j]];
+    mean /= double(count);
+    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+    for (size_t j = 0; j < count; ++j) cov += (pts[idx[j]] - mean) * (pts[idx[j]] - mean).transpose();
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
+    const Vec3 n = es.eigenvectors().col(0);
+    if (!(n.allFinite() && n.norm() > 0)) return false;
+    normal = n.normalized();
+    return true;
+}
+
 std::vector<Vec3> estimate_normals(const std::vector<Vec3>& pts, size_t k) {
     std::vector<Vec3> normals(pts.size(), Vec3(0, 0, 1));
     if (pts.size() < 3) return normals;
     for_each_neighbourhood(pts, k, [&](size_t i, const size_t* idx, const double*, size_t found) {
-        Vec3 mean = Vec3::Zero();
-        for (size_t j = 0; j < found; ++j) mean += pts[idx[j]];
-        mean /= double(found);
-        Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-        for (size_t j = 0; j < found; ++j) cov += (pts[idx[j]] - mean) * (pts[idx[j]] - mean).transpose();
-        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
-        const Vec3 n = es.eigenvectors().col(0);
-        if (n.allFinite() && n.norm() > 0) normals[i] = n.normalized();
+        Vec3 mean, n;
+        if (fit_plane(pts, idx, found, mean, n)) normals[i] = n;
     });
     return normals;
 }

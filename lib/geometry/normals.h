@@ -13,6 +13,9 @@
 
 namespace ca {
 
+// The least-squares plane of pts[idx[0..count)): its centroid and unit normal (direction of least
+// variance, sign arbitrary); false if degenerate.
+bool fit_plane(const std::vector<Vec3>& pts, const size_t* idx, size_t count, Vec3& mean, Vec3& normal);
 std::vector<Vec3> estimate_normals(const std::vector<Vec3>& pts, size_t k = 16);
 // `estimated`: PCA normals, which average across thin parts and edges, so the facing rule has
 // nothing to go by there: every pair by the side-by-side rule, weights 1 - |n_i . n_j| only.

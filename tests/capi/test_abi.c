@@ -165,6 +165,7 @@ static void test_arrays_uncoverable_and_copy(void) {
     CHECK(ca_candidates_from_arrays(ctx, samples, 4, 0, centers, 0, radii, 0, 2, 1.0, &set) == CA_OK);
     CHECK(ca_candidate_set_count(set) == 2 && ca_candidate_set_sample_count(set) == 4);
     CHECK(fabs(ca_candidate_set_reference_length(set) - 1.0) < 1e-12);
+    CHECK(ca_candidate_set_outlier_count(set) == 0 && ca_candidate_set_outlier_count(NULL) == 0);
     CHECK(fabs(ca_candidate_set_centers(set)[3] - 2.0) < 1e-12 && fabs(ca_candidate_set_radii(set)[0] - 0.6) < 1e-12);
 
     CHECK(ca_candidate_set_copy(set, out_c, out_r, 1, &count) == CA_ERROR_BUFFER_TOO_SMALL && count == 2);

@@ -159,3 +159,52 @@ TEST_CASE("point cloud: random-sign and missing normals on a sphere give one bal
     }
 }
 
+
+// The sphere test of the noise filter: R = 2 (diagonal 4 sqrt 3), 0.5 % noise of the diagonal
+// (sigma 0.035) and 1 % far outliers. Every ball selected must lie inside the sphere grown by
+// three noise deviations, its centre inside the sphere.
+namespace {
+constexpr double kNoisyR = 2.0;
+double noisy_margin() { return 3 * 0.005 * 4 * std::sqrt(3.0); }
+shapes::Cloud noisy_sphere() { return shapes::noisy_cloud(sphere_cloud(kNoisyR, 5000), 0.005, 0.01); }
+// The largest centre distance + radius, and the largest centre distance, of the selected balls.
+std::pair<double, double> reach(const Run& r) {
+    double outer = 0, centre = 0;
+    for (const ca::Ball& b : r.skeleton.balls) {
+        outer = std::max(outer, b.center.norm() + b.radius);
+        centre = std::max(centre, b.center.norm());
+    }
+    return {outer, centre};
+}
+}  // namespace
+
+TEST_CASE("point cloud: noise and far outliers make no ball outside the sphere; outliers are counted") {
+    const Run clean = run(sphere_cloud(kNoisyR, 5000));
+    CHECK(clean.set.outliers == 0);
+    CHECK(clean.set.outside_local_plane == 0);   // a clean cloud is not noisy: nothing dropped or projected
+    const Run noisy = run(noisy_sphere());
+    CHECK(noisy.set.outliers >= 40);   // 50 far outliers planted, a few noise points may join them
+    CHECK(noisy.set.outliers <= 150);
+    CHECK(noisy.set.outside_local_plane > 0);
+    REQUIRE(!noisy.skeleton.balls.empty());
+    const auto [outer, centre] = reach(noisy);
+    CHECK(centre < kNoisyR);
+    CHECK(outer <= kNoisyR + noisy_margin());
+}
+
+TEST_CASE("point cloud: without the outlier filter the far outliers do make balls outside (the test can fail)") {
+    // the candidates only: without the filter the selection may fail (outliers are samples too)
+    shapes::Cloud c = noisy_sphere();
+    ca::Surface surface;
+    REQUIRE(ca::prepare_surface(ca::Mesh{std::move(c.points), {}}, std::move(c.normals), surface, true, true).ok());
+    ca::CandidateOptions copt;
+    copt.filter_outliers = false;
+    ca::CandidateSet set;
+    const ca::Status st = ca::generate_candidates(std::move(surface), copt, ca::Monitor{}, set);
+    REQUIRE_MESSAGE(st.ok(), st.message);
+    CHECK(set.outliers == 0);
+    double outer = 0;
+    for (const ca::Ball& b : set.balls)
+        outer = std::max(outer, set.surface.norm.to_user(b.center).norm() + b.radius * set.surface.norm.scale);
+    CHECK(outer > kNoisyR + noisy_margin());
+}

@@ -13,7 +13,7 @@ import ctypes.util
 import glob
 import os
 import threading
-from ctypes import POINTER, CFUNCTYPE, c_char_p, c_double, c_int32, c_size_t, c_uint32, c_void_p
+from ctypes import POINTER, CFUNCTYPE, c_char_p, c_double, c_int32, c_size_t, c_uint32, c_uint64, c_void_p
 
 from ._structs import (_CandidateOptions, _ConnectOptions, _ContextDesc, _EvaluateOptions, _Evaluation,
                        _SelectOptions, _SelectStats, _SkeletonStats, _SkeletonView, _SurfaceView)
@@ -63,6 +63,7 @@ _SIGNATURES = {
     "ca_candidate_set_sample_count": (c_size_t, [P]), "ca_candidate_set_samples": (P, [P]),
     "ca_candidate_set_reference_length": (c_double, [P]), "ca_candidate_set_flipped": (c_int32, [P]),
     "ca_candidate_set_normals": (c_int32, [P]),
+    "ca_candidate_set_outlier_count": (c_uint64, [P]),
     "ca_select_options_defaults": (c_int32, [POINTER(_SelectOptions), c_uint32]),
     "ca_select": (c_int32, [P, P, POINTER(_SelectOptions), POINTER(P)]),
     "ca_selection_destroy": (None, [P]), "ca_selection_count": (c_size_t, [P]),

@@ -135,6 +135,7 @@ class CandidateSet:
         self.reference_length = h.get("ca_candidate_set_reference_length")  # the length delta is a fraction of
         self.flipped = bool(h.get("ca_candidate_set_flipped"))  # the mesh faced inward and was flipped
         self.normals = _NORMALS_USED.get(h.get("ca_candidate_set_normals"), "none")  # a cloud's normals used
+        self.outliers = h.get("ca_candidate_set_outlier_count")  # cloud points dropped as outliers
         self.centers = h.view("ca_candidate_set_centers", self.count, 3)
         self.radii = h.view("ca_candidate_set_radii", self.count, 1)
         self.samples = h.view("ca_candidate_set_samples", self.sample_count, 3)

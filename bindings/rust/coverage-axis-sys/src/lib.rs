@@ -317,6 +317,7 @@ extern "C" {
     pub fn ca_candidate_set_samples(set: *const ca_candidate_set) -> *const f64;
     pub fn ca_candidate_set_reference_length(set: *const ca_candidate_set) -> f64;
     pub fn ca_candidate_set_flipped(set: *const ca_candidate_set) -> i32;
+    pub fn ca_candidate_set_outlier_count(set: *const ca_candidate_set) -> u64;
     pub fn ca_candidate_set_copy(
         set: *const ca_candidate_set,
         centers: *mut f64,

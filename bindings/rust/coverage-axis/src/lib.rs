@@ -669,6 +669,10 @@ impl CandidateSet {
     pub fn flipped(&self) -> bool {
         unsafe { sys::ca_candidate_set_flipped(self.raw) != 0 }
     }
+    /// Point clouds: how many points were dropped as outliers.
+    pub fn outlier_count(&self) -> u64 {
+        unsafe { sys::ca_candidate_set_outlier_count(self.raw) }
+    }
 }
 
 impl Selection {
