@@ -196,7 +196,7 @@ TEST_CASE("point cloud: without the outlier filter the far outliers do make ball
     // the candidates only: without the filter the selection may fail (outliers are samples too)
     shapes::Cloud c = noisy_sphere();
     ca::Surface surface;
-    REQUIRE(ca::prepare_surface(ca::Mesh{std::move(c.points), {}}, std::move(c.normals), surface, true, true).ok());
+    REQUIRE(ca::prepare_surface(ca::Mesh{std::move(c.points), {}}, std::move(c.normals), surface, true, ca::PointNormals::trusted).ok());
     ca::CandidateOptions copt;
     copt.filter_outliers = false;
     ca::CandidateSet set;
