@@ -31,5 +31,8 @@ double sign_disagreement(const std::vector<Vec3>& pts, const std::vector<Vec3>& 
 // oriented or estimated normals are refused: clean sampled clouds stay far below it, clouds with
 // random per-point signs far above (docs/pointclouds.md has the measurements).
 constexpr double kMaxSignDisagreement = 0.1;
+// Re-oriented trusted normals replace the caller's only when their disagreement is below this
+// fraction of the given one (random signs: about 0.5 before, near 0 after).
+constexpr double kSignCheckGain = 0.5;
 
 }  // namespace ca

@@ -34,6 +34,16 @@ static bool all_in_one_plane(const std::vector<Vec3>& pts, const Vec3& lo, doubl
     return std::sqrt(std::max(0.0, es.eigenvalues()[0])) <= 1e-9;
 }
 
+namespace {
+// Most given normals lie within about 37 degrees of their neighbourhood's PCA direction (either
+// sign): they describe the surface, whatever their signs.
+bool follows_surface(const std::vector<Vec3>& given, const std::vector<Vec3>& pca) {
+    size_t along = 0;
+    for (size_t i = 0; i < given.size(); ++i) along += std::abs(given[i].dot(pca[i])) > 0.8;
+    return along >= 0.8 * double(given.size());
+}
+}  // namespace
+
 Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool require_normals, PointNormals trust) {
     out = Surface{};
     const size_t nv = raw.vertices.size();
@@ -122,14 +132,27 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
             if (trust == PointNormals::unoriented || out.disagreement_given > kMaxSignDisagreement)
                 out.normals_source = NormalSource::oriented;
         }
+        std::vector<Vec3> given;
+        if (out.normals_source == NormalSource::oriented && trust == PointNormals::trusted) given = normals;
         if (out.normals_source != NormalSource::given)
             orient_normals(raw.vertices, normals, 16, out.normals_source == NormalSource::estimated);
         out.disagreement = out.normals_source == NormalSource::given ? out.disagreement_given
                                                                      : sign_disagreement(raw.vertices, normals);
+        // Trusted normals that orientation does not make at least twice as consistent, but whose
+        // directions follow the surface, disagree because of noise (neighbours' offsets then say
+        // little about their signs), not because of wrong signs: the caller's normals are kept
+        if (!given.empty() && !(out.disagreement < kSignCheckGain * out.disagreement_given) &&
+            follows_surface(given, estimate_normals(raw.vertices))) {
+            normals = std::move(given);
+            out.normals_source = NormalSource::given;
+            out.disagreement = out.disagreement_given;
+            out.sign_check_inconclusive = true;
+        }
         // estimated normals are judged by the winding number's jump across the surface when the
         // candidates are built: on sparse clouds PCA's own neighbourhoods disagree at thin parts
         // without the orientation being wrong, so the pair rule would refuse usable clouds
-        if (out.normals_source != NormalSource::estimated && out.disagreement > kMaxSignDisagreement)
+        if (out.normals_source != NormalSource::estimated && !out.sign_check_inconclusive &&
+            out.disagreement > kMaxSignDisagreement)
             return fail(Code::invalid_input,
                         "the point cloud's normals could not be oriented consistently: after orientation " +
                             std::to_string(int(std::lround(100 * out.disagreement))) +

@@ -30,6 +30,8 @@ struct Surface {
     // sign_disagreement (normals.h) of the normals as given (-1: none given or not measured)
     // and of the normals used
     double disagreement_given = -1, disagreement = 0;
+    // trusted normals disagreed, but orientation did not make them consistent (noise): kept as given
+    bool sign_check_inconclusive = false;
     bool flipped = false;         // the mesh faced inward and was flipped
     size_t dropped_triangles = 0; // zero-area triangles ignored
     size_t duplicate_triangles = 0; // repeats of a kept triangle merged into it (duplicates.h)
@@ -41,8 +43,9 @@ struct Surface {
 // point cloud, which takes `normals` (one per vertex, trusted as `trust` says; empty or
 // `estimate`: estimated by PCA and oriented) unless `require_normals` is false (the evaluation
 // only measures distances: normals are dropped). Trusted normals whose signs disagree between
-// neighbours (sign_disagreement above kMaxSignDisagreement) are re-oriented once; normals that
-// still disagree after orientation are refused (invalid_input); estimated ones are judged by the
+// neighbours (sign_disagreement above kMaxSignDisagreement) are re-oriented once, and the result
+// replaces them only when it at least halves the disagreement (else noise, not signs, caused it:
+// they are kept); re-oriented normals that still disagree are refused (invalid_input); estimated ones are judged by the
 // winding number when the candidates are built. Takes its arguments by value.
 Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool require_normals = true,
                        PointNormals trust = PointNormals::trusted);

@@ -183,6 +183,9 @@ TEST_CASE("point cloud: noise and far outliers make no ball outside the sphere; 
     CHECK(clean.set.outliers == 0);
     CHECK(clean.set.outside_local_plane == 0);   // a clean cloud is not noisy: nothing dropped or projected
     const Run noisy = run(noisy_sphere());
+    // noise defeats the sign check, not the orientation: the exact normals are kept as given
+    CHECK(noisy.set.surface.normals_source == ca::NormalSource::given);
+    CHECK(noisy.set.surface.sign_check_inconclusive);
     CHECK(noisy.set.outliers >= 40);   // 50 far outliers planted, a few noise points may join them
     CHECK(noisy.set.outliers <= 150);
     CHECK(noisy.set.outside_local_plane > 0);
@@ -196,7 +199,8 @@ TEST_CASE("point cloud: without the outlier filter the far outliers do make ball
     // the candidates only: without the filter the selection may fail (outliers are samples too)
     shapes::Cloud c = noisy_sphere();
     ca::Surface surface;
-    REQUIRE(ca::prepare_surface(ca::Mesh{std::move(c.points), {}}, std::move(c.normals), surface, true, ca::PointNormals::trusted).ok());
+    const ca::Status prepared = ca::prepare_surface(ca::Mesh{std::move(c.points), {}}, std::move(c.normals), surface);
+    REQUIRE_MESSAGE(prepared.ok(), prepared.message);
     ca::CandidateOptions copt;
     copt.filter_outliers = false;
     ca::CandidateSet set;
