@@ -20,17 +20,6 @@ struct Row {
     double h = 0, seconds = 0;
 };
 
-ca_surface_view view_of(const std::vector<double>& pos, const std::vector<uint32_t>& tri, const std::vector<double>& nrm) {
-    ca_surface_view v;
-    ca_surface_view_init(&v);
-    v.positions = pos.data();
-    v.vertex_count = pos.size() / 3;
-    v.triangles = tri.empty() ? nullptr : tri.data();
-    v.triangle_count = tri.size() / 3;
-    v.normals = nrm.empty() ? nullptr : nrm.data();
-    return v;
-}
-
 Row run(const shapes::Cloud& cloud, const ca::Mesh& mesh) {
     Row row;
     std::vector<double> pos, nrm, mpos;
@@ -54,7 +43,7 @@ Row run(const shapes::Cloud& cloud, const ca::Mesh& mesh) {
     sopt.skip_uncoverable = 1;
     ca_connect_options kopt;
     ca_connect_options_init(&kopt);
-    const ca_surface_view cv = view_of(pos, none, nrm);
+    const ca_surface_view cv = bench::view_of(pos, none, nrm);
     if ((row.status = ca_candidates(ctx, &cv, &copt, &set)) == CA_OK && (row.status = ca_select(ctx, set, &sopt, &sel)) == CA_OK &&
         (row.status = ca_connect(ctx, set, sel, &kopt, &sk)) == CA_OK) {
         row.seconds = bench::seconds_since(t0);
@@ -68,7 +57,7 @@ Row run(const shapes::Cloud& cloud, const ca::Mesh& mesh) {
         ca_evaluate_options_init(&eopt);
         ca_evaluation ev{};
         ev.struct_size = sizeof ev;
-        const ca_surface_view mv = view_of(mpos, mtri, {});
+        const ca_surface_view mv = bench::view_of(mpos, mtri, {});
         if ((row.status = ca_evaluate(ctx, &mv, &skv, &eopt, &ev)) == CA_OK) row.h = ev.hd_recon_to_surface;
     }
     ca_skeleton_destroy(sk);

@@ -100,6 +100,18 @@ inline ca_status measure_skeleton(ca_context* ctx, const ca_surface_view& v, con
     return ca_evaluate(ctx, &v, &view, &eo, &eval);
 }
 
+// A view of packed positions, triangles (empty: a point cloud) and normals (empty: none); borrowed.
+inline ca_surface_view view_of(const std::vector<double>& xyz, const std::vector<uint32_t>& tri, const std::vector<double>& nrm) {
+    ca_surface_view v;
+    ca_surface_view_init(&v);
+    v.positions = xyz.data();
+    v.vertex_count = xyz.size() / 3;
+    v.triangles = tri.empty() ? nullptr : tri.data();
+    v.triangle_count = tri.size() / 3;
+    v.normals = nrm.empty() ? nullptr : nrm.data();
+    return v;
+}
+
 // A view of a mesh or point cloud read by examples/io (borrowed: valid while `mesh` lives).
 inline ca_surface_view surface_view(const caio::MeshData& mesh) {
     ca_surface_view v;

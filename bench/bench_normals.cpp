@@ -42,12 +42,7 @@ void run_cloud(const std::string& name, const caio::MeshData& cloud) {
                                        {"random signs, trusted", CA_POINT_NORMALS_TRUSTED, 2},
                                        {"random signs, unoriented", CA_POINT_NORMALS_UNORIENTED, 2},
                                        {"none", CA_POINT_NORMALS_TRUSTED, 3}};
-    ca_candidate_options co;
-    ca_candidate_options_init(&co);
-    ca_select_options so;
-    ca_select_options_init(&so);
-    ca_connect_options cop;
-    ca_connect_options_init(&cop);
+    const bench::DefaultOptions d;
     const size_t n = cloud.positions.size() / 3;
     std::vector<ca::Vec3> pts(n);
     for (size_t i = 0; i < n; ++i) pts[i] = ca::Vec3(cloud.positions[3 * i], cloud.positions[3 * i + 1], cloud.positions[3 * i + 2]);
@@ -67,7 +62,7 @@ void run_cloud(const std::string& name, const caio::MeshData& cloud) {
             disagreement = ca::sign_disagreement(pts, nrm);
         }
         const auto t = std::chrono::steady_clock::now();
-        const bench::PipelineRun r = bench::run_pipeline(m, co, so, cop, false, nullptr, nullptr, v.trust);
+        const bench::PipelineRun r = bench::run_pipeline(m, d.candidates, d.select, d.connect, false, nullptr, nullptr, v.trust);
         const double secs = bench::seconds_since(t);
         char dis[16] = "-";
         if (disagreement >= 0) std::snprintf(dis, sizeof dis, "%.3f", disagreement);

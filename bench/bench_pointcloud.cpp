@@ -104,17 +104,6 @@ struct CloudRun {
 
 double cpu_now() { return double(std::clock()) / CLOCKS_PER_SEC; }
 
-ca_surface_view view_of(const std::vector<double>& xyz, const std::vector<uint32_t>& tri, const std::vector<double>& nrm) {
-    ca_surface_view v;
-    ca_surface_view_init(&v);
-    v.positions = xyz.data();
-    v.vertex_count = xyz.size() / 3;
-    v.triangles = tri.empty() ? nullptr : tri.data();
-    v.triangle_count = tri.size() / 3;
-    v.normals = nrm.empty() ? nullptr : nrm.data();
-    return v;
-}
-
 // The pipeline at the defaults on `input` (a cloud, or the mesh for the mesh route).
 CloudRun run_surface(const ca_surface_view& input, const ca_surface_view& reference) {
     CloudRun r;
@@ -299,8 +288,8 @@ int main(int argc, char** argv) {
         const std::string name = bench::stem(path);
         const std::string mesh_path = o.root + "/meshes/paper/" + name.substr(0, name.find('_')) + ".obj";
         const bool against_mesh = caio::read_mesh(mesh_path, mesh, err) && Box(mesh.positions).matches(Box(cloud.positions));
-        const CloudRun r = run_surface(view_of(cloud.positions, {}, cloud.normals),
-                                       against_mesh ? view_of(mesh.positions, mesh.triangles, {}) : view_of(cloud.positions, {}, {}));
+        const CloudRun r = run_surface(bench::view_of(cloud.positions, {}, cloud.normals),
+                                       against_mesh ? bench::view_of(mesh.positions, mesh.triangles, {}) : bench::view_of(cloud.positions, {}, {}));
         stored_ok += r.status == CA_OK;
         print_row(name + (against_mesh ? "" : " (HD vs the cloud)"), cloud.normals.empty() ? "as stored, no normals" : "as stored",
                   r);
@@ -314,7 +303,7 @@ int main(int argc, char** argv) {
         std::string err;
         if (!caio::read_mesh(path, md, err)) { std::printf("| %s | | read error: %s |\n", name.c_str(), err.c_str()); continue; }
         ShapeResult& sr = shapes_seen[name];
-        const ca_surface_view reference = view_of(md.positions, md.triangles, {});
+        const ca_surface_view reference = bench::view_of(md.positions, md.triangles, {});
         {
             const CloudRun m = run_surface(reference, reference);
             sr.mesh_ok = m.status == CA_OK && m.evaluated;
@@ -329,7 +318,7 @@ int main(int argc, char** argv) {
                 if (o.variants.find(v.key) == std::string::npos) continue;
                 std::vector<double> xyz, normals;
                 make_variant(core, n, v.key, diagonal, xyz, normals);
-                ca_surface_view input = view_of(xyz, {}, normals);
+                ca_surface_view input = bench::view_of(xyz, {}, normals);
                 // (b)'s normals are right up to sign, and a caller who made them by PCA knows it
                 if (v.key == 'b') input.point_normals = CA_POINT_NORMALS_UNORIENTED;
                 const CloudRun r = run_surface(input, reference);
