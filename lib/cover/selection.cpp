@@ -178,9 +178,16 @@ Status solve_parts(const Coverage& cov, const std::vector<Vec3>& samples, const 
 Status solve_coverage(const Coverage& cov, const CandidateSet& set, const SelectOptions& opt, const CoverOptions& cover,
                       const Monitor& monitor, CoverResult& res, uint32_t& parts) {
     parts = 0;
-    if (opt.dc_threshold > 0 && cov.n_samples > opt.dc_threshold)
-        return solve_parts(cov, set.cover_samples, opt, cover, monitor, res, parts);
-    return solve_set_cover(cov, cover, opt.skip_uncoverable, monitor, res);
+    Status st = opt.dc_threshold > 0 && cov.n_samples > opt.dc_threshold
+                    ? solve_parts(cov, set.cover_samples, opt, cover, monitor, res, parts)
+                    : solve_set_cover(cov, cover, opt.skip_uncoverable, monitor, res);
+    // say why a sample has no ball and what to do: candidates are inside the shape, so a sample
+    // with nothing inside behind it (an open scan's rim, a sheet, a hole) gets none within delta
+    if (st.code == Code::uncoverable)
+        st.message += ": no candidate ball inside the shape reaches them within the dilation (no inside behind "
+                      "them: an open surface, a sheet or a part thinner than the sampling); skip_uncoverable "
+                      "(--skip-uncoverable) gives the skeleton of the rest";
+    return st;
 }
 
 }  // namespace

@@ -175,6 +175,8 @@ static void test_arrays_uncoverable_and_copy(void) {
     so.delta = 0.0;
     CHECK(ca_select(ctx, set, &so, &sel) == CA_ERROR_UNCOVERABLE && sel == NULL);
     CHECK(strstr(ca_context_last_error(ctx), "1 of 4") != NULL);
+    CHECK(strstr(ca_context_last_error(ctx), "no inside behind them") != NULL);   /* the reason, and what to do */
+    CHECK(strstr(ca_context_last_error(ctx), "skip_uncoverable") != NULL);
     so.skip_uncoverable = 1;
     CHECK(ca_select(ctx, set, &so, &sel) == CA_OK && sel != NULL);
     CHECK(ca_selection_count(sel) == 2);
