@@ -217,7 +217,7 @@ void make_variant(const ca::Mesh& mesh, size_t n, char key, double diagonal, std
     normals.clear();
     if (key == 'a') normals = flatten(c.normals);
     if (key == 'b') {
-        // Passed as given normals: the C ABI has no flag for "given but unoriented".
+        // Passed as CA_POINT_NORMALS_UNORIENTED (main).
         std::vector<ca::Vec3> pca = ca::estimate_normals(c.points);
         ca::Rng rng(99 + n);
         for (ca::Vec3& v : pca)

@@ -148,11 +148,13 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
             out.disagreement = out.disagreement_given;
             out.sign_check_inconclusive = true;
         }
-        // estimated normals are judged by the winding number's jump across the surface when the
-        // candidates are built: on sparse clouds PCA's own neighbourhoods disagree at thin parts
-        // without the orientation being wrong, so the pair rule would refuse usable clouds
+        // estimated normals, and unoriented ones whose directions follow the surface, are judged
+        // by the winding number's jump across the surface when the candidates are built: on
+        // sparse clouds neighbours disagree at thin parts without the orientation being wrong,
+        // so the pair rule would refuse usable clouds
         if (out.normals_source != NormalSource::estimated && !out.sign_check_inconclusive &&
-            out.disagreement > kMaxSignDisagreement)
+            out.disagreement > kMaxSignDisagreement &&
+            !(trust == PointNormals::unoriented && follows_surface(normals, estimate_normals(raw.vertices))))
             return fail(Code::invalid_input,
                         "the point cloud's normals could not be oriented consistently: after orientation " +
                             std::to_string(int(std::lround(100 * out.disagreement))) +
