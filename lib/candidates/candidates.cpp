@@ -70,7 +70,8 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
         const MeshDistance* cap_distance = built.cap_distance.get();
         if (st.ok() && cap_distance && !clamp_to_hole_caps(out, *cap_distance, threads, monitor)) st = monitor.stop_status("hole caps");
         if (st.ok()) {
-            out.fallback_balls = add_fallback_balls(out, *built.winding, *built.distance, cap_distance, threads);
+            out.fallback_balls = add_fallback_balls(out, *built.winding, *built.distance, cap_distance, threads, monitor);
+            if (monitor.stopped()) st = monitor.stop_status("fallback balls");
             out.winding = std::move(built.winding);
             out.distance = std::move(built.distance);
         }

@@ -12,7 +12,25 @@
 #include "winding.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+
+TEST_CASE("fallback balls: a stop request adds none") {
+    ca::Surface surface;
+    REQUIRE(ca::prepare_surface(shapes::sphere(1.0, 32, 64), {}, surface).ok());
+    ca::CandidateSet set;
+    set.surface = surface;
+    set.cover_samples = ca::sample_surface(surface.mesh, 200, 7);
+    set.balls.push_back({ca::Vec3(0.8, 0.5, 0.5), 0.05});
+    const ca::WindingNumber winding(surface.mesh);
+    const ca::MeshDistance distance(surface.mesh);
+    std::atomic<int> flag{1};
+    ca::Monitor cancelled;
+    cancelled.cancel_flag = &flag;
+    CHECK(ca::add_fallback_balls(set, winding, distance, nullptr, 1, cancelled) == 0);
+    CHECK(set.balls.size() == 1);
+    CHECK(ca::add_fallback_balls(set, winding, distance, nullptr, 1, ca::Monitor{}) > 100);
+}
 
 TEST_CASE("fallback balls: every unreachable sample gets an inner ball that reaches it") {
     ca::Surface surface;
