@@ -55,7 +55,7 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
         // open meshes: no ball reaches out through a hole (hole_caps.cpp); found on this thread
         // while the trees are built (its own member of `built`)
         {
-            const Mesh caps = hole_caps(mesh);
+            const Mesh caps = hole_caps(mesh, monitor);   // stopped: the sampling below stops too
             if (!caps.triangles.empty()) built.cap_distance = std::make_unique<const MeshDistance>(caps);
         }
         if (!sample_surface(mesh, opt.cover_samples, stream_seed(opt.seed, 1), out.cover_samples, monitor))

@@ -86,7 +86,8 @@ size_t add_cloud_fallback_balls(CandidateSet& set, const PointCloudWinding& wind
 // Open meshes (hole_caps.cpp): every closed boundary loop is capped by a fan from its
 // centroid (for distances only) and every candidate's radius is clamped to its distance to the
 // caps, so no ball reaches out through a hole. Closed meshes are unchanged. False if cancelled.
-Mesh hole_caps(const Mesh& mesh);
+// hole_caps gives no caps when `monitor` stopped its welding: the caller tests monitor.stopped().
+Mesh hole_caps(const Mesh& mesh, const Monitor& monitor = Monitor{});
 bool clamp_to_hole_caps(CandidateSet& set, const MeshDistance& caps, int threads, const Monitor& monitor);
 
 }  // namespace ca

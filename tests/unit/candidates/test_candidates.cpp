@@ -92,6 +92,12 @@ TEST_CASE("open mesh: no candidate ball reaches out through a hole; closed meshe
         if ((closed.vertices[t[0]].x() + closed.vertices[t[1]].x() + closed.vertices[t[2]].x()) / 3 < 0.6)
             open.triangles.push_back(t);
     const ca::Mesh caps = ca::hole_caps(open);
+    {
+        std::atomic<int> flag{1};
+        ca::Monitor cancelled;
+        cancelled.cancel_flag = &flag;
+        CHECK(ca::hole_caps(open, cancelled).triangles.empty());   // stopped while welding
+    }
     CHECK(caps.triangles.size() == 48);   // one loop of 48 edges
     for (const ca::Mesh* m : {&closed, static_cast<const ca::Mesh*>(&open)}) {
         ca::Surface surface;
