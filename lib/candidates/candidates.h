@@ -72,8 +72,8 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
 constexpr double kFallbackReach = 0.005;   // unit-cube units (0.5 % of the longest bbox side)
 // `caps` (optional): distances to the hole caps of an open mesh, which also bound the radius.
 // `threads`: for the coverage queries (0 = all cores). When `monitor` says stop (tested in the
-// coverage queries and every Monitor::kCheckEvery samples) it returns early with part of the
-// balls added: the caller tests monitor.stopped() and drops the set.
+// coverage queries and every Monitor::kCheckEvery samples; its progress callback is not called)
+// it returns early with part of the balls added: the caller tests monitor.stopped().
 size_t add_fallback_balls(CandidateSet& set, const WindingNumber& winding, const MeshDistance& distance,
                           const MeshDistance* caps = nullptr, int threads = 0, const Monitor& monitor = Monitor{});
 

@@ -33,8 +33,12 @@ std::vector<size_t> unreached_samples(const CandidateSet& set, int threads, cons
         centers[i] = set.balls[i].center;
         reach[i] = set.balls[i].radius + kFallbackReach;
     }
+    // the queries make no progress calls of their own (a progress call's stop would not be seen
+    // by the caller's monitor.stopped()); the cancel flag and the budget still stop them
+    Monitor quiet = monitor;
+    quiet.progress = nullptr;
     Coverage cov;
-    if (!build_coverage(set.cover_samples, centers, reach, monitor, cov, threads).ok()) return {};
+    if (!build_coverage(set.cover_samples, centers, reach, quiet, cov, threads).ok()) return {};
     if (cov.sample_ptr.size() != set.cover_samples.size() + 1) cov.build_transpose();
     std::vector<size_t> out;
     for (size_t j = 0; j < set.cover_samples.size(); ++j)
