@@ -45,7 +45,7 @@ ca_status ca_candidates(ca_context* ctx, const ca_surface_view* surface, const c
         st = read_surface(surface, true, raw, normals, &trust);
         if (!st.ok()) return st;
         ca::Surface surf;
-        st = ca::prepare_surface(std::move(raw), std::move(normals), surf, true, trust);
+        st = ca::prepare_surface(std::move(raw), std::move(normals), surf, true, trust, monitor);
         if (!st.ok()) return st;
         if (trust == ca::PointNormals::trusted && surf.normals_source == ca::NormalSource::oriented)
             ctx->log(2, "the point normals point against each other at " +

@@ -55,7 +55,7 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
         // open meshes: no ball reaches out through a hole (hole_caps.cpp); found on this thread
         // while the trees are built (its own member of `built`)
         {
-            const Mesh caps = hole_caps(mesh);
+            const Mesh caps = hole_caps(mesh, monitor);   // stopped: the sampling below stops too
             if (!caps.triangles.empty()) built.cap_distance = std::make_unique<const MeshDistance>(caps);
         }
         if (!sample_surface(mesh, opt.cover_samples, stream_seed(opt.seed, 1), out.cover_samples, monitor))
@@ -70,7 +70,8 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
         const MeshDistance* cap_distance = built.cap_distance.get();
         if (st.ok() && cap_distance && !clamp_to_hole_caps(out, *cap_distance, threads, monitor)) st = monitor.stop_status("hole caps");
         if (st.ok()) {
-            out.fallback_balls = add_fallback_balls(out, *built.winding, *built.distance, cap_distance, threads);
+            out.fallback_balls = add_fallback_balls(out, *built.winding, *built.distance, cap_distance, threads, monitor);
+            if (monitor.stopped()) st = monitor.stop_status("fallback balls");
             out.winding = std::move(built.winding);
             out.distance = std::move(built.distance);
         }

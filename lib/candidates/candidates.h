@@ -71,20 +71,23 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
 // under it (fallback_balls.cpp), so a cover exists for every offset delta >= kFallbackReach.
 constexpr double kFallbackReach = 0.005;   // unit-cube units (0.5 % of the longest bbox side)
 // `caps` (optional): distances to the hole caps of an open mesh, which also bound the radius.
-// `threads`: for the coverage queries (0 = all cores).
+// `threads`: for the coverage queries (0 = all cores). When `monitor` says stop (tested in the
+// coverage queries and every Monitor::kCheckEvery samples; its progress callback is not called)
+// it returns early with part of the balls added: the caller tests monitor.stopped().
 size_t add_fallback_balls(CandidateSet& set, const WindingNumber& winding, const MeshDistance& distance,
-                          const MeshDistance* caps = nullptr, int threads = 0);
+                          const MeshDistance* caps = nullptr, int threads = 0, const Monitor& monitor = Monitor{});
 
 // Point clouds: the same balls, grown along the cover samples' unit outward normals
 // (`normals[j]` for cover_samples[j]), inside by the cloud's winding number, radius = distance
-// to the nearest point of dense_samples.
+// to the nearest point of dense_samples. Stops as add_fallback_balls does.
 size_t add_cloud_fallback_balls(CandidateSet& set, const PointCloudWinding& winding, const std::vector<Vec3>& normals,
-                                int threads = 0);
+                                int threads = 0, const Monitor& monitor = Monitor{});
 
 // Open meshes (hole_caps.cpp): every closed boundary loop is capped by a fan from its
 // centroid (for distances only) and every candidate's radius is clamped to its distance to the
 // caps, so no ball reaches out through a hole. Closed meshes are unchanged. False if cancelled.
-Mesh hole_caps(const Mesh& mesh);
+// hole_caps gives no caps when `monitor` stopped its welding: the caller tests monitor.stopped().
+Mesh hole_caps(const Mesh& mesh, const Monitor& monitor = Monitor{});
 bool clamp_to_hole_caps(CandidateSet& set, const MeshDistance& caps, int threads, const Monitor& monitor);
 
 }  // namespace ca

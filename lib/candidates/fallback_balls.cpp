@@ -25,16 +25,20 @@
 namespace ca {
 namespace {
 
-// The samples no candidate reaches within kFallbackReach.
-std::vector<size_t> unreached_samples(const CandidateSet& set, int threads) {
+// The samples no candidate reaches within kFallbackReach (none when `monitor` stopped the queries).
+std::vector<size_t> unreached_samples(const CandidateSet& set, int threads, const Monitor& monitor) {
     std::vector<Vec3> centers(set.balls.size());
     std::vector<double> reach(set.balls.size());
     for (size_t i = 0; i < set.balls.size(); ++i) {
         centers[i] = set.balls[i].center;
         reach[i] = set.balls[i].radius + kFallbackReach;
     }
+    // the queries make no progress calls of their own (a progress call's stop would not be seen
+    // by the caller's monitor.stopped()); the cancel flag and the budget still stop them
+    Monitor quiet = monitor;
+    quiet.progress = nullptr;
     Coverage cov;
-    if (!build_coverage(set.cover_samples, centers, reach, Monitor{}, cov, threads).ok()) return {};
+    if (!build_coverage(set.cover_samples, centers, reach, quiet, cov, threads).ok()) return {};
     if (cov.sample_ptr.size() != set.cover_samples.size() + 1) cov.build_transpose();
     std::vector<size_t> out;
     for (size_t j = 0; j < set.cover_samples.size(); ++j)
@@ -82,7 +86,7 @@ bool grow_ball(const Vec3& s, const Vec3& n, const std::function<bool(const Vec3
 }  // namespace
 
 size_t add_fallback_balls(CandidateSet& set, const WindingNumber& winding, const MeshDistance& distance,
-                          const MeshDistance* caps, int threads) {
+                          const MeshDistance* caps, int threads, const Monitor& monitor) {
     // radius at c: distance to the surface, and to the hole caps of an open mesh (a ball under a
     // hole must not grow out through it)
     auto radius_at = [&](const Vec3& c) {
@@ -93,8 +97,10 @@ size_t add_fallback_balls(CandidateSet& set, const WindingNumber& winding, const
     const Mesh& mesh = set.surface.mesh;
     if (mesh.triangles.empty() || set.cover_samples.empty()) return 0;
     size_t added = 0;
-    for (size_t j : unreached_samples(set, threads)) {
-        const Vec3& s = set.cover_samples[j];
+    const std::vector<size_t> unreached = unreached_samples(set, threads, monitor);
+    for (size_t k = 0; k < unreached.size(); ++k) {
+        if (monitor.stopped_at(k)) break;
+        const Vec3& s = set.cover_samples[unreached[k]];
         Vec3 closest;
         uint32_t tri = 0;
         distance.distance(s, &closest, &tri);
@@ -111,13 +117,16 @@ size_t add_fallback_balls(CandidateSet& set, const WindingNumber& winding, const
 }
 
 size_t add_cloud_fallback_balls(CandidateSet& set, const PointCloudWinding& winding, const std::vector<Vec3>& normals,
-                                int threads) {
+                                int threads, const Monitor& monitor) {
     if (set.cover_samples.empty() || set.dense_samples.empty() || normals.size() != set.cover_samples.size()) return 0;
     const PointTree tree(set.dense_samples);
     auto radius_at = [&](const Vec3& c) { return tree.distance(c); };
     auto inside = [&](const Vec3& c) { return winding.inside(c); };
     size_t added = 0;
-    for (size_t j : unreached_samples(set, threads)) {
+    const std::vector<size_t> unreached = unreached_samples(set, threads, monitor);
+    for (size_t k = 0; k < unreached.size(); ++k) {
+        if (monitor.stopped_at(k)) break;
+        const size_t j = unreached[k];
         Ball best;
         if (!grow_ball(set.cover_samples[j], normals[j], inside, radius_at, best)) continue;
         set.balls.push_back(best);

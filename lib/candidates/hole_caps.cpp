@@ -18,9 +18,10 @@
 
 namespace ca {
 
-Mesh hole_caps(const Mesh& mesh) {
+Mesh hole_caps(const Mesh& mesh, const Monitor& monitor) {
     // vertices with identical coordinates are one vertex (split seams are not holes)
-    const std::vector<uint32_t> weld = weld_map(mesh.vertices);
+    const std::vector<uint32_t> weld = weld_map(mesh.vertices, monitor);
+    if (weld.size() != mesh.vertices.size()) return {};
     // edges used by one triangle only, ascending: the edges (u < w) bucketed by u (a counting
     // sort), each bucket's w sorted, runs of length 1 kept
     const size_t nv = mesh.vertices.size();

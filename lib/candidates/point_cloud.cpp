@@ -168,7 +168,8 @@ Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monito
                     : random_cloud_candidates(opt, upts, *winding, threads, monitor, out.balls);
     if (!st.ok()) return st;
     if (planes.noisy()) out.outside_local_plane = drop_outside_local_planes(planes, threads, monitor, out.balls);
-    out.fallback_balls = add_cloud_fallback_balls(out, *winding, sample_normals, threads);
+    out.fallback_balls = add_cloud_fallback_balls(out, *winding, sample_normals, threads, monitor);
+    if (monitor.stopped()) return monitor.stop_status("fallback balls");
     out.cloud_winding = std::move(winding);
     return Status::success();
 }

@@ -9,7 +9,7 @@ namespace ca {
 // One pass in index order over an open-addressing hash table of first occurrences: a vertex
 // equal (==) to an earlier one gets that one's index, so each gets the smallest index at its
 // position. Keys hash the coordinates' bits with -0 folded onto +0, which == treats as equal.
-std::vector<uint32_t> weld_map(const std::vector<Vec3>& vertices) {
+std::vector<uint32_t> weld_map(const std::vector<Vec3>& vertices, const Monitor& monitor) {
     const size_t nv = vertices.size();
     std::vector<uint32_t> weld(nv);
     size_t size = 16;
@@ -23,6 +23,7 @@ std::vector<uint32_t> weld_map(const std::vector<Vec3>& vertices) {
         return b;
     };
     for (size_t i = 0; i < nv; ++i) {
+        if (monitor.stopped_at(i)) return {};
         const Vec3& v = vertices[i];
         uint64_t h = bits(v.x()) * 0x9E3779B97F4A7C15ull;
         h = (h ^ (h >> 31) ^ bits(v.y())) * 0xC2B2AE3D27D4EB4Full;
@@ -36,9 +37,12 @@ std::vector<uint32_t> weld_map(const std::vector<Vec3>& vertices) {
     return weld;
 }
 
-MergeCounts merge_duplicate_geometry(Mesh& mesh) {
+MergeCounts merge_duplicate_geometry(Mesh& mesh, const Monitor& monitor) {
     MergeCounts counts;
-    const std::vector<uint32_t> weld = weld_map(mesh.vertices);
+    MergeCounts stopped;
+    stopped.stopped = true;
+    const std::vector<uint32_t> weld = weld_map(mesh.vertices, monitor);
+    if (weld.size() != mesh.vertices.size()) return stopped;
     const size_t nt = mesh.triangles.size();
     // welded corners; triangles with a repeated corner are dropped here
     std::vector<Tri> tris;
@@ -67,6 +71,7 @@ MergeCounts merge_duplicate_geometry(Mesh& mesh) {
     std::vector<uint32_t> table(size, kEmpty), group(n);
     std::vector<uint32_t> same_way(n, 0), other_way(n, 0);   // per group (its first member)
     for (size_t i = 0; i < n; ++i) {
+        if (monitor.stopped_at(i)) return stopped;
         const Tri s = sorted(tris[i]);
         uint64_t h = (uint64_t(s[0]) * 0x9E3779B97F4A7C15ull) ^ (uint64_t(s[1]) * 0xC2B2AE3D27D4EB4Full) ^
                      (uint64_t(s[2]) * 0x165667B19E3779F9ull);
@@ -83,6 +88,7 @@ MergeCounts merge_duplicate_geometry(Mesh& mesh) {
     std::vector<Tri> out;
     out.reserve(n);
     for (size_t i = 0; i < n; ++i) {
+        if (monitor.stopped_at(i)) return stopped;
         const uint32_t g = group[i];
         const bool same = even(tris[i]) == even(tris[g]);
         const bool keep_same = same_way[g] >= other_way[g], keep_other = other_way[g] >= same_way[g];

@@ -44,7 +44,8 @@ bool follows_surface(const std::vector<Vec3>& given, const std::vector<Vec3>& pc
 }
 }  // namespace
 
-Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool require_normals, PointNormals trust) {
+Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool require_normals, PointNormals trust,
+                       const Monitor& monitor) {
     out = Surface{};
     const size_t nv = raw.vertices.size();
     if (nv == 0) return fail(Code::degenerate_input, "the input has no vertices");
@@ -59,7 +60,8 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
     const bool cloud = raw.triangles.empty();
     if (!cloud) {
         // repeated geometry would only repeat work (duplicates.h)
-        const MergeCounts merged = merge_duplicate_geometry(raw);
+        const MergeCounts merged = merge_duplicate_geometry(raw, monitor);
+        if (merged.stopped) return monitor.stop_status("surface");
         out.dropped_triangles = merged.degenerate;
         out.duplicate_triangles = merged.duplicate;
     }
@@ -97,6 +99,7 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
     if (all_in_one_plane(used, lo, longest))
         return fail(Code::degenerate_input, "all input points lie in one plane: a medial skeleton needs a solid");
 
+    if (monitor.stopped()) return monitor.stop_status("surface");
     out.norm.origin = lo;
     out.norm.scale = longest;
     for (Vec3& p : raw.vertices) p = out.norm.to_internal(p);

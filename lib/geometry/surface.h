@@ -46,9 +46,10 @@ struct Surface {
 // neighbours (sign_disagreement above kMaxSignDisagreement) are re-oriented once, and the result
 // replaces them only when it at least halves the disagreement (else noise, not signs, caused it:
 // they are kept); re-oriented normals that still disagree are refused (invalid_input); estimated ones are judged by the
-// winding number when the candidates are built. Takes its arguments by value.
+// winding number when the candidates are built. Takes its arguments by value. The welding and
+// merge test `monitor` every Monitor::kCheckEvery items; a stop returns monitor.stop_status("surface").
 Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool require_normals = true,
-                       PointNormals trust = PointNormals::trusted);
+                       PointNormals trust = PointNormals::trusted, const Monitor& monitor = Monitor{});
 
 // Axis-aligned bounding box of points (min, max); empty input gives (0, 0).
 std::pair<Vec3, Vec3> bounding_box(const std::vector<Vec3>& pts);

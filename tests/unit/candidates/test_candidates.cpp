@@ -12,7 +12,25 @@
 #include "winding.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+
+TEST_CASE("fallback balls: a stop request adds none") {
+    ca::Surface surface;
+    REQUIRE(ca::prepare_surface(shapes::sphere(1.0, 32, 64), {}, surface).ok());
+    ca::CandidateSet set;
+    set.surface = surface;
+    set.cover_samples = ca::sample_surface(surface.mesh, 200, 7);
+    set.balls.push_back({ca::Vec3(0.8, 0.5, 0.5), 0.05});
+    const ca::WindingNumber winding(surface.mesh);
+    const ca::MeshDistance distance(surface.mesh);
+    std::atomic<int> flag{1};
+    ca::Monitor cancelled;
+    cancelled.cancel_flag = &flag;
+    CHECK(ca::add_fallback_balls(set, winding, distance, nullptr, 1, cancelled) == 0);
+    CHECK(set.balls.size() == 1);
+    CHECK(ca::add_fallback_balls(set, winding, distance, nullptr, 1, ca::Monitor{}) > 100);
+}
 
 TEST_CASE("fallback balls: every unreachable sample gets an inner ball that reaches it") {
     ca::Surface surface;
@@ -74,6 +92,12 @@ TEST_CASE("open mesh: no candidate ball reaches out through a hole; closed meshe
         if ((closed.vertices[t[0]].x() + closed.vertices[t[1]].x() + closed.vertices[t[2]].x()) / 3 < 0.6)
             open.triangles.push_back(t);
     const ca::Mesh caps = ca::hole_caps(open);
+    {
+        std::atomic<int> flag{1};
+        ca::Monitor cancelled;
+        cancelled.cancel_flag = &flag;
+        CHECK(ca::hole_caps(open, cancelled).triangles.empty());   // stopped while welding
+    }
     CHECK(caps.triangles.size() == 48);   // one loop of 48 edges
     for (const ca::Mesh* m : {&closed, static_cast<const ca::Mesh*>(&open)}) {
         ca::Surface surface;

@@ -1,7 +1,10 @@
 // test_stop.cpp: the surface structure builds and the sampling stop when asked (a cancel or the
 // time limit during the candidate step): a stopped BVH is empty, a stopped winding tree answers
-// 0, a stopped sampling says so; unasked, each gives what it gives without a stop request.
+// 0, a stopped sampling says so; unasked, each gives what it gives without a stop request. The
+// surface preparation (welding, duplicate merge) stops the same way.
 #include "bvh.h"
+#include "duplicates.h"
+#include "surface.h"
 #include "sampling.h"
 #include "support/shapes.h"
 #include "winding.h"
@@ -45,4 +48,37 @@ TEST_CASE("stop requests: BVH, winding tree and sampling stop within a few thous
     Monitor spent;
     spent.deadline = Deadline::after(1e-12);
     CHECK_FALSE(sample_surface(m, 5000, 7, s, spent));
+}
+
+TEST_CASE("stop requests: welding, duplicate merge and surface preparation stop when asked") {
+    Mesh m = shapes::torus(1.0, 0.3, 200, 100);
+    m.triangles.push_back(m.triangles[0]);   // one repeat for the merge to drop
+    std::atomic<int> flag{1};
+    Monitor cancelled;
+    cancelled.cancel_flag = &flag;
+    Monitor spent;
+    spent.deadline = Deadline::after(1e-12);
+
+    CHECK(weld_map(m.vertices, Monitor{}).size() == m.vertices.size());
+    CHECK(weld_map(m.vertices, cancelled).empty());
+    CHECK(weld_map(m.vertices, spent).empty());
+
+    Mesh merged = m, stopped = m;
+    const MergeCounts full = merge_duplicate_geometry(merged, Monitor{});
+    CHECK_FALSE(full.stopped);
+    CHECK(full.duplicate == 1);
+    CHECK(merged.triangles.size() == m.triangles.size() - 1);
+    const MergeCounts none = merge_duplicate_geometry(stopped, cancelled);
+    CHECK(none.stopped);
+    CHECK(stopped.triangles == m.triangles);   // left as it was
+
+    Surface s;
+    CHECK(prepare_surface(m, {}, s, true, PointNormals::trusted, Monitor{}).ok());
+    CHECK(s.duplicate_triangles == 1);
+    const Status c = prepare_surface(m, {}, s, true, PointNormals::trusted, cancelled);
+    CHECK(c.code == Code::cancelled);
+    CHECK(c.message == "surface: cancelled");
+    const Status t = prepare_surface(m, {}, s, true, PointNormals::trusted, spent);
+    CHECK(t.code == Code::time_limit);
+    CHECK(t.message == "time limit reached in surface");
 }
