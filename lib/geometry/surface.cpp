@@ -137,6 +137,13 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
         }
         std::vector<Vec3> given;
         if (out.normals_source == NormalSource::oriented && trust == PointNormals::trusted) given = normals;
+        // whether the caller's directions follow the PCA surface: orientation only flips signs, so
+        // one answer holds before and after it; computed once, and only when a rule below asks
+        int follows = -1;
+        auto directions_follow_surface = [&] {
+            if (follows < 0) follows = follows_surface(normals, estimate_normals(raw.vertices)) ? 1 : 0;
+            return follows == 1;
+        };
         if (out.normals_source != NormalSource::given)
             orient_normals(raw.vertices, normals, 16, out.normals_source == NormalSource::estimated);
         out.disagreement = out.normals_source == NormalSource::given ? out.disagreement_given
@@ -145,7 +152,7 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
         // directions follow the surface, disagree because of noise (neighbours' offsets then say
         // little about their signs), not because of wrong signs: the caller's normals are kept
         if (!given.empty() && !(out.disagreement < kSignCheckGain * out.disagreement_given) &&
-            follows_surface(given, estimate_normals(raw.vertices))) {
+            directions_follow_surface()) {
             normals = std::move(given);
             out.normals_source = NormalSource::given;
             out.disagreement = out.disagreement_given;
@@ -157,7 +164,7 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
         // so the pair rule would refuse usable clouds
         if (out.normals_source != NormalSource::estimated && !out.sign_check_inconclusive &&
             out.disagreement > kMaxSignDisagreement &&
-            !(trust == PointNormals::unoriented && follows_surface(normals, estimate_normals(raw.vertices))))
+            !(trust == PointNormals::unoriented && directions_follow_surface()))
             return fail(Code::invalid_input,
                         "the point cloud's normals could not be oriented consistently: after orientation " +
                             std::to_string(int(std::lround(100 * out.disagreement))) +

@@ -652,6 +652,16 @@ TEST_CASE("set cover: the fast effort gives valid covers, valid bounds and the s
     CHECK(optimal >= 30);      // and it mostly finds the optimum anyway
 }
 
+// run_cbc's answer on c is a proven minimum cover of `best` columns, with a bound no higher
+static void check_cbc_minimum(const Coverage& c, const sc::CbcOutcome& out, int best) {
+    REQUIRE(out.ok);
+    CHECK(out.has_solution);
+    CHECK(out.proven);
+    CHECK(int(out.solution.size()) == best);
+    CHECK(out.bound <= best + 1e-9);
+    CHECK(valid_cover(c, out.solution));
+}
+
 TEST_CASE("set cover: run_cbc reads its answer by rounding and reaches the brute-force minimum") {
     // CBC's column values come back as 0.9999999 as often as 1: a cover read by truncation
     // is no cover, and the instance's optimum would be lost.
@@ -664,12 +674,7 @@ TEST_CASE("set cover: run_cbc reads its answer by rounding and reaches the brute
         const sc::Problem P = to_problem(c);
         const sc::CbcOutcome out = sc::run_cbc(P, size_t(best) + 1, sc::CbcSettings{});
         INFO("instance " << t << " brute-force minimum " << best);
-        REQUIRE(out.ok);
-        CHECK(out.has_solution);
-        CHECK(out.proven);
-        CHECK(int(out.solution.size()) == best);
-        CHECK(out.bound <= best + 1e-9);
-        CHECK(valid_cover(c, out.solution));
+        check_cbc_minimum(c, out, best);
         // none smaller than the minimum exists: CBC proves it and returns no cover
         if (best >= 2) {
             const sc::CbcOutcome none = sc::run_cbc(P, size_t(best), sc::CbcSettings{});
@@ -708,12 +713,7 @@ TEST_CASE("set cover: run_cbc under every search setting reaches the brute-force
         for (size_t k = 0; k < settings.size(); ++k) {
             INFO("instance " << t << " setting " << k << " brute-force minimum " << best);
             const sc::CbcOutcome out = sc::run_cbc(P, c.n_balls + 1, settings[k]);
-            REQUIRE(out.ok);
-            CHECK(out.has_solution);
-            CHECK(out.proven);
-            CHECK(int(out.solution.size()) == best);
-            CHECK(out.bound <= best + 1e-9);
-            CHECK(valid_cover(c, out.solution));
+            check_cbc_minimum(c, out, best);
         }
     }
 }
