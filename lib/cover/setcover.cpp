@@ -76,7 +76,7 @@ Status check_coverage(const Coverage& cov, std::vector<uint32_t>& count) {
     for (size_t a = 0; a < n; ++a) {
         const uint32_t b = cov.ball_ptr[a], e = cov.ball_ptr[a + 1];
         if (e < b) return fail(Code::invalid_input, "set cover: malformed coverage (ball_ptr)");
-        if (!strictly_ascending(&cov.ball_samples[b], e - b))
+        if (!strictly_ascending(cov.ball_samples.data() + b, e - b))
             return fail(Code::invalid_input, "set cover: ball sample list not strictly ascending");
         if (e > b && cov.ball_samples[e - 1] >= m) return fail(Code::invalid_input, "set cover: sample index out of range");
     }
@@ -94,7 +94,7 @@ bool transpose_consistent(const Coverage& cov, const std::vector<uint32_t>& coun
         return false;
     for (size_t j = 0; j < m; ++j) {
         const uint32_t b = cov.sample_ptr[j], e = cov.sample_ptr[j + 1];
-        if (e < b || e - b != count[j] || !strictly_ascending(&cov.sample_balls[b], e - b)) return false;
+        if (e < b || e - b != count[j] || !strictly_ascending(cov.sample_balls.data() + b, e - b)) return false;
         if (e > b && cov.sample_balls[e - 1] >= n) return false;
     }
     return true;
