@@ -4,6 +4,7 @@
 #include "results.h"
 #include "struct_size.h"
 
+#include "target_count_hd.h"
 #include "target_error.h"
 
 #include <cmath>
@@ -12,6 +13,21 @@ using ca::Code;
 using ca::Status;
 using ca::Vec3;
 using namespace capi;
+
+namespace {
+
+// How the delta searches measure each probe: as ca_evaluate does with its defaults.
+ca::EvaluateOptions default_evaluation(int32_t threads) {
+    const ca_evaluate_options eo = defaults<ca_evaluate_options>();
+    ca::EvaluateOptions e;
+    e.surface_samples = eo.surface_samples;
+    e.envelope_samples = eo.envelope_samples;
+    e.seed = eo.seed;
+    e.threads = threads;
+    return e;
+}
+
+}  // namespace
 
 extern "C" {
 
@@ -33,6 +49,10 @@ ca_status ca_select(ca_context* ctx, const ca_candidate_set* set, const ca_selec
         if (!(std::isfinite(o.target_error) && o.target_error >= 0))
             return ca::fail(Code::invalid_argument, "target_error must be a finite number >= 0 (percent of the bbox diagonal; 0 = off)");
         const bool target_error = o.target_error > 0;  // the rest is checked by select_target_error
+        // target_count with the offset dilation on a set with a surface: the lowest HD within K
+        // balls (the scale dilation and caller arrays keep the plain smallest dilation)
+        const bool lowest_hd = !target_error && o.target_count > 0 && o.dilation == CA_DILATE_OFFSET &&
+                               !set->core.surface.mesh.vertices.empty();
         ca::SelectOptions so;
         so.dilation = static_cast<ca::Dilation>(o.dilation);
         so.delta = o.delta;
@@ -59,11 +79,7 @@ ca_status ca_select(ca_context* ctx, const ca_candidate_set* set, const ca_selec
             ca::TargetErrorOptions te;
             te.target_error = o.target_error;
             te.connect = connect_options(defaults<ca_connect_options>(), set->core, ctx->desc.threads);
-            const ca_evaluate_options eo = defaults<ca_evaluate_options>();
-            te.evaluate.surface_samples = eo.surface_samples;
-            te.evaluate.envelope_samples = eo.envelope_samples;
-            te.evaluate.seed = eo.seed;
-            te.evaluate.threads = ctx->desc.threads;
+            te.evaluate = default_evaluation(ctx->desc.threads);
             ca::TargetErrorResult ter;
             st = ca::select_target_error(set->core, so, te, ctx->monitor(), ter);
             if (!st.ok()) return st;
@@ -72,6 +88,15 @@ ca_status ca_select(ca_context* ctx, const ca_candidate_set* set, const ca_selec
             if (!ter.reached)
                 ctx->log(2, "target_error " + std::to_string(o.target_error) + " % not reached: the lowest HD found is " +
                                 std::to_string(hd_reached) + " %");
+        } else if (lowest_hd) {
+            ca::TargetCountHdOptions tc;
+            tc.connect = connect_options(defaults<ca_connect_options>(), set->core, ctx->desc.threads);
+            tc.evaluate = default_evaluation(ctx->desc.threads);
+            ca::TargetCountHdResult tcr;
+            st = ca::select_target_count_hd(set->core, so, tc, ctx->monitor(), tcr);
+            if (!st.ok()) return st;
+            r.core = std::move(tcr.selection);
+            hd_reached = tcr.evaluation.hd_two_sided;
         } else {
             st = ca::select_balls(set->core, so, ctx->monitor(), r.core);
             if (!st.ok()) return st;

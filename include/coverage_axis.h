@@ -271,9 +271,11 @@ typedef struct ca_select_options {
     const uint8_t* ignorable_samples; /* sample_count entries: need not be covered */
     const uint8_t* forced_in;         /* ball_count entries: must be selected */
     const uint8_t* forced_out;        /* ball_count entries: must not be selected */
-    uint32_t target_count;       /* 0 (default): off. K > 0: at most K balls with the smallest dilation
+    uint32_t target_count;       /* 0 (default): off. K > 0: at most K balls. The smallest dilation
                                     (delta, or scale) that achieves it, found by bisection starting
-                                    from the delta/scale above; see README for the guarantee */
+                                    from the delta/scale above; with the offset dilation on a mesh or
+                                    a cloud, then the lowest two-sided HD among 9 deltas from that
+                                    one (docs/fidelity.md: what it guarantees; stats hd_reached) */
     double target_tolerance;     /* bisection tolerance on delta (fraction of L) or scale; default 1e-4 */
     uint32_t divide_threshold;   /* more samples than this: divide and conquer (paper 8.1);
                                     default 100000; 0 = never */
@@ -318,16 +320,17 @@ typedef struct ca_select_stats {
     double time_total_s;         /* including the coverage matrix */
     uint64_t rows_before, cols_before, rows_after, cols_after, forced;
     uint64_t components;         /* independent parts of the reduced problem */
-    uint64_t probes;             /* set-cover solves (target_count: one per bisection step;
+    uint64_t probes;             /* set-cover solves (target_count: one per bisection step and HD probe;
                                     target_error: one per select + connect + evaluate probe) */
     uint64_t parts;              /* divide and conquer: spatial parts (0 = not used) */
     double scale_used;           /* the scale factor used (CA_DILATE_SCALE), else 0 */
     double time_coverage_s;      /* ABI 2: building the coverage matrix (part of time_total_s) */
     uint64_t cbc_components;     /* ABI 2: components of the kernel that needed CBC */
     uint64_t rowgen_rounds;      /* ABI 2: row-generation rounds (sub-problems solved) */
-    double hd_reached;           /* ABI 2 (appended after rowgen_rounds). target_error: the two-sided HD of the
-                                    returned selection, % of the bbox diagonal (above target_error when
-                                    no probed delta reached it); -1 when not measured */
+    double hd_reached;           /* ABI 2 (appended after rowgen_rounds). target_error, or target_count
+                                    searched by HD: the two-sided HD of the returned selection, % of the
+                                    bbox diagonal (above target_error when no probed delta reached it);
+                                    -1 when not measured */
 } ca_select_stats;
 
 CA_API ca_status ca_selection_stats(const ca_selection* selection, ca_select_stats* stats);

@@ -349,8 +349,10 @@ Outcome run_pipeline(const std::string& input, const RunOptions& o, const Output
     j["output"] = out.ma;
     j["outputs"] = outputs_json(out);
     if (evaluate_run) add_evaluation(j, ev);
-    if (ss.hd_reached >= 0) j["hd_reached"] = ss.hd_reached;
-    else if (o.select.target_count > 0) j["hd_reached"] = ev.hd_two_sided;
+    // --target-count: the HD of what was written (the library's search measured the default
+    // connection without fit, which --fit or --connect change)
+    if (o.select.target_count > 0) j["hd_reached"] = ev.hd_two_sided;
+    else if (ss.hd_reached >= 0) j["hd_reached"] = ss.hd_reached;
     else j["hd_reached"] = nullptr;
     j["time_s"] = {{"read", round4(t_read)},         {"candidates", round4(t_candidates)}, {"select", round4(t_select)},
                    {"connect", round4(t_connect)}, {"write", round4(t_write)},           {"evaluate", round4(t_evaluate)},

@@ -129,7 +129,8 @@ void add_run_options(CLI::App& app, RunOptions& o) {
     app.add_option("--time-limit", o.select.time_limit_s,
                    "budget of the whole run in seconds, the exact solver's included (<= 0: none)")
         ->capture_default_str()->group(cover);
-    app.add_option("--target-count", o.select.target_count, "at most K balls, with the smallest delta (or scale) that achieves it (0 = off)")
+    app.add_option("--target-count", o.select.target_count, "at most K balls: the lowest two-sided HD among 9 deltas from the smallest that achieves it "
+                   "(--scale: the smallest scale; 0 = off; docs/fidelity.md)")
         ->capture_default_str()->check(CLI::Range(0u, 100000000u))->group(cover);
     app.add_option("--target-error", o.select.target_error,
                    "the fewest balls whose two-sided Hausdorff distance is at most E % of the bbox diagonal, by a "

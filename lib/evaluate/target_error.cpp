@@ -10,14 +10,6 @@ namespace ca {
 
 namespace {
 
-// One probe with everything it produced, kept while it is the best so far.
-struct Probe {
-    TargetErrorProbe summary;
-    Selection selection;
-    Skeleton skeleton;
-    EvaluateResult evaluation;
-};
-
 // The better of two probes: passing first, then (both passing) fewer balls, lower HD, larger
 // delta; (both failing) lower HD, then fewer balls.
 bool better(const TargetErrorProbe& a, const TargetErrorProbe& b) {
@@ -54,7 +46,7 @@ Status select_target_error(const CandidateSet& set, const SelectOptions& opt, co
     if (te.max_probes == 0) return fail(Code::invalid_argument, "max_probes must be at least 1");
 
     SelectOptions probe_opt = opt;
-    Probe best;
+    DeltaProbe best;
     bool have_best = false;
     uint32_t runs = 0;  // probes run, those without a cover included
     // Runs one probe at delta d. Returns false with `st` set when the search must stop: an error
@@ -63,18 +55,16 @@ Status select_target_error(const CandidateSet& set, const SelectOptions& opt, co
     auto probe = [&](double d, bool& passed, bool& uncoverable, Status& st) {
         uncoverable = false;
         ++runs;
-        Probe p;
+        DeltaProbe p;
         probe_opt.delta = d;
-        st = select_balls(set, probe_opt, monitor, p.selection);
-        if (st.ok()) st = connect_balls(set, p.selection, te.connect, monitor, p.skeleton);
-        if (st.ok()) st = evaluate(set.surface.mesh, p.skeleton, te.evaluate, monitor, p.evaluation);
+        st = probe_delta(set, probe_opt, te.connect, te.evaluate, monitor, p);
         if (st.code == Code::uncoverable) {
             uncoverable = true;
             st = Status::success();
             return true;
         }
         if (!st.ok()) return false;
-        p.summary = {d, p.selection.indices.size(), p.evaluation.hd_two_sided, p.evaluation.hd_two_sided <= te.target_error};
+        p.summary.passed = p.summary.hd <= te.target_error;
         out.probes.push_back(p.summary);
         passed = p.summary.passed;
         if (!have_best || better(p.summary, best.summary)) {

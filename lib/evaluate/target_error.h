@@ -16,10 +16,7 @@
 // holds between probes. With an optimal solver the cover size is non-increasing in delta, so
 // the largest passing delta found usually carries the fewest balls.
 #pragma once
-#include "candidates.h"
-#include "connect.h"
-#include "evaluate.h"
-#include "selection.h"
+#include "delta_probe.h"
 
 namespace ca {
 
@@ -28,13 +25,6 @@ struct TargetErrorOptions {
     ConnectOptions connect;       // how each probe is connected (the caller's or the defaults)
     EvaluateOptions evaluate;     // how each probe is measured (ca_evaluate's defaults)
     uint32_t max_probes = 14;     // select + connect + evaluate runs, at most
-};
-
-struct TargetErrorProbe {
-    double delta = 0;             // internal units (fraction of the longest bbox side)
-    size_t balls = 0;
-    double hd = 0;                // two-sided HD, percent of the diagonal
-    bool passed = false;          // hd <= target_error
 };
 
 struct TargetErrorResult {

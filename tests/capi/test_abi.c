@@ -376,6 +376,7 @@ static void test_routes_and_target(void) {
     CHECK(ca_selection_stats(small, &small_stats) == CA_OK);
     CHECK(ca_selection_count(small) <= so.target_count);
     CHECK(small_stats.delta_absolute > full_stats.delta_absolute && small_stats.probes > 1);
+    CHECK(small_stats.hd_reached > 0); /* a mesh: the lowest-HD search measured it */
     so.target_tolerance = 0;
     ca_selection_destroy(small);
     small = NULL;

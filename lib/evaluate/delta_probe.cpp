@@ -1,0 +1,19 @@
+// delta_probe.cpp: select + connect + evaluate at one delta (delta_probe.h).
+#include "delta_probe.h"
+
+namespace ca {
+
+Status probe_delta(const CandidateSet& set, const SelectOptions& opt, const ConnectOptions& connect,
+                   const EvaluateOptions& evaluate_opt, const Monitor& monitor, DeltaProbe& out) {
+    out = DeltaProbe{};
+    Status st = select_balls(set, opt, monitor, out.selection);
+    if (st.ok()) st = connect_balls(set, out.selection, connect, monitor, out.skeleton);
+    if (st.ok()) st = evaluate(set.surface.mesh, out.skeleton, evaluate_opt, monitor, out.evaluation);
+    if (!st.ok()) return st;
+    out.summary.delta = out.selection.delta;
+    out.summary.balls = out.selection.indices.size();
+    out.summary.hd = out.evaluation.hd_two_sided;
+    return st;
+}
+
+}  // namespace ca

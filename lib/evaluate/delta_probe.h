@@ -1,0 +1,33 @@
+// delta_probe.h: one probe of the delta searches (target_error.h, target_count_hd.h): select at
+// one offset delta on a candidate set, connect, evaluate against the set's surface, so that every
+// search measures its candidates exactly as ca_connect + ca_evaluate would.
+#pragma once
+#include "candidates.h"
+#include "connect.h"
+#include "evaluate.h"
+#include "selection.h"
+
+namespace ca {
+
+struct TargetErrorProbe {
+    double delta = 0;             // internal units (fraction of the longest bbox side)
+    size_t balls = 0;
+    double hd = 0;                // two-sided HD, percent of the diagonal
+    bool passed = false;          // target_error: hd <= E; target_count: balls <= K
+};
+
+// One probe with everything it produced (kept by a search while it is the best so far).
+struct DeltaProbe {
+    TargetErrorProbe summary;     // delta, balls and hd set; passed left to the search
+    Selection selection;
+    Skeleton skeleton;
+    EvaluateResult evaluation;
+};
+
+// Selects with `opt` at opt.delta (opt.target_count as given: 0 for one solve), connects with
+// `connect` and evaluates with `evaluate` against set.surface.mesh. The first failing step's
+// status is returned (Code::uncoverable when no cover exists at that delta).
+Status probe_delta(const CandidateSet& set, const SelectOptions& opt, const ConnectOptions& connect,
+                   const EvaluateOptions& evaluate, const Monitor& monitor, DeltaProbe& out);
+
+}  // namespace ca
