@@ -51,6 +51,9 @@ struct CandidateSet {
     // surface.mesh afterwards must reset them.
     std::shared_ptr<const WindingNumber> winding;
     std::shared_ptr<const MeshDistance> distance;
+    // Open meshes: the distance to the hole caps (hole_caps.h), null when there are none; the
+    // connection step's envelope rule keeps elements from bulging out through the caps.
+    std::shared_ptr<const MeshDistance> cap_distance;
     // Point clouds: the winding number of the (de-duplicated, oriented) points, the inside test
     // of the candidates, the fallback balls and the connection step.
     std::shared_ptr<const PointCloudWinding> cloud_winding;
