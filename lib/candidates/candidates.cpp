@@ -56,7 +56,7 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
         // while the trees are built (its own member of `built`)
         {
             const Mesh caps = hole_caps(mesh, monitor);   // stopped: the sampling below stops too
-            if (!caps.triangles.empty()) built.cap_distance = std::make_unique<const MeshDistance>(caps);
+            if (!caps.triangles.empty()) built.cap_distance = std::make_shared<const MeshDistance>(caps);
         }
         if (!sample_surface(mesh, opt.cover_samples, stream_seed(opt.seed, 1), out.cover_samples, monitor))
             st = monitor.stop_status("sampling");
@@ -74,6 +74,7 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
             if (monitor.stopped()) st = monitor.stop_status("fallback balls");
             out.winding = std::move(built.winding);
             out.distance = std::move(built.distance);
+            out.cap_distance = std::move(built.cap_distance);
         }
         if (st.ok() && opt.connect_samples > 0)
             out.connect_samples = sample_surface(out.surface.mesh, opt.connect_samples, stream_seed(opt.seed, 4));

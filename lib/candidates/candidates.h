@@ -8,6 +8,7 @@
 #pragma once
 #include "common.h"
 #include "delaunay.h"
+#include "hole_caps.h"
 #include "surface.h"
 
 #include <memory>
@@ -50,6 +51,9 @@ struct CandidateSet {
     // surface.mesh afterwards must reset them.
     std::shared_ptr<const WindingNumber> winding;
     std::shared_ptr<const MeshDistance> distance;
+    // Open meshes: the distance to the hole caps (hole_caps.h), null when there are none; the
+    // connection step's envelope rule keeps elements from bulging out through the caps.
+    std::shared_ptr<const MeshDistance> cap_distance;
     // Point clouds: the winding number of the (de-duplicated, oriented) points, the inside test
     // of the candidates, the fallback balls and the connection step.
     std::shared_ptr<const PointCloudWinding> cloud_winding;
@@ -83,11 +87,9 @@ size_t add_fallback_balls(CandidateSet& set, const WindingNumber& winding, const
 size_t add_cloud_fallback_balls(CandidateSet& set, const PointCloudWinding& winding, const std::vector<Vec3>& normals,
                                 int threads = 0, const Monitor& monitor = Monitor{});
 
-// Open meshes (hole_caps.cpp): every closed boundary loop is capped by a fan from its
-// centroid (for distances only) and every candidate's radius is clamped to its distance to the
-// caps, so no ball reaches out through a hole. Closed meshes are unchanged. False if cancelled.
-// hole_caps gives no caps when `monitor` stopped its welding: the caller tests monitor.stopped().
-Mesh hole_caps(const Mesh& mesh, const Monitor& monitor = Monitor{});
+// Open meshes (hole_caps.cpp): every candidate's radius is clamped to its distance to the hole
+// caps (geometry/hole_caps.h: every closed boundary loop capped by a fan from its centroid), so no
+// ball reaches out through a hole. Closed meshes are unchanged. False if cancelled.
 bool clamp_to_hole_caps(CandidateSet& set, const MeshDistance& caps, int threads, const Monitor& monitor);
 
 }  // namespace ca

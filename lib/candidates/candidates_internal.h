@@ -29,7 +29,7 @@ constexpr double kDuplicateTolerance = 1e-7;   // internal units (1e-7 of the lo
 struct SurfaceStructures {
     std::shared_ptr<const WindingNumber> winding;
     std::shared_ptr<const MeshDistance> distance;
-    std::unique_ptr<const MeshDistance> cap_distance;   // null when the mesh has no holes
+    std::shared_ptr<const MeshDistance> cap_distance;   // null when the mesh has no holes
     // The build stops early on a cancel, the time limit or `abandon` (the step failed meanwhile);
     // then `stopped` is set and the structures must not be used.
     std::atomic<bool> abandon{false};

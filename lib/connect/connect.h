@@ -34,7 +34,8 @@
 //    element's reconstruction to stay in the shape: at each test point the interpolated ball
 //    (radius interpolated like the centre) must have distance to the surface >= radius - delta
 //    (a cone or slab bridging a concave gap, e.g. between fingers, bulges out of the shape and
-//    would spoil the Hausdorff distance). Reconnection uses the centre-line rule only, so that a
+//    would spoil the Hausdorff distance); on an open mesh also distance to the hole caps
+//    (hole_caps.h) >= radius - delta (balls touching a curved cap span slabs that cross it). Reconnection uses the centre-line rule only, so that a
 //    connected shape keeps a connected skeleton; it accepts test points at most delta/4 outside
 //    the surface (a low-poly limb bends between its balls, and a stricter rule would leave its
 //    end isolated).

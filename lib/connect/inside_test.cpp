@@ -1,4 +1,5 @@
-// inside_test.cpp: the inside test for skeleton elements (InsideTest, rule in connect.h).
+// inside_test.cpp: the inside test for skeleton elements (InsideTest, rule in connect.h). On an
+// open mesh the envelope rule also holds against the hole caps (hole_caps.h).
 // An element is tested at hundreds of grid points; most of the cost is the winding number and the
 // distance to the surface at each. Two exact shortcuts skip most of those queries without
 // changing any decision (a cache of "probes" per element, points where the exact distance d to
@@ -14,6 +15,7 @@
 
 #include "bvh.h"
 #include "distance.h"
+#include "hole_caps.h"
 #include "kdtree.h"
 #include "point_winding.h"
 #include "winding.h"
@@ -75,6 +77,7 @@ bool closed_mesh(const Mesh& mesh) {
 struct InsideTest::Impl {
     std::shared_ptr<const WindingNumber> winding;   // meshes only (the candidate set's, if it has them)
     std::shared_ptr<const MeshDistance> distance;   // meshes only (envelope rule, shortcuts)
+    std::shared_ptr<const MeshDistance> caps;       // open meshes: the hole caps (envelope rule)
     bool closed = false;                      // winding number integer-valued (shortcut allowed)
     std::shared_ptr<const PointCloudWinding> cloud_winding;   // point clouds (the candidate set's)
     std::vector<Vec3> centers;                // the candidate balls (point clouds without a winding number)
@@ -146,6 +149,13 @@ InsideTest::InsideTest(const CandidateSet& set) : impl_(std::make_unique<Impl>()
         impl_->winding = set.winding ? set.winding : std::make_shared<const WindingNumber>(set.surface.mesh);
         impl_->distance = set.distance ? set.distance : std::make_shared<const MeshDistance>(set.surface.mesh);
         impl_->closed = closed_mesh(set.surface.mesh);
+        // the candidate step's caps when it built the structures, else the mesh's own
+        if (set.distance) {
+            impl_->caps = set.cap_distance;
+        } else if (!impl_->closed) {
+            const Mesh caps = hole_caps(set.surface.mesh);
+            if (!caps.triangles.empty()) impl_->caps = std::make_shared<const MeshDistance>(caps);
+        }
         return;
     }
     impl_->cloud_winding = set.cloud_winding;
@@ -181,6 +191,8 @@ bool InsideTest::point_ok(Probes* probes, const Vec3& p, double r, double tol, d
     if (tol >= 0 && probes) {
         const double need = r - tol;
         if (need > 0 && !probes->distance_at_least(p, need)) return false;
+        // the hole caps bound the element as the surface does: nothing bulges out through a hole
+        if (need > 0 && impl_->caps && impl_->caps->distance_below(p, need) < need) return false;
     }
     for (int i = 0; i < n_own; ++i)
         if (in_ball(p, *own[i])) return true;

@@ -1,6 +1,7 @@
 // surface.cpp: validation and normalisation of the caller's mesh or oriented point cloud.
 #include "surface.h"
 #include "duplicates.h"
+#include "hole_caps.h"
 #include "normals.h"
 #include "winding.h"
 
@@ -116,8 +117,13 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
         out.dropped_triangles += raw.triangles.size() - kept.size();
         if (kept.empty()) return fail(Code::degenerate_input, "every triangle has zero area");
         raw.triangles = std::move(kept);
-        // an inward-facing mesh has negative signed volume: flip it so inside means w > 1/2
-        if (signed_volume(raw) < 0) {
+        // an inward-facing mesh has negative signed volume: flip it so inside means w > 1/2. An
+        // open mesh's signed volume depends on the origin (a large hole facing away from it can
+        // turn its sign), so it is taken with the holes capped (hole_caps.h: oriented like the
+        // mesh; closed meshes have no caps)
+        const Mesh caps = hole_caps(raw, monitor);
+        if (monitor.stopped()) return monitor.stop_status("surface");
+        if (signed_volume(raw) + signed_volume(caps) < 0) {
             for (Tri& t : raw.triangles) std::swap(t[1], t[2]);
             out.flipped = true;
         }

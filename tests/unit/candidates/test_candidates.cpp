@@ -81,6 +81,46 @@ TEST_CASE("Voronoi candidates are empty balls: radius <= distance to the nearest
     }
 }
 
+TEST_CASE("open mesh: oriented by the signed volume with its holes capped (a horn open away from the origin)") {
+    // A horn around the x axis, radius (x / 2)^2 for x in [0, 2], closed by a flat lid at x = 2.
+    // Without the lid its signed volume about the bbox corner is pi 2/5 - pi 2/3 < 0 although it
+    // faces outward: deciding by it flips the outward horn and keeps the inward one, and then no
+    // point is inside (winding number below 1/2 everywhere).
+    const ca::Mesh closed = shapes::revolve(
+        [](double t) {
+            if (t <= 0.9) return std::pair<double, double>{std::min(2.0, 2 * t / 0.9), (t / 0.9) * (t / 0.9)};
+            return std::pair<double, double>{2.0, (1 - t) / 0.1};
+        },
+        40, 32);
+    ca::Mesh open = closed;
+    open.triangles.clear();
+    for (const ca::Tri& t : closed.triangles)
+        if (std::min({closed.vertices[t[0]].x(), closed.vertices[t[1]].x(), closed.vertices[t[2]].x()}) < 1.999)
+            open.triangles.push_back(t);
+    REQUIRE(open.triangles.size() < closed.triangles.size());
+    CHECK(ca::signed_volume(open) < 0);
+    // the caps are the lid, oriented like the mesh: the capped volume is the closed horn's
+    const ca::Mesh caps = ca::hole_caps(open);
+    CHECK(caps.triangles.size() == 32);
+    CHECK(ca::signed_volume(open) + ca::signed_volume(caps) == doctest::Approx(ca::signed_volume(closed)).epsilon(1e-9));
+    ca::Mesh inward = open;
+    for (ca::Tri& t : inward.triangles) std::swap(t[1], t[2]);
+    for (const ca::Mesh* m : {static_cast<const ca::Mesh*>(&open), static_cast<const ca::Mesh*>(&inward)}) {
+        CAPTURE(m == &inward);
+        ca::Surface surface;
+        REQUIRE(ca::prepare_surface(*m, {}, surface).ok());
+        CHECK(surface.flipped == (m == &inward));
+        ca::CandidateSet set;
+        const ca::Status st = ca::generate_candidates(std::move(surface), {}, ca::Monitor{}, set);
+        REQUIRE_MESSAGE(st.ok(), st.message);
+        CHECK(set.balls.size() > 100);
+        // no ball beyond the rim's plane (x = 1 in internal units: the horn is 2 long)
+        double beyond = -1;
+        for (const ca::Ball& b : set.balls) beyond = std::max(beyond, b.center.x() + b.radius - 1.0);
+        CHECK(beyond < 0.005);
+    }
+}
+
 TEST_CASE("open mesh: no candidate ball reaches out through a hole; closed meshes are unchanged") {
     // A sphere (axis x) without its cap beyond x = 0.6 R: Voronoi balls under the hole would reach
     // R - 0.6 R = 0.2 of the diameter beyond the hole's plane (the fallback balls too).
