@@ -35,6 +35,17 @@ public:
     size_t nearest(const Vec3& q, size_t k, size_t* idx, double* dist2) const {
         return tree_.knnSearch(q.data(), k, idx, dist2);
     }
+    // The nearest point when one lies at squared distance below bound2: the search prunes by that
+    // bound from the start (fewer nodes visited), and the squared distance is nearest()'s; false
+    // when no point is that close.
+    bool nearest_below(const Vec3& q, double bound2, size_t* idx, double* dist2) const {
+        if (adaptor_.pts->empty()) return false;
+        nanoflann::KNNResultSet<double, size_t, size_t> found(1);
+        found.init(idx, dist2);
+        *dist2 = bound2;
+        tree_.findNeighbors(found, q.data(), nanoflann::SearchParams());
+        return found.size() == 1;
+    }
     // Distance to the nearest point (+infinity for an empty set).
     double distance(const Vec3& q) const {
         size_t idx = 0;
