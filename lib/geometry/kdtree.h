@@ -31,6 +31,26 @@ public:
         hits.clear();
         tree_.radiusSearch(q.data(), radius2, hits, nanoflann::SearchParams(32, 0, false));
     }
+    // f(index) for the points with squared distance below radius2, in the order within_squared
+    // lists them (no list built); returns how many.
+    template <class F>
+    size_t for_each_within_squared(const Vec3& q, double radius2, F&& f) const {
+        struct Visit {   // a nanoflann result set that hands each hit to f
+            double radius;
+            F& f;
+            size_t count = 0;
+            void init() {}
+            size_t size() const { return count; }
+            bool full() const { return true; }
+            bool addPoint(double dist, size_t index) {
+                if (dist < radius) { f(index); ++count; }
+                return true;
+            }
+            double worstDist() const { return radius; }
+        } visit{radius2, f};
+        tree_.findNeighbors(visit, q.data(), nanoflann::SearchParams(32, 0, false));
+        return visit.count;
+    }
     // k nearest points; returns how many were found.
     size_t nearest(const Vec3& q, size_t k, size_t* idx, double* dist2) const {
         return tree_.knnSearch(q.data(), k, idx, dist2);
