@@ -41,13 +41,17 @@ Status voronoi_vertices(const std::vector<Vec3>& pts, int threads, const Monitor
     }
     // A Voronoi ball is empty: its radius is the distance to the nearest sample. Near-flat
     // tetrahedra (joggled or co-spherical samples) can give circumradii larger than that, i.e.
-    // balls that stick out of the shape; clamp them.
+    // balls that stick out of the shape; clamp them. The tetrahedron's first corner lies at the
+    // circumradius, so the nearest sample is no farther: the search starts pruned by that bound
+    // (widened far beyond rounding), with the plain search as a fallback.
     PointTree sample_tree(pts);
     if (!parallel_for(raw.size(), threads, 8192, monitor, "delaunay", [&](size_t begin, size_t end) {
             for (size_t i = begin; i < end; ++i) {
                 size_t idx;
                 double d2;
-                if (sample_tree.nearest(raw[i].center, 1, &idx, &d2) == 1)
+                const double bound2 = raw[i].radius * raw[i].radius * (1 + 1e-9);
+                if (sample_tree.nearest_below(raw[i].center, bound2, &idx, &d2) ||
+                    sample_tree.nearest(raw[i].center, 1, &idx, &d2) == 1)
                     raw[i].radius = std::min(raw[i].radius, std::sqrt(d2));
             }
         }))

@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace ca {
 
@@ -135,8 +136,17 @@ private:
         }
         return pr.in == 1;
     }
+    // The exact distance at p. It is at most d(q) + |p - q| for every probe q (1-Lipschitz), so the
+    // nearest-triangle search starts pruned by the smallest such bound (widened far beyond
+    // rounding): it then finds the same closest triangle, hence the same value, as the unbounded
+    // search, which remains the fallback when nothing lies below the bound.
     Probe& add(const Vec3& p) {
-        const double d = impl_.distance->distance(p);
+        double bound = std::numeric_limits<double>::infinity();
+        const size_t stop = probes_.size() > kProbeWindow ? probes_.size() - kProbeWindow : 0;
+        for (size_t i = probes_.size(); i-- > stop;) bound = std::min(bound, probes_[i].d + (p - probes_[i].q).norm());
+        const double upper = bound * (1 + 1e-9) + kProbeMargin;
+        double d = std::isfinite(upper) ? impl_.distance->distance_below(p, upper) : upper;
+        if (!(d < upper)) d = impl_.distance->distance(p);
         probes_.push_back({p, d * d, d, -1});
         return probes_.back();
     }

@@ -60,13 +60,12 @@ Status build_coverage(const std::vector<Vec3>& samples, const std::vector<Vec3>&
                 Range& rg = ranges[w];
                 rg.begin = std::min(stop, start + w * chunk);
                 rg.end = std::min(stop, rg.begin + chunk);
-                std::vector<std::pair<size_t, double>> hits;
                 for (size_t i = rg.begin; i < rg.end; ++i) {
                     // the covers rule (coverage.h); unsorted hits: the lists are put in
                     // ascending order once, at the end
-                    tree.within_squared(centers[i], covered_radius2(dilated_radii[i]), hits);
-                    for (const auto& h : hits) rg.samples.push_back(uint32_t(h.first));
-                    rg.sizes.push_back(uint32_t(hits.size()));
+                    const size_t hits = tree.for_each_within_squared(
+                        centers[i], covered_radius2(dilated_radii[i]), [&](size_t j) { rg.samples.push_back(uint32_t(j)); });
+                    rg.sizes.push_back(uint32_t(hits));
                 }
             };
             // a worker thread that cannot be started does its range here: the same arrays; a

@@ -44,44 +44,83 @@ struct Expansion {
     }
 };
 
-// An Expansion as a tree stores it: Q[i] is symmetric (a sum of area-scaled symmetric second
-// moments, shifted by symmetric terms), so six of its nine entries are kept and the other three
-// copied back exactly; `reach2` = (beta * radius)^2, the squared distance beyond which it is used.
-struct FarField {
+// An Expansion's moments kept while a tree is built bottom-up (a parent shifts its children's):
+// Q[i] is symmetric (a sum of area-scaled symmetric second moments, shifted by symmetric terms),
+// so six of its nine entries are kept and the other three copied back exactly.
+struct Moments {
     Vec3 centre = Vec3::Zero();
-    double reach2 = 0;
     Vec3 N = Vec3::Zero();
     Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
     double Q[3][6] = {};   // (0,0) (0,1) (0,2) (1,1) (1,2) (2,2)
 
-    FarField() = default;
-    FarField(const Expansion& e, double beta)
-        : centre(e.centre), reach2(beta * beta * e.radius * e.radius), N(e.N), M(e.M) {
+    Moments() = default;
+    explicit Moments(const Expansion& e) : centre(e.centre), N(e.N), M(e.M) {
         for (int k = 0; k < 3; ++k) {
             const Eigen::Matrix3d& q = e.Q[k];
             const double v[6] = {q(0, 0), q(0, 1), q(0, 2), q(1, 1), q(1, 2), q(2, 2)};
             std::copy(v, v + 6, Q[k]);
         }
     }
-    void full_Q(Eigen::Matrix3d* out) const {
-        for (int k = 0; k < 3; ++k) {
-            const double* v = Q[k];
-            out[k] << v[0], v[1], v[2], v[1], v[3], v[4], v[2], v[4], v[5];
-        }
-    }
-    // The expansion's moments (radius 0: only eval and the parent shift read them).
+    // The expansion (radius 0: only eval and the parent shift read it).
     Expansion full() const {
         Expansion e;
         e.centre = centre;
         e.N = N;
         e.M = M;
-        full_Q(e.Q);
+        for (int k = 0; k < 3; ++k) {
+            const double* v = Q[k];
+            e.Q[k] << v[0], v[1], v[2], v[1], v[3], v[4], v[2], v[4], v[5];
+        }
         return e;
     }
+};
+
+// An Expansion as a tree stores it for queries: the three terms collected into one polynomial in
+// r = centre - q, omega = inv3 (N.r + tr M) + inv5 (A(r) + b.r) + inv7 C(r) with inv = 1 / |r|:
+// A the quadratic form -3 r^T M r (6 coefficients), b the linear part -3/2 (2 diag Q + tr Q) of
+// the second-order term, C the cubic form 15/2 sum_i r_i r^T Q_i r (10 coefficients, Q_i's entries
+// summed per monomial). The same value as Expansion::eval up to rounding, at a third of the
+// arithmetic and memory; `reach2` = (beta * radius)^2, the squared distance beyond which it is used.
+struct FarField {
+    Vec3 centre = Vec3::Zero();
+    double reach2 = 0;
+    double n[3] = {}, trace_m = 0;   // N and tr M
+    double a[6] = {};                // xx xy xz yy yz zz
+    double b[3] = {};
+    double c[10] = {};               // xxx xxy xxz xyy xyz xzz yyy yyz yzz zzz
+
+    FarField() = default;
+    FarField(const Expansion& e, double beta) : centre(e.centre), reach2(beta * beta * e.radius * e.radius) {
+        for (int i = 0; i < 3; ++i) {
+            n[i] = e.N[i];
+            trace_m += e.M(i, i);
+        }
+        // monomial index of r_i r_j (i <= j) and of r_i r_j r_k (i <= j <= k), in the orders above
+        const int quad[3][3] = {{0, 1, 2}, {1, 3, 4}, {2, 4, 5}};
+        auto cubic = [](int i, int j, int k) {
+            int v[3] = {i, j, k};
+            std::sort(v, v + 3);
+            static constexpr int first[3] = {0, 6, 9};   // monomials starting with x, y, z
+            static constexpr int second[3][3] = {{0, 3, 5}, {0, 0, 2}, {0, 0, 0}};
+            return first[v[0]] + second[v[0]][v[1]] + (v[2] - v[1]);
+        };
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) {
+                a[quad[i][j]] += -3.0 * e.M(i, j);
+                b[j] += -3.0 * e.Q[i](i, j) - 1.5 * (i == j ? e.Q[j].trace() : 0.0);
+                for (int k = 0; k < 3; ++k) c[cubic(i, j, k)] += 7.5 * e.Q[i](j, k);
+            }
+    }
     double eval(const Vec3& q) const {
-        Eigen::Matrix3d full[3];
-        full_Q(full);
-        return Expansion::eval_terms(centre, N, M, full, q);
+        const double x = centre[0] - q[0], y = centre[1] - q[1], z = centre[2] - q[2];
+        const double inv2 = 1.0 / (x * x + y * y + z * z), inv = std::sqrt(inv2), inv3 = inv * inv2;
+        const double xx = x * x, xy = x * y, xz = x * z, yy = y * y, yz = y * z, zz = z * z;
+        const double t1 = n[0] * x + n[1] * y + n[2] * z + trace_m;
+        const double t2 = a[0] * xx + a[1] * xy + a[2] * xz + a[3] * yy + a[4] * yz + a[5] * zz +
+                          b[0] * x + b[1] * y + b[2] * z;
+        const double t3 = x * (c[0] * xx + c[1] * xy + c[2] * xz + c[3] * yy + c[4] * yz + c[5] * zz) +
+                          y * (c[6] * yy + c[7] * yz + c[8] * zz) + z * (c[9] * zz);
+        return inv3 * (t1 + inv2 * (t2 + inv2 * t3));
     }
 };
 

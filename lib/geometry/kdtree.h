@@ -31,9 +31,40 @@ public:
         hits.clear();
         tree_.radiusSearch(q.data(), radius2, hits, nanoflann::SearchParams(32, 0, false));
     }
+    // f(index) for the points with squared distance below radius2, in the order within_squared
+    // lists them (no list built); returns how many.
+    template <class F>
+    size_t for_each_within_squared(const Vec3& q, double radius2, F&& f) const {
+        struct Visit {   // a nanoflann result set that hands each hit to f
+            double radius;
+            F& f;
+            size_t count = 0;
+            void init() {}
+            size_t size() const { return count; }
+            bool full() const { return true; }
+            bool addPoint(double dist, size_t index) {
+                if (dist < radius) { f(index); ++count; }
+                return true;
+            }
+            double worstDist() const { return radius; }
+        } visit{radius2, f};
+        tree_.findNeighbors(visit, q.data(), nanoflann::SearchParams(32, 0, false));
+        return visit.count;
+    }
     // k nearest points; returns how many were found.
     size_t nearest(const Vec3& q, size_t k, size_t* idx, double* dist2) const {
         return tree_.knnSearch(q.data(), k, idx, dist2);
+    }
+    // The nearest point when one lies at squared distance below bound2: the search prunes by that
+    // bound from the start (fewer nodes visited), and the squared distance is nearest()'s; false
+    // when no point is that close.
+    bool nearest_below(const Vec3& q, double bound2, size_t* idx, double* dist2) const {
+        if (adaptor_.pts->empty()) return false;
+        nanoflann::KNNResultSet<double, size_t, size_t> found(1);
+        found.init(idx, dist2);
+        *dist2 = bound2;
+        tree_.findNeighbors(found, q.data(), nanoflann::SearchParams());
+        return found.size() == 1;
     }
     // Distance to the nearest point (+infinity for an empty set).
     double distance(const Vec3& q) const {

@@ -86,6 +86,7 @@ WindingNumber::WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, d
     m.exp.resize(m.bvh.nodes.size());
     std::vector<double> weight(m.bvh.nodes.size(), 0.0);   // total area per node
     std::vector<Vec3> weighted(m.bvh.nodes.size());        // area-weighted centroid sum per node
+    std::vector<detail::Moments> moments(m.bvh.nodes.size());   // for the parents' shifts
     std::atomic<bool> halted{false};
     auto expand = [&](size_t n) {
         // a node's radius pass reads all its triangles: near the root a test every node, below
@@ -125,7 +126,7 @@ WindingNumber::WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, d
             weighted[n] = weighted[node.left] + weighted[node.right];
             e.centre = weight[n] > 0 ? Vec3(weighted[n] / weight[n]) : Vec3(0.5 * (node.lo + node.hi));
             for (uint32_t c : {node.left, node.right}) {
-                const Expansion ch = m.exp[c].full();
+                const Expansion ch = moments[c].full();
                 const Vec3 s = ch.centre - e.centre;   // d about the parent = d about the child + s
                 e.N += ch.N;
                 e.M += ch.M + ch.N * s.transpose();
@@ -136,6 +137,7 @@ WindingNumber::WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, d
             }
         }
         e.radius = std::sqrt(farthest_corner(m.bvh.nodes, m.tris, uint32_t(n), e.centre));
+        moments[n] = detail::Moments(e);
         m.exp[n] = detail::FarField(e, m.beta);
     };
     const size_t count = m.bvh.nodes.size();

@@ -1,8 +1,9 @@
 // test_winding.cpp: generalised winding numbers: exact values on closed meshes (cube, sphere,
 // torus), the hierarchical approximation against the brute-force sum (closed, open, soup),
-// inverted orientation, signed volume, degenerate and empty input.
+// inverted orientation, signed volume, degenerate and empty input, the stored far-field polynomial.
 #include "bvh.h"
 #include "distance.h"
+#include "far_field.h"
 #include "winding.h"
 #include "rng.h"
 #include <doctest/doctest.h>
@@ -289,4 +290,32 @@ TEST_CASE("winding: the tree and the expansions built on two threads equal one t
         unequal += w1(q) != w2(q);
     }
     CHECK(unequal == 0);
+}
+
+TEST_CASE("winding: a far field's stored polynomial equals the expansion's three terms") {
+    // random moments (Q not symmetric: the polynomial must read all nine entries as eval does),
+    // evaluated in every direction from 2 to 1000 radii away
+    Rng rng(5);
+    auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * rng.uniform(); };
+    double worst = 0;
+    for (int i = 0; i < 200; ++i) {
+        detail::Expansion e;
+        e.centre = Vec3(uniform(-3, 3), uniform(-3, 3), uniform(-3, 3));
+        e.radius = uniform(0.01, 2);
+        const double s = e.radius;
+        for (int k = 0; k < 3; ++k) e.N[k] = uniform(-1, 1) * s * s;
+        for (int k = 0; k < 9; ++k) e.M.data()[k] = uniform(-1, 1) * s * s * s;
+        for (auto& q : e.Q)
+            for (int k = 0; k < 9; ++k) q.data()[k] = uniform(-1, 1) * s * s * s * s;
+        const detail::FarField f(e, 2.0);
+        CHECK(f.reach2 == doctest::Approx(4 * e.radius * e.radius));
+        for (int j = 0; j < 20; ++j) {
+            const Vec3 dir = random_point(rng, Vec3::Constant(-1), Vec3::Constant(1)).normalized();
+            const Vec3 q = e.centre + e.radius * std::pow(10.0, uniform(0.3, 3)) * dir;
+            // scale: the size of the terms (each at most ~|N| / |r|^2 in magnitude)
+            const double scale = e.N.norm() / (q - e.centre).squaredNorm() + 1e-300;
+            worst = std::max(worst, std::abs(f.eval(q) - e.eval(q)) / scale);
+        }
+    }
+    CHECK(worst < 1e-12);
 }
