@@ -111,7 +111,7 @@ echo 99999 > "$tmp/bad.txt"
 check "out-of-range ball index is a clear failure" test $? -eq 3 -a -s "$tmp/err"
 
 # oriented point cloud input
-"$tool" "$data/fish_points.xyz" -o "$tmp/pc.ma" --json --time-limit 5 > "$tmp/pc.json"
+"$tool" "$data/fish_points.xyz" -o "$tmp/pc.ma" --json --time-limit 120 > "$tmp/pc.json"
 check "point cloud run exits 0" test $? -eq 0
 check "point cloud skeleton has balls" test "$(json_field selected "$tmp/pc.json")" -ge 5
 check "point cloud skeleton is connected" test "$(json_field components "$tmp/pc.json")" -eq 1
@@ -119,12 +119,12 @@ check "point cloud: JSON names the normals used (given)" test "$(json_field norm
 # the readers' point-cloud forms, and which normals each run used
 for f in fish500.xyz:given fish500.ply:given fish500.obj:given fish500_nonormals.xyz:estimated \
          fish500_nonormals.ply:estimated fish500_nonormals.obj:estimated fish500.pts:estimated fish500_plain.pts:estimated; do
-  "$tool" "$data/formats/${f%%:*}" -o "$tmp/pcf.ma" --json --time-limit 5 > "$tmp/pcf.json"
+  "$tool" "$data/formats/${f%%:*}" -o "$tmp/pcf.ma" --json --time-limit 120 > "$tmp/pcf.json"
   check "${f%%:*}: a point cloud with normals ${f##*:}" test "$(json_field input_triangles "$tmp/pcf.json") $(json_field normals "$tmp/pcf.json")" = "0 \"${f##*:}\""
 done
-"$tool" "$data/formats/fish500_nonormals.xyz" -o "$tmp/pcf.ma" --time-limit 5 > "$tmp/pcf.txt"
+"$tool" "$data/formats/fish500_nonormals.xyz" -o "$tmp/pcf.ma" --time-limit 120 > "$tmp/pcf.txt"
 check "the summary says the normals were estimated" grep -q '^normals     estimated by PCA and oriented (the file has none)' "$tmp/pcf.txt"
-"$tool" "$data/fish_points.xyz" -o "$tmp/pce.ma" --json --normals estimate --time-limit 5 > "$tmp/pce.json"
+"$tool" "$data/fish_points.xyz" -o "$tmp/pce.ma" --json --normals estimate --time-limit 120 > "$tmp/pce.json"
 check "--normals estimate: the report says estimated" grep -q '"normals":"estimated"' "$tmp/pce.json"
 "$tool" "$data/fox.obj" -o "$tmp/m.ma" --json --samples 300 > "$tmp/m.json"
 check "a mesh has no point normals" grep -q '"normals":"none"' "$tmp/m.json"
