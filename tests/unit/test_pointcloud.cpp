@@ -212,3 +212,17 @@ TEST_CASE("point cloud: without the outlier filter the far outliers do make ball
         outer = std::max(outer, set.surface.norm.to_user(b.center).norm() + b.radius * set.surface.norm.scale);
     CHECK(outer > kNoisyR + noisy_margin());
 }
+
+// The orientation probes of a thin part stay inside it (at most half its local thickness deep):
+// on a noisy thin box, probes at the full depth would leave the part through its far side and
+// count as inconsistent.
+TEST_CASE("point cloud: orientation probes of a noisy thin box stay inside it") {
+    shapes::Cloud c = shapes::noisy_cloud(shapes::sample_cloud(shapes::box(1.0, 1.0, 0.03), 5000, 3), 0.005, 0.0);
+    ca::Surface surface;
+    ca::Status st = ca::prepare_surface(ca::Mesh{std::move(c.points), {}}, std::move(c.normals), surface);
+    REQUIRE_MESSAGE(st.ok(), st.message);
+    ca::CandidateSet set;
+    st = ca::generate_candidates(std::move(surface), {}, ca::Monitor{}, set);
+    REQUIRE_MESSAGE(st.ok(), st.message);
+    CHECK(set.orientation_inconsistent < 0.18);   // at the full depth: 0.24
+}
