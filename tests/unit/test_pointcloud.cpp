@@ -2,7 +2,7 @@
 // a sphere (one ball at its centre), a torus (a ring with b1 = 1); flipped normals give the same
 // skeleton size, and so do random per-point signs (passed as trusted or as unoriented) and
 // missing normals; the random generator works on clouds; an outlier point creates no ball
-// outside the shape.
+// outside the shape; the orientation probes of a noisy thin part stay inside it.
 #include <doctest/doctest.h>
 
 #include "candidates.h"

@@ -2,7 +2,8 @@
 // estimation, orientation of random per-point signs (a sphere, a torus, a flattened sphere whose
 // two sides are closer than the sample spacing, the fish cloud of tests/data), and the sign
 // disagreement measure (low for consistent normals, about 1/2 for random signs, pairs across a
-// thin part not counted).
+// thin part not counted); the winding-number vote over patches propagation flipped, the winding
+// residual, and noisy exact normals kept as given.
 #include "normals.h"
 #include "patch_signs.h"
 #include "rng.h"
