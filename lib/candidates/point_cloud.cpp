@@ -45,21 +45,41 @@ constexpr double kOrientationProbe = 0.01;
 // Above this fraction of inconsistent probes the orientation is not trusted (the cloud is refused).
 constexpr double kMaxInconsistent = 0.3;
 
-// Winding numbers at up to 500 points pushed a little along their normals, to either side.
-// `mean`: the mean over both sides, about (1 + 0) / 2 for outward normals and (0 - 1) / 2 for
-// inward ones (reversing every normal negates the winding number). `inconsistent`: the fraction of
-// points where w jumps by less than 1/2 across the surface (1 for consistently oriented normals,
-// on closed and open clouds alike).
+// The probe depth at point i: kOrientationProbe, but at most half the local thickness (how far
+// behind p_i, along -n_i, the nearest of its 16 neighbours lies whose normal points the other
+// way: the far side of a thin part), so that the inner probe does not leave the part through
+// its far side (noise moving the point inward makes that likelier); not below a quarter of
+// kOrientationProbe, nearer to which the point's own dipole would decide the jump.
+double probe_depth(const PointTree& tree, const std::vector<Vec3>& pts, const std::vector<Vec3>& nrm, size_t i) {
+    size_t idx[16];
+    double d2[16];
+    const size_t found = tree.nearest(pts[i], 16, idx, d2);
+    double depth = kOrientationProbe;
+    for (size_t j = 0; j < found; ++j) {
+        const double behind = -(pts[idx[j]] - pts[i]).dot(nrm[i]);
+        if (behind > 0 && nrm[idx[j]].dot(nrm[i]) < -0.5)
+            depth = std::min(depth, std::max(0.5 * behind, 0.25 * kOrientationProbe));
+    }
+    return depth;
+}
+
+// Winding numbers at up to 500 points pushed a little along their normals (probe_depth), to
+// either side. `mean`: the mean over both sides, about (1 + 0) / 2 for outward normals and
+// (0 - 1) / 2 for inward ones (reversing every normal negates the winding number).
+// `inconsistent`: the fraction of points where w jumps by less than 1/2 across the surface (1 for
+// consistently oriented normals, on closed and open clouds alike).
 struct OrientationProbes {
     double mean = 0, inconsistent = 0;
 };
 OrientationProbes probe_orientation(const PointCloudWinding& w, const std::vector<Vec3>& pts,
                                     const std::vector<Vec3>& nrm) {
     const size_t step = std::max<size_t>(1, pts.size() / 500);
+    const PointTree tree(pts);
     OrientationProbes out;
     size_t n = 0;
     for (size_t i = 0; i < pts.size(); i += step, ++n) {
-        const double in = w(pts[i] - kOrientationProbe * nrm[i]), outside = w(pts[i] + kOrientationProbe * nrm[i]);
+        const double depth = probe_depth(tree, pts, nrm, i);
+        const double in = w(pts[i] - depth * nrm[i]), outside = w(pts[i] + depth * nrm[i]);
         out.mean += 0.5 * (in + outside);
         out.inconsistent += std::abs(in - outside) < 0.5;
     }

@@ -3,6 +3,8 @@
 #include "normals.h"
 
 #include "kdtree.h"
+#include "patch_signs.h"
+#include "union_find.h"
 
 #include <Eigen/Eigenvalues>
 
@@ -75,6 +77,63 @@ double edge_weight(const std::vector<Vec3>& pts, const std::vector<Vec3>& normal
 
 }  // namespace
 
+namespace {
+
+// A tree edge that propagation may have taken the wrong way round: between normals more than
+// 60 degrees apart (weight 1 - |n_u . n_v| above this), a pair facing across (a thin part, a
+// crease: the facing rule is only as good as the sampling there, and estimated normals average
+// across such parts), or an uncertain pair. Patches are cut there and each is signed as a whole
+// by the winding-number vote instead (patch_signs.h), which sees the entire cloud.
+constexpr double kCutWeight = 0.5;
+// Patches below max(this, n / 200) points are joined to a neighbouring patch.
+constexpr size_t kMinPatch = 32;
+
+bool unreliable(const Vec3& d, const Vec3& a, const Vec3& b, bool estimated) {
+    return 1.0 - std::abs(a.dot(b)) > kCutWeight || facing(d, a, b) || (!estimated && uncertain(d, a, b));
+}
+
+// Patches of the propagation tree (parent[v] == v: a root) cut at its unreliable edges; patches
+// smaller than `min_size` points are joined back across their cut edges (lightest first), since
+// too few points carry too little winding number to be signed on their own. Returns the count.
+size_t tree_patches(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, const std::vector<uint32_t>& parent,
+                    bool estimated, size_t min_size, std::vector<uint32_t>& label) {
+    const size_t n = pts.size();
+    UnionFind uf(n);
+    std::vector<std::pair<double, uint32_t>> cut;   // (weight, child)
+    for (uint32_t v = 0; v < n; ++v) {
+        const uint32_t p = parent[v];
+        if (p == v) continue;
+        if (unreliable(pts[v] - pts[p], normals[p], normals[v], estimated))
+            cut.push_back({1.0 - std::abs(normals[p].dot(normals[v])), v});
+        else
+            uf.unite(v, p);
+    }
+    std::vector<size_t> size(n, 0);
+    for (uint32_t v = 0; v < n; ++v) ++size[uf.find(v)];
+    std::sort(cut.begin(), cut.end());
+    for (bool joined = true; joined;) {
+        joined = false;
+        for (const auto& [w, v] : cut) {
+            const uint32_t a = uf.find(v), b = uf.find(parent[v]);
+            if (a == b || (size[a] >= min_size && size[b] >= min_size)) continue;
+            uf.unite(a, b);
+            size[uf.find(a)] = size[a] + size[b];
+            joined = true;
+        }
+    }
+    label.assign(n, 0);
+    std::vector<uint32_t> id(n, UINT32_MAX);
+    size_t count = 0;
+    for (uint32_t v = 0; v < n; ++v) {
+        const uint32_t r = uf.find(v);
+        if (id[r] == UINT32_MAX) id[r] = uint32_t(count++);
+        label[v] = id[r];
+    }
+    return count;
+}
+
+}  // namespace
+
 void orient_normals(const std::vector<Vec3>& pts, std::vector<Vec3>& normals, size_t k, bool estimated) {
     const size_t n = pts.size();
     if (n < 2 || normals.size() != n) return;
@@ -90,6 +149,7 @@ void orient_normals(const std::vector<Vec3>& pts, std::vector<Vec3>& normals, si
         return pts[a].z() != pts[b].z() ? pts[a].z() > pts[b].z() : a < b;
     });
     std::vector<uint8_t> done(n, 0);
+    std::vector<uint32_t> parent(n);
     using Item = std::pair<double, std::pair<uint32_t, uint32_t>>;   // (weight, (point, parent))
     for (uint32_t root : by_height) {
         if (done[root]) continue;
@@ -100,18 +160,23 @@ void orient_normals(const std::vector<Vec3>& pts, std::vector<Vec3>& normals, si
         while (!heap.empty()) {
             const auto [w, e] = heap.top();
             heap.pop();
-            const uint32_t v = e.first, parent = e.second;
+            const uint32_t v = e.first, p = e.second;
             if (done[v]) continue;
             done[v] = 1;
-            const bool same = estimated ? normals[v].dot(normals[parent]) >= 0
-                                        : agrees(pts[v] - pts[parent], normals[parent], normals[v]);
-            if (v != parent && !same) normals[v] = -normals[v];
+            parent[v] = p;
+            const bool same = estimated ? normals[v].dot(normals[p]) >= 0
+                                        : agrees(pts[v] - pts[p], normals[p], normals[v]);
+            if (v != p && !same) normals[v] = -normals[v];
             for (uint32_t u : adj[v])
                 if (!done[u])
                     heap.push({estimated ? 1.0 - std::abs(normals[u].dot(normals[v])) : edge_weight(pts, normals, u, v),
                                {u, v}});
         }
     }
+    // the global step: each patch of the tree signed by the winding-number vote
+    std::vector<uint32_t> label;
+    const size_t count = tree_patches(pts, normals, parent, estimated, std::max<size_t>(kMinPatch, n / 200), label);
+    vote_patch_signs(pts, normals, label, count);
 }
 
 double sign_disagreement(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, size_t k) {

@@ -4,8 +4,10 @@
 // symmetric k-nearest-neighbour graph weighted by 1 - |n_i . n_j| (nearly parallel neighbours
 // first; pairs facing across a thin part or a crease last), the sign propagated from the root
 // along the tree (side by side: the same way; facing across: away from each other); each connected
-// part of the graph is rooted at its highest point with a normal pointing up (+z). The global
-// sign (outward) is fixed later by the winding number (point_cloud.cpp). sign_disagreement: the
+// part of the graph is rooted at its highest point with a normal pointing up (+z). The tree is
+// then cut at its unreliable edges and each patch signed as a whole by the winding-number vote
+// (patch_signs.h). The global sign (outward) is fixed later by the winding number
+// (point_cloud.cpp). sign_disagreement: the
 // fraction of neighbouring pairs whose signs disagree by the same rule, a cheap check that normals
 // given as oriented really are.
 #pragma once

@@ -3,6 +3,7 @@
 #include "duplicates.h"
 #include "hole_caps.h"
 #include "normals.h"
+#include "patch_signs.h"
 #include "winding.h"
 
 #include <Eigen/Dense>
@@ -143,22 +144,23 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
         }
         std::vector<Vec3> given;
         if (out.normals_source == NormalSource::oriented && trust == PointNormals::trusted) given = normals;
-        // whether the caller's directions follow the PCA surface: orientation only flips signs, so
-        // one answer holds before and after it; computed once, and only when a rule below asks
-        int follows = -1;
-        auto directions_follow_surface = [&] {
-            if (follows < 0) follows = follows_surface(normals, estimate_normals(raw.vertices)) ? 1 : 0;
-            return follows == 1;
-        };
         if (out.normals_source != NormalSource::given)
             orient_normals(raw.vertices, normals, 16, out.normals_source == NormalSource::estimated);
         out.disagreement = out.normals_source == NormalSource::given ? out.disagreement_given
                                                                      : sign_disagreement(raw.vertices, normals);
-        // Trusted normals that orientation does not make at least twice as consistent, but whose
-        // directions follow the surface, disagree because of noise (neighbours' offsets then say
-        // little about their signs), not because of wrong signs: the caller's normals are kept
-        if (!given.empty() && !(out.disagreement < kSignCheckGain * out.disagreement_given) &&
-            directions_follow_surface()) {
+        // Trusted normals that orientation does not make at least twice as consistent by the pair
+        // rule are judged by the winding number instead (patch_signs.h: its residual depends on
+        // no offsets between neighbours, which noise makes say little about signs). Unless
+        // orientation at least halves that residual too, the signs were not wrong, and the
+        // caller's normals are kept if they describe the surface: their directions follow PCA's,
+        // or the winding number finds them consistent on its own
+        const auto keep_given = [&] {
+            if (out.disagreement < kSignCheckGain * out.disagreement_given) return false;
+            const double residual = winding_residual(raw.vertices, given);
+            if (winding_residual(raw.vertices, normals) < kSignCheckGain * residual) return false;
+            return residual < kMaxWindingResidual || follows_surface(given, estimate_normals(raw.vertices));
+        };
+        if (!given.empty() && keep_given()) {
             normals = std::move(given);
             out.normals_source = NormalSource::given;
             out.disagreement = out.disagreement_given;
@@ -170,7 +172,7 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
         // so the pair rule would refuse usable clouds
         if (out.normals_source != NormalSource::estimated && !out.sign_check_inconclusive &&
             out.disagreement > kMaxSignDisagreement &&
-            !(trust == PointNormals::unoriented && directions_follow_surface()))
+            !(trust == PointNormals::unoriented && follows_surface(normals, estimate_normals(raw.vertices))))
             return fail(Code::invalid_input,
                         "the point cloud's normals could not be oriented consistently: after orientation " +
                             std::to_string(int(std::lround(100 * out.disagreement))) +

@@ -44,8 +44,9 @@ struct Surface {
 // `estimate`: estimated by PCA and oriented) unless `require_normals` is false (the evaluation
 // only measures distances: normals are dropped). Trusted normals whose signs disagree between
 // neighbours (sign_disagreement above kMaxSignDisagreement) are re-oriented once, and the result
-// replaces them only when it at least halves the disagreement (else noise, not signs, caused it:
-// they are kept); re-oriented normals that still disagree are refused (invalid_input); estimated ones are judged by the
+// replaces them when it at least halves the disagreement, or else the winding residual
+// (patch_signs.h; otherwise noise, not signs, caused it: they are kept if they describe the
+// surface); re-oriented normals that still disagree are refused (invalid_input); estimated ones are judged by the
 // winding number when the candidates are built. Takes its arguments by value. The welding and
 // merge test `monitor` every Monitor::kCheckEvery items; a stop returns monitor.stop_status("surface").
 Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool require_normals = true,

@@ -2,7 +2,7 @@
 // a sphere (one ball at its centre), a torus (a ring with b1 = 1); flipped normals give the same
 // skeleton size, and so do random per-point signs (passed as trusted or as unoriented) and
 // missing normals; the random generator works on clouds; an outlier point creates no ball
-// outside the shape.
+// outside the shape; the orientation probes of a noisy thin part stay inside it.
 #include <doctest/doctest.h>
 
 #include "candidates.h"
@@ -211,4 +211,18 @@ TEST_CASE("point cloud: without the outlier filter the far outliers do make ball
     for (const ca::Ball& b : set.balls)
         outer = std::max(outer, set.surface.norm.to_user(b.center).norm() + b.radius * set.surface.norm.scale);
     CHECK(outer > kNoisyR + noisy_margin());
+}
+
+// The orientation probes of a thin part stay inside it (at most half its local thickness deep):
+// on a noisy thin box, probes at the full depth would leave the part through its far side and
+// count as inconsistent.
+TEST_CASE("point cloud: orientation probes of a noisy thin box stay inside it") {
+    shapes::Cloud c = shapes::noisy_cloud(shapes::sample_cloud(shapes::box(1.0, 1.0, 0.03), 5000, 3), 0.005, 0.0);
+    ca::Surface surface;
+    ca::Status st = ca::prepare_surface(ca::Mesh{std::move(c.points), {}}, std::move(c.normals), surface);
+    REQUIRE_MESSAGE(st.ok(), st.message);
+    ca::CandidateSet set;
+    st = ca::generate_candidates(std::move(surface), {}, ca::Monitor{}, set);
+    REQUIRE_MESSAGE(st.ok(), st.message);
+    CHECK(set.orientation_inconsistent < 0.18);   // at the full depth: 0.24
 }
