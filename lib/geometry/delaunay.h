@@ -1,7 +1,7 @@
 // delaunay.h: Qhull (reentrant API, one qhT per call) behind two functions: the 3-D Delaunay
 // tetrahedra of a point set, and the regular triangulation of weighted points (the dual of the
 // power diagram) as the lower hull of the points lifted to 4-D. Every Qhull failure becomes a
-// Status carrying Qhull's own first message line; nothing is printed and exit() is never reached
+// Status carrying Qhull's own first error line; nothing is printed and exit() is never reached
 // (Qhull traps its errors inside qh_new_qhull; no other Qhull call that can fail is made). Both
 // stop when the monitor says so, also inside Qhull's build (see qhull_stream.h), and then return
 // the monitor's stop status for the given stage with no cells.
