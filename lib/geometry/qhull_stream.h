@@ -2,9 +2,11 @@
 // error or warning line for the Status (nothing reaches the caller's stderr) and is the only
 // place inside a Qhull run where the library's code runs: where the C library lets a FILE* call
 // back (fopencookie, funopen), every message Qhull writes -- with the periodic build report
-// ('TFn') one every few thousand new facets -- tests the monitor, and a stop sets Qhull's own
+// (option()'s 'TF2000': one per 2000 new facets) -- tests the monitor, and a stop sets Qhull's own
 // "stop adding points" limit (qhT.STOPadd, option 'TA'), which ends the build at the next point
-// with a valid partial hull that the caller then drops.
+// with a valid partial hull that the caller then drops. The report changes no result (it only
+// prints; its clock reading uses localtime(), whose shared buffer only feeds this stream's
+// dropped text).
 #pragma once
 #include "common.h"
 
