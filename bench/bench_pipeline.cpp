@@ -59,7 +59,7 @@ int main(int argc, char** argv) {
             const std::vector<ca::Vec3> pts = ca::sample_surface(surf.mesh, co.voronoi_samples, 2);
             std::vector<ca::Tet> tets;
             const auto t = std::chrono::steady_clock::now();
-            ca::delaunay_tetrahedra(pts, tets);
+            ca::delaunay_tetrahedra(pts, tets, ca::Monitor{}, "delaunay");
             t_delaunay = bench::seconds_since(t);
         }
         totals.push_back(total);

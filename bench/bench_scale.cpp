@@ -83,7 +83,7 @@ int main() {
         samples = ca::sample_surface(mesh, co.voronoi_samples, 2);
     }));
     std::vector<ca::Tet> tets;
-    std::printf("| Delaunay of the 4 000 samples (Qhull) | %.3f |\n", timed([&] { ca::delaunay_tetrahedra(samples, tets); }));
+    std::printf("| Delaunay of the 4 000 samples (Qhull) | %.3f |\n", timed([&] { ca::delaunay_tetrahedra(samples, tets, ca::Monitor{}, "delaunay"); }));
     // the circumcentres the candidate step tests: those within the samples' box
     std::vector<ca::Vec3> centres;
     const auto [lo, hi] = ca::bounding_box(samples);

@@ -23,7 +23,7 @@ bool in_box(const Vec3& p, const Vec3& lo, const Vec3& hi) {
 Status voronoi_vertices(const std::vector<Vec3>& pts, int threads, const Monitor& monitor, const AcceptVertices& accept,
                         std::vector<Ball>& balls, std::vector<Tet>& tets) {
     if (!monitor.report("delaunay", 0)) return monitor.stop_status("delaunay");
-    Status st = delaunay_tetrahedra(pts, tets);
+    Status st = delaunay_tetrahedra(pts, tets, monitor, "delaunay");
     if (!st.ok()) return st;
     if (!monitor.report("delaunay", 1)) return monitor.stop_status("delaunay");
     auto [lo, hi] = bounding_box(pts);

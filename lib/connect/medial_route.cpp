@@ -44,7 +44,7 @@ Status voronoi_diagram(const CandidateSet& set, int threads, const Monitor& moni
     const std::vector<Vec3>& raw = set.dense_samples.empty() ? set.cover_samples : set.dense_samples;
     pts.clear();
     for (uint32_t i : remove_near_duplicates(raw, 1e-7)) pts.push_back(raw[i]);
-    Status st = delaunay_tetrahedra(pts, tets);
+    Status st = delaunay_tetrahedra(pts, tets, monitor, "connect");
     if (!st.ok()) return st;
     const std::shared_ptr<const WindingNumber> own =
         set.winding ? nullptr : std::make_shared<const WindingNumber>(set.surface.mesh);

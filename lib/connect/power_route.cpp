@@ -48,7 +48,7 @@ Status connect_power(const CandidateSet& set, const Selection& sel, const Monito
     }
     if (!monitor.report("connect", 0)) return monitor.stop_status("connect");
     std::vector<Tet> cells;
-    Status st = regular_triangulation(pts, weights, cells);
+    Status st = regular_triangulation(pts, weights, cells, monitor, "connect");
     if (!st.ok()) return st;
     for (const Tet& cell : cells) {
         uint32_t v[4];

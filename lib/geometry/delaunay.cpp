@@ -1,9 +1,9 @@
 // delaunay.cpp: Qhull wrappers (3-D Delaunay, 4-D lifted lower hull) with a fallback chain.
 #include "delaunay.h"
 
+#include "qhull_stream.h"
+
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <memory>
 
 extern "C" {
@@ -16,66 +16,33 @@ namespace ca {
 
 namespace {
 
-// Qhull writes diagnostics to a FILE*. Give it an in-memory stream so nothing reaches the
-// caller's stderr and the first line can be reported in the Status.
-class ErrorSink {
-public:
-    ErrorSink() {
-#if defined(__unix__) || defined(__APPLE__)
-        file_ = open_memstream(&buf_, &len_);
-#else
-        file_ = std::tmpfile();
-#endif
-    }
-    ~ErrorSink() {
-        if (file_) std::fclose(file_);
-        std::free(buf_);
-    }
-    FILE* file() { return file_; }
-    std::string first_line() {
-        if (!file_) return "";
-        std::fflush(file_);
-        std::string text;
-#if defined(__unix__) || defined(__APPLE__)
-        if (buf_) text.assign(buf_, len_);
-#else
-        std::rewind(file_);
-        char line[512];
-        if (std::fgets(line, sizeof line, file_)) text = line;
-#endif
-        const size_t nl = text.find('\n');
-        if (nl != std::string::npos) text.resize(nl);
-        return text;
-    }
-private:
-    FILE* file_ = nullptr;
-    char* buf_ = nullptr;
-    size_t len_ = 0;
-};
-
 // Runs Qhull with each option string in turn until one succeeds; `collect` reads the facets
-// of the successful run. Returns the status of the last attempt.
+// of the successful run (and may end early once the monitor says stop). Returns the status of
+// the last attempt, or the monitor's stop status for `stage` once it says stop.
 template <class Collect>
 Status run_qhull(int dim, std::vector<double> coords, const char* const* commands, size_t n_commands,
-                 const char* what, Collect&& collect) {
+                 const char* what, const Monitor& monitor, const char* stage, Collect&& collect) {
     const int n = int(coords.size() / size_t(dim));
     std::string last_error;
     for (size_t c = 0; c < n_commands; ++c) {
-        ErrorSink sink;
+        auto qh = std::make_unique<qhT>();
+        QhullStream sink(qh.get(), monitor);
         FILE* err = sink.file();
         if (!err) return fail(Code::out_of_memory, "cannot open a stream for Qhull's messages");
-        auto qh = std::make_unique<qhT>();
         qh_zero(qh.get(), err);
         std::string cmd = commands[c];
+        if (sink.can_stop()) cmd += QhullStream::option();   // build reports: the stop test's hook
         std::vector<double> pts = coords;  // Qhull may scale its input in place
         const int code = qh_new_qhull(qh.get(), dim, n, pts.data(), False, cmd.data(), nullptr, err);
-        bool ok = code == 0;
-        if (ok) ok = collect(qh.get());
-        else last_error = sink.first_line();
+        const bool stopped = sink.stopped() || monitor.stopped();
+        bool ok = code == 0 && !stopped;
+        if (ok) ok = collect(qh.get()) && !monitor.stopped();
+        else if (!stopped) last_error = sink.first_line();
         qh_freeqhull(qh.get(), !qh_ALL);
         int curlong = 0, totlong = 0;
         qh_memfreeshort(qh.get(), &curlong, &totlong);
         if (ok) return Status::success();
+        if (monitor.stopped()) return monitor.stop_status(stage);
         if (last_error.empty()) last_error = "no usable cells";
     }
     return fail(Code::geometry_failure, std::string(what) + " failed (Qhull: " + last_error + ")");
@@ -109,7 +76,8 @@ bool circumcenter(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, Ve
     return center.allFinite();
 }
 
-Status delaunay_tetrahedra(const std::vector<Vec3>& pts, std::vector<Tet>& tets) {
+Status delaunay_tetrahedra(const std::vector<Vec3>& pts, std::vector<Tet>& tets, const Monitor& monitor,
+                           const char* stage) {
     tets.clear();
     if (pts.size() < 5)
         return fail(Code::degenerate_input, "the Delaunay tetrahedralisation needs at least 5 distinct points, got " +
@@ -121,10 +89,13 @@ Status delaunay_tetrahedra(const std::vector<Vec3>& pts, std::vector<Tet>& tets)
     // long merging them, while joggling costs little on curved models. Joggling is
     // deterministic (fixed seed).
     static const char* const commands[] = {"qhull d QJ Qbb", "qhull d Qbb Qt", "qhull d Qbb Qt Qz"};
-    return run_qhull(3, std::move(coords), commands, 3, "the Delaunay tetrahedralisation", [&](qhT* qh) {
+    return run_qhull(3, std::move(coords), commands, 3, "the Delaunay tetrahedralisation", monitor, stage,
+                     [&](qhT* qh) {
         tets.clear();
         facetT* facet;
+        size_t k = 0;
         FORALLfacets {
+            if (monitor.stopped_at(++k)) return false;
             Tet t{};
             Vec3 cc;
             if (!facet->upperdelaunay && facet_tet(qh, facet, pts.size(), t) &&
@@ -136,7 +107,7 @@ Status delaunay_tetrahedra(const std::vector<Vec3>& pts, std::vector<Tet>& tets)
 }
 
 Status regular_triangulation(const std::vector<Vec3>& pts, const std::vector<double>& weights,
-                             std::vector<Tet>& cells) {
+                             std::vector<Tet>& cells, const Monitor& monitor, const char* stage) {
     cells.clear();
     if (pts.size() != weights.size()) return fail(Code::internal, "regular_triangulation: size mismatch");
     if (pts.size() < 6)
@@ -147,10 +118,12 @@ Status regular_triangulation(const std::vector<Vec3>& pts, const std::vector<dou
     for (size_t i = 0; i < pts.size(); ++i)
         coords.insert(coords.end(), {pts[i].x(), pts[i].y(), pts[i].z(), pts[i].squaredNorm() - weights[i]});
     static const char* const commands[] = {"qhull Qt", "qhull QJ"};
-    return run_qhull(4, std::move(coords), commands, 2, "the power diagram", [&](qhT* qh) {
+    return run_qhull(4, std::move(coords), commands, 2, "the power diagram", monitor, stage, [&](qhT* qh) {
         cells.clear();
         facetT* facet;
+        size_t k = 0;
         FORALLfacets {
+            if (monitor.stopped_at(++k)) return false;
             Tet t{};
             if (facet->normal && facet->normal[3] < 0 && facet_tet(qh, facet, pts.size(), t))  // lower hull only
                 cells.push_back(t);
