@@ -44,6 +44,13 @@ public:
         if (cap > 0 && !adaptor_.pts->empty()) tree_.findNeighbors(result, q.data(), nanoflann::SearchParams(32, 0, false));
         return result.count;
     }
+    // The squared distance of the nearest point if one is closer than sqrt(bound2) (the same value
+    // nearest() gives), else bound2: a search that starts from the bound prunes more.
+    double nearest_squared_below(const Vec3& q, double bound2) const {
+        NearestResult result{bound2};
+        if (!adaptor_.pts->empty()) tree_.findNeighbors(result, q.data(), nanoflann::SearchParams(32, 0, false));
+        return result.best;
+    }
     // Distance to the nearest point (+infinity for an empty set).
     double distance(const Vec3& q) const {
         size_t idx = 0;
@@ -62,6 +69,17 @@ private:
         bool addPoint(double dist, size_t) {
             if (dist <= radius2) ++count;
             return count < cap;
+        }
+    };
+    // nanoflann result set of nearest_squared_below. A leaf compares its points with the bound it
+    // read on entry, so addPoint keeps the smaller of the two.
+    struct NearestResult {
+        double best;
+        double worstDist() const { return best; }
+        bool full() const { return true; }
+        bool addPoint(double dist, size_t) {
+            best = std::min(best, dist);
+            return true;
         }
     };
     PointSetAdaptor adaptor_;
