@@ -59,14 +59,14 @@ bool random_inner_points(const std::vector<Vec3>& pts, const CandidateOptions& o
 Status mesh_random_candidates(const CandidateOptions& opt, const Monitor& monitor, Beside& structures,
                               const SurfaceStructures& built, int threads, CandidateSet& out);
 // cloud_outliers.cpp: marks the outliers of de-duplicated cloud points (outlier[i] = 1) and
-// returns their count (0 on clean clouds).
-size_t find_cloud_outliers(const std::vector<Vec3>& pts, std::vector<uint8_t>& outlier);
+// returns their count (0 on clean clouds); the neighbourhoods are searched on `threads` threads.
+size_t find_cloud_outliers(const std::vector<Vec3>& pts, std::vector<uint8_t>& outlier, int threads = 1);
 // cloud_local_planes.cpp: the plane of each cloud point's 16 nearest neighbours, oriented by its
 // unit outward normal, and whether the cloud is noisy (the points lie off their planes by more
 // than the curvature of a clean cloud explains).
 class LocalPlanes {
 public:
-    LocalPlanes(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals);
+    LocalPlanes(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, int threads = 1);
     bool noisy() const;
     double noise_ratio() const { return noise_ratio_; }   // median off-plane distance / median d16
     double scale_growth() const { return scale_growth_; } // median off-plane distance, 16 over 8 neighbours

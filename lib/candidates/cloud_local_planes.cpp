@@ -32,7 +32,7 @@ double median_of(std::vector<double> v) {
 }
 }  // namespace
 
-LocalPlanes::LocalPlanes(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals)
+LocalPlanes::LocalPlanes(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, int threads)
     : mean_(pts), normal_(normals), tree_(pts) {
     if (pts.size() <= kPlaneNeighbours) return;
     std::vector<double> residual(pts.size(), 0), small(pts.size(), 0), spacing(pts.size(), 0);
@@ -45,7 +45,7 @@ LocalPlanes::LocalPlanes(const std::vector<Vec3>& pts, const std::vector<Vec3>& 
         mean_[i] = m;
         normal_[i] = n.dot(normals[i]) < 0 ? Vec3(-n) : n;
         residual[i] = std::abs((pts[i] - m).dot(n));
-    });
+    }, threads);
     const double d16 = median_of(spacing), r16 = median_of(residual), r8 = median_of(small);
     noise_ratio_ = d16 > 0 ? r16 / d16 : 0;
     scale_growth_ = r8 > 0 ? r16 / r8 : 0;

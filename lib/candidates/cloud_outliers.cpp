@@ -31,7 +31,7 @@ double median_of(std::vector<double> v) {
 
 }  // namespace
 
-size_t find_cloud_outliers(const std::vector<Vec3>& pts, std::vector<uint8_t>& outlier) {
+size_t find_cloud_outliers(const std::vector<Vec3>& pts, std::vector<uint8_t>& outlier, int threads) {
     outlier.assign(pts.size(), 0);
     if (pts.size() <= kPlaneNeighbours + 1) return 0;   // too few points to tell the surface from outliers
     std::vector<double> kth(pts.size(), 0);
@@ -41,7 +41,7 @@ size_t find_cloud_outliers(const std::vector<Vec3>& pts, std::vector<uint8_t>& o
         Vec3 mean, n;
         if (found > 3 && fit_plane(pts, idx + 1, found - 1, mean, n))
             outlier[i] = std::abs((pts[i] - mean).dot(n)) > kOffPlane * std::sqrt(d2[found - 1]);
-    });
+    }, threads);
     const double med = median_of(kth);
     std::vector<double> dev(kth.size());
     for (size_t i = 0; i < kth.size(); ++i) dev[i] = std::abs(kth[i] - med);

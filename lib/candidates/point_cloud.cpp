@@ -20,23 +20,26 @@ namespace cand {
 namespace {
 
 // Oriented point clouds: drop isolated candidates (paper: among the 100 nearest candidates, fewer
-// than 20 within 0.02 means outlier).
-std::vector<Ball> cluster_filter(const std::vector<Ball>& balls) {
+// than 20 within 0.02 means outlier). The 20 nearest are among the 100, so this is: fewer than 20
+// candidates within 0.02 at all, counted by a search that stops at the 20th; the queries are split
+// across `threads`.
+std::vector<Ball> cluster_filter(const std::vector<Ball>& balls, int threads) {
     const size_t k = 100, min_close = 20;
     const double radius = 0.02;
     if (balls.size() <= k) return balls;
     std::vector<Vec3> centers(balls.size());
     for (size_t i = 0; i < balls.size(); ++i) centers[i] = balls[i].center;
-    PointTree tree(centers);
+    const PointTree tree(centers);
+    std::vector<uint8_t> keep(balls.size(), 0);
+    const size_t workers = size_t(std::max(1, threads));
+    const size_t chunk = (balls.size() + workers - 1) / workers;
+    run_workers(workers, [&](size_t w) {
+        for (size_t i = w * chunk; i < std::min(balls.size(), (w + 1) * chunk); ++i)
+            keep[i] = tree.count_within_squared(centers[i], radius * radius, min_close) >= min_close;
+    });
     std::vector<Ball> out;
-    std::vector<size_t> idx(k);
-    std::vector<double> d2(k);
-    for (const Ball& b : balls) {
-        const size_t found = tree.nearest(b.center, k, idx.data(), d2.data());
-        size_t close = 0;
-        for (size_t i = 0; i < found; ++i) close += d2[i] <= radius * radius;
-        if (close >= min_close) out.push_back(b);
-    }
+    for (size_t i = 0; i < balls.size(); ++i)
+        if (keep[i]) out.push_back(balls[i]);
     return out;
 }
 
@@ -90,9 +93,9 @@ OrientationProbes probe_orientation(const PointCloudWinding& w, const std::vecto
 // Drops the outliers of the de-duplicated points upts (and their normals unrm); `kept` gets the
 // input points that are not outliers nor duplicates of one (only when there are outliers).
 void drop_outliers(const std::vector<Vec3>& pts, std::vector<Vec3>& upts, std::vector<Vec3>& unrm,
-                   std::vector<uint32_t>& kept, size_t& count) {
+                   std::vector<uint32_t>& kept, size_t& count, int threads) {
     std::vector<uint8_t> outlier;
-    count = find_cloud_outliers(upts, outlier);
+    count = find_cloud_outliers(upts, outlier, threads);
     if (count == 0) return;
     const PointTree tree(upts);   // an input point is dropped with the unique point it merged into
     for (size_t i = 0; i < pts.size(); ++i) {
@@ -120,7 +123,7 @@ Status voronoi_cloud_candidates(const std::vector<Vec3>& upts, const PointCloudW
             return done ? Status::success() : monitor.stop_status("inside");
         }, balls, tets_unused);
     if (!st.ok()) return st;
-    out = cluster_filter(balls);
+    out = cluster_filter(balls, threads);
     return Status::success();
 }
 
@@ -151,9 +154,9 @@ Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monito
     for (size_t i = 0; i < unique.size(); ++i) { upts[i] = pts[unique[i]]; unrm[i] = nrm[unique[i]]; }
     // the points cover samples are drawn from: all of them unless outliers are dropped
     std::vector<uint32_t> kept;
-    if (opt.filter_outliers) drop_outliers(pts, upts, unrm, kept, out.outliers);
+    if (opt.filter_outliers) drop_outliers(pts, upts, unrm, kept, out.outliers, threads);
     if (!monitor.report("inside", 0)) return monitor.stop_status("inside");
-    auto winding = std::make_shared<PointCloudWinding>(upts, unrm);
+    auto winding = std::make_shared<PointCloudWinding>(upts, unrm, 2.0, threads);
     const OrientationProbes probes = probe_orientation(*winding, upts, unrm);
     out.orientation_inconsistent = probes.inconsistent;
     if (probes.inconsistent > kMaxInconsistent)
@@ -168,11 +171,11 @@ Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monito
         // inward normals: flip them all (the winding number changes sign)
         for (Vec3& n : nrm) n = -n;
         for (Vec3& n : unrm) n = -n;
-        winding = std::make_shared<PointCloudWinding>(upts, unrm);
+        winding = std::make_shared<PointCloudWinding>(upts, unrm, 2.0, threads);
         out.surface.flipped = true;
     }
     // noisy clouds: cover the denoised surface (cloud_local_planes.cpp)
-    const LocalPlanes planes(upts, unrm);
+    const LocalPlanes planes(upts, unrm, threads);
     out.noise_ratio = planes.noise_ratio();
     out.noise_scale_growth = planes.scale_growth();
     std::vector<Vec3> sample_normals;

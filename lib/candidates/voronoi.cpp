@@ -41,18 +41,16 @@ Status voronoi_vertices(const std::vector<Vec3>& pts, int threads, const Monitor
     }
     // A Voronoi ball is empty: its radius is the distance to the nearest sample. Near-flat
     // tetrahedra (joggled or co-spherical samples) can give circumradii larger than that, i.e.
-    // balls that stick out of the shape; clamp them. The tetrahedron's first corner lies at the
-    // circumradius, so the nearest sample is no farther: the search starts pruned by that bound
-    // (widened far beyond rounding), with the plain search as a fallback.
+    // balls that stick out of the shape; clamp them. Only a sample nearer than the circumradius
+    // (with a relative margin far above rounding) can lower the radius, so the search starts
+    // from that bound; a sample it finds has the squared distance an unbounded search gives.
     PointTree sample_tree(pts);
+    constexpr double kBoundMargin = 1e-9;
     if (!parallel_for(raw.size(), threads, 8192, monitor, "delaunay", [&](size_t begin, size_t end) {
             for (size_t i = begin; i < end; ++i) {
-                size_t idx;
-                double d2;
-                const double bound2 = raw[i].radius * raw[i].radius * (1 + 1e-9);
-                if (sample_tree.nearest_below(raw[i].center, bound2, &idx, &d2) ||
-                    sample_tree.nearest(raw[i].center, 1, &idx, &d2) == 1)
-                    raw[i].radius = std::min(raw[i].radius, std::sqrt(d2));
+                const double bound2 = raw[i].radius * raw[i].radius * (1 + kBoundMargin);
+                const double d2 = sample_tree.nearest_squared_below(raw[i].center, bound2);
+                if (d2 < bound2) raw[i].radius = std::min(raw[i].radius, std::sqrt(d2));
             }
         }))
         return monitor.stop_status("delaunay");

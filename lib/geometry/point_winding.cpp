@@ -27,8 +27,12 @@ double dipole(const Vec3& q, const Vec3& p, const Vec3& moment) {
 }
 
 
+// A convex polygon in the tangent plane; clip() writes into a second one, and the two buffers are
+// reused for all clips of a point.
+using Polygon = std::vector<Eigen::Vector2d>;
+
 // Area of the convex polygon `poly` (2-D, counter-clockwise or not).
-double polygon_area(const std::vector<Eigen::Vector2d>& poly) {
+double polygon_area(const Polygon& poly) {
     double a = 0;
     for (size_t i = 0; i < poly.size(); ++i) {
         const Eigen::Vector2d& u = poly[i];
@@ -38,9 +42,9 @@ double polygon_area(const std::vector<Eigen::Vector2d>& poly) {
     return 0.5 * std::abs(a);
 }
 
-// Keeps the part of `poly` with x.dir <= offset.
-void clip(std::vector<Eigen::Vector2d>& poly, const Eigen::Vector2d& dir, double offset) {
-    std::vector<Eigen::Vector2d> out;
+// Keeps the part of `poly` with x.dir <= offset, written to `out`.
+void clip(const Polygon& poly, const Eigen::Vector2d& dir, double offset, Polygon& out) {
+    out.clear();
     for (size_t i = 0; i < poly.size(); ++i) {
         const Eigen::Vector2d& u = poly[i];
         const Eigen::Vector2d& v = poly[(i + 1) % poly.size()];
@@ -48,12 +52,12 @@ void clip(std::vector<Eigen::Vector2d>& poly, const Eigen::Vector2d& dir, double
         if (su <= 0) out.push_back(u);
         if ((su < 0) != (sv < 0) && su != sv) out.push_back(u + (v - u) * (su / (su - sv)));
     }
-    poly.swap(out);
 }
 
 }  // namespace
 
-std::vector<double> tangent_voronoi_areas(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, size_t k) {
+std::vector<double> tangent_voronoi_areas(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, size_t k,
+                                          int threads) {
     std::vector<double> areas(pts.size(), 0.0);
     if (pts.size() < 2) return areas;
     for_each_neighbourhood(pts, k, [&](size_t i, const size_t* idx, const double* d2, size_t found) {
@@ -63,17 +67,20 @@ std::vector<double> tangent_voronoi_areas(const std::vector<Vec3>& pts, const st
         double half = 0;
         for (size_t j = 0; j < found; ++j) half = std::max(half, std::sqrt(d2[j]));
         if (!(half > 0)) return;
-        std::vector<Eigen::Vector2d> poly = {{-half, -half}, {half, -half}, {half, half}, {-half, half}};
+        Polygon poly = {{-half, -half}, {half, -half}, {half, half}, {-half, half}}, next;
+        poly.reserve(found + 4);   // a clip adds at most one corner to a convex polygon
+        next.reserve(found + 4);
         for (size_t j = 0; j < found && !poly.empty(); ++j) {
             if (idx[j] == i) continue;
             const Vec3 d = pts[idx[j]] - pts[i];
             const Eigen::Vector2d e(d.dot(u), d.dot(v));
             const double len2 = e.squaredNorm();
             if (!(len2 > 1e-24)) continue;   // a duplicate (or a neighbour straight above): no bisector
-            clip(poly, e, 0.5 * len2);       // x.e <= |e|^2 / 2: the side of the bisector nearer to point i
+            clip(poly, e, 0.5 * len2, next);   // x.e <= |e|^2 / 2: the side of the bisector nearer to point i
+            poly.swap(next);
         }
         areas[i] = poly.size() >= 3 ? polygon_area(poly) : 0.0;
-    });
+    }, threads);
     return areas;
 }
 
@@ -85,12 +92,13 @@ struct PointCloudWinding::Impl {
     std::vector<double> areas;      // per input point
 };
 
-PointCloudWinding::PointCloudWinding(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, double beta)
+PointCloudWinding::PointCloudWinding(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, double beta,
+                                     int threads)
     : impl_(std::make_unique<Impl>()) {
     Impl& m = *impl_;
     m.beta = (beta >= 0 && std::isfinite(beta)) ? beta : 2.0;
     if (pts.empty() || normals.size() != pts.size()) return;
-    m.areas = tangent_voronoi_areas(pts, normals);
+    m.areas = tangent_voronoi_areas(pts, normals, 20, threads);
     Mesh dots;
     dots.vertices = pts;
     std::vector<uint32_t> ids(pts.size());

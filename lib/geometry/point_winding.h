@@ -12,14 +12,17 @@ namespace ca {
 
 // Per-point areas: the area of each point's Voronoi cell in the plane through it orthogonal to its
 // normal, among the projections of its k nearest neighbours (bounded by a square of half-side
-// the k-th neighbour distance, so boundary points of open clouds get finite areas).
+// the k-th neighbour distance, so boundary points of open clouds get finite areas). The points are
+// split across `threads` threads; the areas do not depend on it.
 std::vector<double> tangent_voronoi_areas(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals,
-                                          size_t k = 20);
+                                          size_t k = 20, int threads = 1);
 
 class PointCloudWinding {
 public:
-    // `normals` unit, one per point; `beta` as in WindingNumber.
-    PointCloudWinding(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, double beta = 2.0);
+    // `normals` unit, one per point; `beta` as in WindingNumber; the areas are computed on
+    // `threads` threads (the result does not depend on it).
+    PointCloudWinding(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, double beta = 2.0,
+                      int threads = 1);
     ~PointCloudWinding();
     PointCloudWinding(PointCloudWinding&&) noexcept;
     PointCloudWinding& operator=(PointCloudWinding&&) noexcept;
