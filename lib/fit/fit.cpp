@@ -222,8 +222,20 @@ public:
         return x;
     }
 
-    // balls - alpha * dx, each ball projected into the shape.
-    std::vector<Ball> moved(const std::vector<Ball>& balls, const Eigen::VectorXd& dx, double alpha) const {
+    // balls - alpha * dx, each ball projected into the shape: a centre that would leave it stays,
+    // a radius is at most the centre's distance to the surface plus the ball's allowance.
+    // Each ball's allowance over its centre's distance to the surface: radius_tolerance, or the
+    // excess the connected ball already had if larger (the connection's balls touch samples, not
+    // the surface between them; forcing them in at once would open gaps the fit then has to close).
+    std::vector<double> allowance(const std::vector<Ball>& balls) const {
+        std::vector<double> out(balls.size(), opt_.radius_tolerance);
+        for (size_t i = 0; i < balls.size(); ++i)
+            out[i] = std::max(opt_.radius_tolerance, balls[i].radius - distance_->distance(balls[i].center));
+        return out;
+    }
+
+    std::vector<Ball> moved(const std::vector<Ball>& balls, const Eigen::VectorXd& dx, double alpha,
+                            const std::vector<double>& allow) const {
         std::vector<Ball> out = balls;
         for (size_t i = 0; i < balls.size(); ++i) {
             Ball b = balls[i];
@@ -233,7 +245,7 @@ public:
             const double dist = distance_->distance(b.center);
             const double r = b.radius - alpha * dx[o + 3];
             // the surface bound wins over the lower one (a quarter of the radius before the step)
-            b.radius = std::min(std::max(r, 0.25 * balls[i].radius), dist + opt_.radius_tolerance);
+            b.radius = std::min(std::max(r, 0.25 * balls[i].radius), dist + allow[i]);
             out[i] = b;
         }
         return out;
@@ -283,9 +295,11 @@ Status fit_impl(const CandidateSet& set, const Selection& sel, const FitOptions&
     stats.error_before = res.max_abs;
     std::vector<Ball> best = sk.balls;
     double best_err = res.max_abs;
-    // The iterates start from its projection (radius bound): a trial is compared with a feasible
-    // iterate, so that a step is not refused for the projection's change alone.
-    sk.balls = fitter.moved(sk.balls, Eigen::VectorXd::Zero(Eigen::Index(4 * sk.balls.size())), 0);
+    // The iterates start from its projection (radius bound; the identity unless a ball's centre is
+    // outside): a trial is compared with a feasible iterate, so that a step is not refused for the
+    // projection's change alone.
+    const std::vector<double> allow = fitter.allowance(sk.balls);
+    sk.balls = fitter.moved(sk.balls, Eigen::VectorXd::Zero(Eigen::Index(4 * sk.balls.size())), 0, allow);
     if (!fitter.residuals(sk, drawn, res)) return cancelled();
     if (res.max_abs < best_err) {
         best_err = res.max_abs;
@@ -300,7 +314,7 @@ Status fit_impl(const CandidateSet& set, const Selection& sel, const FitOptions&
         const Eigen::VectorXd dx = fitter.step(res, sk.balls, damping);
         bool taken = false;
         for (double alpha : {1.0, 0.5, 0.25}) {
-            trial.balls = fitter.moved(sk.balls, dx, alpha);
+            trial.balls = fitter.moved(sk.balls, dx, alpha, allow);
             if (!fitter.residuals(trial, drawn, trial_res)) return cancelled();
             if (trial_res.lp < res.lp) {
                 sk.balls = trial.balls;

@@ -14,7 +14,8 @@
 // the first step refused at all three; the best iterate by the maximum residual is kept (the
 // connected skeleton included). Every iterate is projected: each centre stays inside the shape
 // (winding number > 1/2; a centre that would leave keeps its old position) and each radius is at
-// most the centre's distance to the surface plus radius_tolerance.
+// most the centre's distance to the surface plus an allowance: radius_tolerance, or the excess the
+// connected ball had over its centre's distance if larger.
 #pragma once
 #include "candidates.h"
 #include "selection.h"
@@ -28,7 +29,7 @@ struct FitOptions {
     uint32_t envelope_samples = 4000;  // boundary-of-E residual points (about; moved with the balls)
     double power = 6;                  // weights |r|^(power-2)
     double regularization = 0.1;       // Tikhonov weight on the step, relative to the mean curvature
-    double radius_tolerance = 0.002;   // internal units: radius <= distance to surface + this
+    double radius_tolerance = 0.002;   // internal units: radius <= distance to surface + this (or + the connected excess)
     uint64_t seed = 1;
     int32_t threads = 0;               // 0 = all cores
 };
