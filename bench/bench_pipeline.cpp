@@ -4,7 +4,9 @@
 // connected by the other route (power diagram) and measured by the same evaluator, which is the
 // measurement behind the default route for meshes. Also the two Coverage Axis reference
 // instances (the reference code's own samples and candidates) against their known optima.
-// usage: bench_pipeline [DATA_ROOT]   (default ../shared/data; skipped when missing)
+// usage: bench_pipeline [DATA_ROOT] [--fit-only]   (default ../shared/data; skipped when missing).
+// --fit-only: the pipeline and its fitted twin only (no power route, Delaunay step or reference
+// instances), for comparing fits.
 #include "bench_common.h"
 #include "bench_surface.h"
 #include "delaunay.h"
@@ -15,7 +17,12 @@
 #include <vector>
 
 int main(int argc, char** argv) {
-    const std::string root = argc > 1 ? argv[1] : "../shared/data";
+    std::string root = "../shared/data";
+    bool fit_only = false;
+    for (int i = 1; i < argc; ++i) {
+        if (std::string(argv[i]) == "--fit-only") fit_only = true;
+        else root = argv[i];
+    }
     const auto models = bench::list_files(root + "/meshes/paper", ".obj");
     if (models.empty()) {
         std::printf("bench_pipeline: no models under %s/meshes/paper, skipped\n", root.c_str());
@@ -45,7 +52,7 @@ int main(int argc, char** argv) {
         caio::MeshData mesh;
         std::string err;
         if (!caio::read_mesh(path, mesh, err)) { std::printf("| %s | read failed: %s |\n", bench::stem(path).c_str(), err.c_str()); continue; }
-        bench::PipelineRun r = bench::run_pipeline(mesh, co, so, cop, true, &power, &fit);
+        bench::PipelineRun r = bench::run_pipeline(mesh, co, so, cop, true, fit_only ? nullptr : &power, &fit);
         if (r.status != CA_OK) {
             std::printf("| %s | %zu | failed: %s |\n", bench::stem(path).c_str(), mesh.triangles.size() / 3, r.message.c_str());
             continue;
@@ -55,7 +62,7 @@ int main(int argc, char** argv) {
         // floor of the Voronoi route
         double t_delaunay = 0;
         ca::Surface surf;
-        if (bench::load_surface(path, surf)) {
+        if (!fit_only && bench::load_surface(path, surf)) {
             const std::vector<ca::Vec3> pts = ca::sample_surface(surf.mesh, co.voronoi_samples, 2);
             std::vector<ca::Tet> tets;
             const auto t = std::chrono::steady_clock::now();
@@ -94,6 +101,7 @@ int main(int argc, char** argv) {
     std::printf("fitted (ca_connect_options.fit): mean two-sided Hausdorff %.3f %%, fit mean %.3f s, max %.3f s\n",
                 n ? hd_fit_sum / n : 0.0, n ? fit_sum / n : 0.0, fit_worst);
 
+    if (fit_only) return 0;
     // Reference instances: the reference implementation's samples and candidates.
     struct Ref { const char* mesh; const char* samples; const char* candidates; double delta; int known; };
     const Ref refs[] = {

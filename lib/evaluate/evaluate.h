@@ -9,11 +9,22 @@
 
 namespace ca {
 
-// Exact signed distances (negative inside): min over the simplex of |p - c(t)| - r(t).
+// The sphere of a primitive's simplex that attains its distance at p: its barycentric weights on
+// the primitive's balls and the unit direction from its centre to p (zero at the centre). Since the
+// distance is a minimum over the simplex, its derivative with respect to ball i's centre is
+// -w[i] u and with respect to its radius -w[i] (the minimiser's own motion does not count).
+struct NearestSphere {
+    double w[3] = {0, 0, 0};
+    Vec3 u = Vec3::Zero();
+};
+
+// Exact signed distances (negative inside): min over the simplex of |p - c(t)| - r(t). With `at`
+// set, also the sphere that attains it.
 double sd_sphere(const Vec3& p, const Vec3& c, double r);
-double sd_cone(const Vec3& p, const Vec3& c1, double r1, const Vec3& c2, double r2);
+double sd_cone(const Vec3& p, const Vec3& c1, double r1, const Vec3& c2, double r2,
+               NearestSphere* at = nullptr);
 double sd_slab(const Vec3& p, const Vec3& c1, double r1, const Vec3& c2, double r2,
-               const Vec3& c3, double r3);
+               const Vec3& c3, double r3, NearestSphere* at = nullptr);
 
 struct EvaluateOptions {
     uint32_t surface_samples = 30000;    // plus the input vertices

@@ -29,58 +29,41 @@ namespace {
 
 constexpr size_t kBatch = 1024;
 
-// One residual point: its residual F(p) - g(p), the balls of its closest primitive and the
-// derivatives of F(p) with respect to their (centre, radius), 4 per ball.
-struct Row {
-    double r = 0;
-    uint32_t ball[3] = {0, 0, 0};
-    int nballs = 0;
-    double d[12] = {};
+// The residuals of one iterate: at each point F(p) - g(p) and the primitive of E closest to p.
+// The surface samples come first (the Fitter's own), then the boundary samples of E.
+struct Residuals {
+    std::vector<Primitive> prims;
+    std::vector<Vec3> boundary;
+    std::vector<double> r;
+    std::vector<uint32_t> which;
+    double max_abs = 0;
+    size_t drawn = 0;   // boundary points drawn (kept or not)
+    double lp = 0;   // (mean |r|^power)^(1/power): the objective that the steps decrease
 };
 
-double sd_of(Kind kind, const Ball* b, const Vec3& p) {
-    switch (kind) {
-        case Kind::sphere: return sd_sphere(p, b[0].center, b[0].radius);
-        case Kind::cone: return sd_cone(p, b[0].center, b[0].radius, b[1].center, b[1].radius);
-        case Kind::slab:
-            return sd_slab(p, b[0].center, b[0].radius, b[1].center, b[1].radius, b[2].center, b[2].radius);
-    }
-    return kInf;
-}
-
-// F(p) and its gradient with respect to the closest primitive's balls: exact for a sphere,
-// forward differences for cones and slabs (their distances are piecewise smooth).
-Row residual_row(const Envelope& env, const std::vector<Ball>& balls, const Vec3& p, double g) {
-    Row row;
-    uint32_t which = 0;
-    const double f = env.F(p, which);
-    row.r = f - g;
-    const Primitive& q = env.primitives()[which];
-    row.nballs = q.kind == Kind::sphere ? 1 : q.kind == Kind::cone ? 2 : 3;
-    Ball b[3];
-    for (int t = 0; t < row.nballs; ++t) {
-        row.ball[t] = q.v[t];
-        b[t] = balls[q.v[t]];
-    }
-    if (q.kind == Kind::sphere) {
-        const Vec3 w = p - b[0].center;
-        const double n = w.norm();
-        const Vec3 u = n > 0 ? Vec3(w / n) : Vec3::Zero();
-        for (int k = 0; k < 3; ++k) row.d[k] = -u[k];
-        row.d[3] = -1;
-        return row;
-    }
-    constexpr double h = 1e-7;
-    const double f0 = sd_of(q.kind, b, p);
-    for (int t = 0; t < row.nballs; ++t) {
-        for (int k = 0; k < 4; ++k) {
-            Ball saved = b[t];
-            if (k < 3) b[t].center[k] += h; else b[t].radius += h;
-            row.d[4 * t + k] = (sd_of(q.kind, b, p) - f0) / h;
-            b[t] = saved;
+// Signed distance of primitive q of these balls at p and the sphere of q that attains it.
+double sd_nearest(const Primitive& q, const std::vector<Ball>& balls, const Vec3& p, NearestSphere& at) {
+    const Ball& a = balls[q.v[0]];
+    switch (q.kind) {
+        case Kind::sphere: {
+            at = NearestSphere{};
+            at.w[0] = 1;
+            const Vec3 w = p - a.center;
+            const double n = w.norm();
+            if (n > 0) at.u = w / n;
+            return n - a.radius;
+        }
+        case Kind::cone: {
+            const Ball& b = balls[q.v[1]];
+            return sd_cone(p, a.center, a.radius, b.center, b.radius, &at);
+        }
+        case Kind::slab: {
+            const Ball& b = balls[q.v[1]];
+            const Ball& c = balls[q.v[2]];
+            return sd_slab(p, a.center, a.radius, b.center, b.radius, c.center, c.radius, &at);
         }
     }
-    return row;
+    return kInf;
 }
 
 class Fitter {
@@ -95,30 +78,70 @@ public:
         surface_ = sample_surface(mesh, opt.surface_samples, opt.seed ^ 0x3C6EF372FE94F82Bull);
     }
 
-    // The residual rows of the skeleton with these balls, and their maximum |r|. False if cancelled.
-    bool rows(const Skeleton& sk, std::vector<Row>& out, double& max_abs) const {
+    // The residuals of the skeleton with these balls and their maximum |r|, drawing `drawn`
+    // points on the primitives' boundary pieces. False if cancelled.
+    bool residuals(const Skeleton& sk, double drawn, Residuals& out) const {
         const Envelope env(sk.balls, envelope_primitives(sk));
-        std::vector<Vec3> boundary;
-        const double tol = 1e-9;
-        if (!sample_boundary(env, boundary_pieces(sk), opt_.envelope_samples, opt_.seed ^ 0xA54FF53A5F1D36F1ull,
-                             tol, threads_, Monitor{}, "fit", 0, 1, boundary))
-            return false;
+        if (!boundary_samples(env, boundary_pieces(sk), drawn, out)) return false;
+        out.prims = env.primitives();
         const size_t ns = surface_.size();
-        out.assign(ns + boundary.size(), Row{});
-        if (!parallel_for(out.size(), threads_, kBatch, Monitor{}, "fit", [&](size_t b, size_t e) {
+        out.r.assign(ns + out.boundary.size(), 0);
+        out.which.assign(out.r.size(), 0);
+        if (!parallel_for(out.r.size(), threads_, kBatch, Monitor{}, "fit", [&](size_t b, size_t e) {
                 for (size_t i = b; i < e; ++i) {
-                    if (i < ns) {
-                        out[i] = residual_row(env, sk.balls, surface_[i], 0);
-                    } else {
-                        const Vec3& x = boundary[i - ns];
-                        out[i] = residual_row(env, sk.balls, x, signed_distance(x));
-                    }
+                    const Vec3& x = i < ns ? surface_[i] : out.boundary[i - ns];
+                    const double g = i < ns ? 0 : signed_distance(x);
+                    out.r[i] = env.F(x, out.which[i]) - g;
                 }
             }))
             return false;
-        max_abs = 0;
-        for (const Row& r : out) max_abs = std::max(max_abs, std::abs(r.r));
+        out.max_abs = 0;
+        for (double r : out.r) out.max_abs = std::max(out.max_abs, std::abs(r));
+        double sum = 0;
+        if (out.max_abs > 0)
+            for (double r : out.r) sum += std::pow(std::abs(r) / out.max_abs, opt_.power);
+        out.lp = out.r.empty() ? 0 : out.max_abs * std::pow(sum / double(out.r.size()), 1 / opt_.power);
         return !monitor_.cancelled();
+    }
+
+    // Points of the boundary of E: `drawn` points spread over the pieces by area, those strictly
+    // inside another primitive dropped. Each piece draws from a random stream of its own (seeded
+    // by its index), so from one iterate to the next its samples move with it instead of being
+    // redrawn: the residuals of a trial and of the iterate it starts from are comparable.
+    bool boundary_samples(const Envelope& env, const std::vector<Piece>& pieces, double drawn, Residuals& out) const {
+        double total = 0;
+        for (const Piece& pc : pieces) total += pc.area;
+        std::vector<Vec3> cand;
+        if (total > 0) {
+            cand.reserve(size_t(drawn) + pieces.size());
+            for (size_t k = 0; k < pieces.size(); ++k) {
+                Rng rng(opt_.seed ^ (0xA54FF53A5F1D36F1ull + 0x9E3779B97F4A7C15ull * (k + 1)));
+                const size_t cnt = size_t(std::floor(drawn * pieces[k].area / total + rng.uniform()));
+                for (size_t j = 0; j < cnt; ++j) cand.push_back(sample_piece(pieces[k], rng));
+            }
+        }
+        std::vector<char> keep(cand.size(), 0);
+        constexpr double tol = 1e-9;
+        if (!parallel_for(cand.size(), threads_, kBatch, Monitor{}, "fit", [&](size_t b, size_t e) {
+                for (size_t i = b; i < e; ++i) keep[i] = env.F(cand[i], -tol) > -tol;
+            }))
+            return false;
+        out.boundary.clear();
+        for (size_t i = 0; i < cand.size(); ++i)
+            if (keep[i]) out.boundary.push_back(cand[i]);
+        out.drawn = cand.size();
+        return true;
+    }
+
+    // How many boundary points to draw at every iterate: as many as give envelope_samples kept
+    // points on the connected skeleton (the share kept varies little while the balls move).
+    bool boundary_draw(const Skeleton& sk, double& drawn) const {
+        const Envelope env(sk.balls, envelope_primitives(sk));
+        Residuals probe;
+        if (!boundary_samples(env, boundary_pieces(sk), opt_.envelope_samples, probe)) return false;
+        const double kept = probe.drawn ? double(probe.boundary.size()) / double(probe.drawn) : 1.0;
+        drawn = double(opt_.envelope_samples) / std::max(kept, 0.05);
+        return true;
     }
 
     // Distance to the surface, negative inside. The side is that of the closest triangle's plane
@@ -142,46 +165,77 @@ public:
     }
 
     // The damped, weighted Gauss-Newton step (to subtract from the parameters), 4 per ball.
-    Eigen::VectorXd step(const std::vector<Row>& rows, double max_abs, size_t nb, double damping) const {
-        const size_t n = 4 * nb;
-        std::vector<Eigen::Triplet<double>> trip;
-        trip.reserve(rows.size() * 16);
-        Eigen::VectorXd grad = Eigen::VectorXd::Zero(Eigen::Index(n));
-        const double scale = max_abs > 0 ? max_abs : 1;
-        for (const Row& r : rows) {
-            const double w = std::pow(std::max(std::abs(r.r) / scale, 1e-3), opt_.power - 2);
-            const int m = 4 * r.nballs;
-            Eigen::Index idx[12];
-            for (int t = 0; t < r.nballs; ++t)
-                for (int k = 0; k < 4; ++k) idx[4 * t + k] = Eigen::Index(4 * r.ball[t] + uint32_t(k));
+    // Each residual's gradient is that of its closest primitive (NearestSphere), so the normal
+    // equations are summed per primitive in dense 12 x 12 blocks, then scattered.
+    Eigen::VectorXd step(const Residuals& res, const std::vector<Ball>& balls, double damping) const {
+        const size_t n = 4 * balls.size();
+        const Eigen::Index N = Eigen::Index(n);
+        const size_t np = res.prims.size();
+        std::vector<double> block(np * 144, 0.0);
+        Eigen::VectorXd grad = Eigen::VectorXd::Zero(N);
+        const double scale = res.max_abs > 0 ? res.max_abs : 1;
+        const size_t ns = surface_.size();
+        for (size_t i = 0; i < res.r.size(); ++i) {
+            const Primitive& q = res.prims[res.which[i]];
+            const int nb = q.kind == Kind::sphere ? 1 : q.kind == Kind::cone ? 2 : 3;
+            NearestSphere at;
+            sd_nearest(q, balls, i < ns ? surface_[i] : res.boundary[i - ns], at);
+            double d[12];
+            for (int t = 0; t < nb; ++t) {
+                for (int k = 0; k < 3; ++k) d[4 * t + k] = -at.w[t] * at.u[k];
+                d[4 * t + 3] = -at.w[t];
+            }
+            const double r = res.r[i];
+            const double w = std::pow(std::max(std::abs(r) / scale, 1e-3), opt_.power - 2);
+            const int m = 4 * nb;
+            double* B = &block[144 * size_t(res.which[i])];
             for (int a = 0; a < m; ++a) {
-                if (r.d[a] == 0) continue;
-                grad[idx[a]] += w * r.d[a] * r.r;
-                for (int c = 0; c < m; ++c)
-                    if (r.d[c] != 0) trip.emplace_back(idx[a], idx[c], w * r.d[a] * r.d[c]);
+                if (d[a] == 0) continue;
+                grad[Eigen::Index(4 * q.v[a / 4] + uint32_t(a % 4))] += w * d[a] * r;
+                const double wa = w * d[a];
+                for (int c = 0; c < m; ++c) B[12 * a + c] += wa * d[c];
             }
         }
-        const Eigen::Index N = Eigen::Index(n);
+        std::vector<Eigen::Triplet<double>> trip;
+        trip.reserve(np * 144);
+        for (size_t j = 0; j < np; ++j) {
+            const Primitive& q = res.prims[j];
+            const int m = q.kind == Kind::sphere ? 4 : q.kind == Kind::cone ? 8 : 12;
+            const double* B = &block[144 * j];
+            for (int a = 0; a < m; ++a)
+                for (int c = 0; c < m; ++c)
+                    if (B[12 * a + c] != 0)
+                        trip.emplace_back(Eigen::Index(4 * q.v[a / 4] + uint32_t(a % 4)),
+                                          Eigen::Index(4 * q.v[c / 4] + uint32_t(c % 4)), B[12 * a + c]);
+        }
+        // every diagonal entry is present (damping and Tikhonov terms), also for unseen parameters
+        for (Eigen::Index i = 0; i < N; ++i) trip.emplace_back(i, i, 0.0);
         Eigen::SparseMatrix<double> H(N, N);
         H.setFromTriplets(trip.begin(), trip.end());
-        double mean_diag = 0;
-        for (Eigen::Index i = 0; i < H.rows(); ++i) mean_diag += H.coeff(i, i);
-        mean_diag = std::max(mean_diag / double(n), 1e-12);
-        Eigen::SparseMatrix<double> D(N, N);
-        std::vector<Eigen::Triplet<double>> diag;
-        for (Eigen::Index i = 0; i < H.rows(); ++i)
-            diag.emplace_back(i, i, damping * H.coeff(i, i) + opt_.regularization * mean_diag);
-        D.setFromTriplets(diag.begin(), diag.end());
-        Eigen::SparseMatrix<double> A = H + D;
-        Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(A);
-        if (ldlt.info() != Eigen::Success) return Eigen::VectorXd::Zero(Eigen::Index(n));
+        const Eigen::VectorXd hd = H.diagonal();
+        const double mean_diag = std::max(hd.sum() / double(n), 1e-12);
+        for (Eigen::Index i = 0; i < N; ++i) H.coeffRef(i, i) += damping * hd[i] + opt_.regularization * mean_diag;
+        Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(H);
+        if (ldlt.info() != Eigen::Success) return Eigen::VectorXd::Zero(N);
         Eigen::VectorXd x = ldlt.solve(grad);
-        if (!x.allFinite()) return Eigen::VectorXd::Zero(Eigen::Index(n));
+        if (!x.allFinite()) return Eigen::VectorXd::Zero(N);
         return x;
     }
 
-    // balls - alpha * dx, each ball projected into the shape.
-    std::vector<Ball> moved(const std::vector<Ball>& balls, const Eigen::VectorXd& dx, double alpha) const {
+    // balls - alpha * dx, each ball projected into the shape: a centre that would leave it stays,
+    // a radius is at most the centre's distance to the surface plus the ball's allowance.
+    // Each ball's allowance over its centre's distance to the surface: radius_tolerance, or the
+    // excess the connected ball already had if larger (the connection's balls touch samples, not
+    // the surface between them; forcing them in at once would open gaps the fit then has to close).
+    std::vector<double> allowance(const std::vector<Ball>& balls) const {
+        std::vector<double> out(balls.size(), opt_.radius_tolerance);
+        for (size_t i = 0; i < balls.size(); ++i)
+            out[i] = std::max(opt_.radius_tolerance, balls[i].radius - distance_->distance(balls[i].center));
+        return out;
+    }
+
+    std::vector<Ball> moved(const std::vector<Ball>& balls, const Eigen::VectorXd& dx, double alpha,
+                            const std::vector<double>& allow) const {
         std::vector<Ball> out = balls;
         for (size_t i = 0; i < balls.size(); ++i) {
             Ball b = balls[i];
@@ -190,7 +244,8 @@ public:
             if (winding_->inside(c)) b.center = c;
             const double dist = distance_->distance(b.center);
             const double r = b.radius - alpha * dx[o + 3];
-            b.radius = std::clamp(r, 0.25 * balls[i].radius, dist + opt_.radius_tolerance);
+            // the surface bound wins over the lower one (a quarter of the radius before the step)
+            b.radius = std::min(std::max(r, 0.25 * balls[i].radius), dist + allow[i]);
             out[i] = b;
         }
         return out;
@@ -232,39 +287,49 @@ Status fit_impl(const CandidateSet& set, const Selection& sel, const FitOptions&
     canonicalize(sk);
     auto cancelled = [] { return fail(Code::cancelled, "fit: cancelled"); };
     const Fitter fitter(set, opt, monitor, resolve_threads(opt.threads));
-    std::vector<Row> rows;
-    double err = 0;
-    if (!fitter.rows(sk, rows, err)) return cancelled();
-    stats.error_before = err;
+    double drawn = 0;
+    if (!fitter.boundary_draw(sk, drawn)) return cancelled();
+    // The connected skeleton: its largest residual is the error before, and it is the best so far.
+    Residuals res;
+    if (!fitter.residuals(sk, drawn, res)) return cancelled();
+    stats.error_before = res.max_abs;
     std::vector<Ball> best = sk.balls;
-    double best_err = err, damping = 1e-3;
+    double best_err = res.max_abs;
+    // The iterates start from its projection (radius bound; the identity unless a ball's centre is
+    // outside): a trial is compared with a feasible iterate, so that a step is not refused for the
+    // projection's change alone.
+    const std::vector<double> allow = fitter.allowance(sk.balls);
+    sk.balls = fitter.moved(sk.balls, Eigen::VectorXd::Zero(Eigen::Index(4 * sk.balls.size())), 0, allow);
+    if (!fitter.residuals(sk, drawn, res)) return cancelled();
+    if (res.max_abs < best_err) {
+        best_err = res.max_abs;
+        best = sk.balls;
+    }
+    double damping = 1e-3;
     Skeleton trial = sk;
+    Residuals trial_res;
     for (uint32_t it = 0; it < opt.iterations; ++it) {
         if (!monitor.report("fit", double(it) / opt.iterations)) return cancelled();
         ++stats.iterations;
-        const Eigen::VectorXd dx = fitter.step(rows, err, sk.balls.size(), damping);
+        const Eigen::VectorXd dx = fitter.step(res, sk.balls, damping);
         bool taken = false;
         for (double alpha : {1.0, 0.5, 0.25}) {
-            trial.balls = fitter.moved(sk.balls, dx, alpha);
-            std::vector<Row> trial_rows;
-            double trial_err = 0;
-            if (!fitter.rows(trial, trial_rows, trial_err)) return cancelled();
-            if (trial_err < err) {
+            trial.balls = fitter.moved(sk.balls, dx, alpha, allow);
+            if (!fitter.residuals(trial, drawn, trial_res)) return cancelled();
+            if (trial_res.lp < res.lp) {
                 sk.balls = trial.balls;
-                rows = std::move(trial_rows);
-                err = trial_err;
+                std::swap(res, trial_res);
                 taken = true;
                 break;
             }
         }
-        if (!taken) {
-            damping *= 10;
-            continue;
-        }
+        // The trials are drawn like the iterate (boundary_samples), so a refusal is no sampling
+        // accident: a more damped step in the same direction would be refused as well.
+        if (!taken) break;
         ++stats.accepted;
         damping = std::max(damping / 3, 1e-6);
-        if (err < best_err) {
-            best_err = err;
+        if (res.max_abs < best_err) {
+            best_err = res.max_abs;
             best = sk.balls;
         }
     }

@@ -5,13 +5,17 @@
 // The residual at a point p is F(p) - g(p): F the signed distance to E, g the signed distance to
 // the surface (negative inside). It is taken at surface samples (g = 0: the surface is missed or
 // overshot) and at samples of the boundary of E (F = 0: a bulge out of the shape or a crevice of
-// the union deep inside it), so both one-sided Hausdorff distances are seen. Levenberg-Marquardt
-// on these residuals, weighted |r|^(p-2) (an L^p fit leaning towards the maximum), with a Tikhonov
-// term on the step; a step is tried at full, half and quarter length and taken only if the
-// maximum residual falls; the best iterate by that maximum is kept. After every step each ball
-// is projected back: its centre stays inside the shape (winding number > 1/2; a centre that
-// would leave keeps its old position) and its radius is at most the centre's distance to the
-// surface plus radius_tolerance.
+// the union deep inside it), so both one-sided Hausdorff distances are seen. Each boundary piece
+// draws its samples from a random stream of its own, so they move with the balls and the
+// residuals of successive iterates are comparable. Levenberg-Marquardt on these residuals,
+// weighted |r|^(p-2) (an L^p fit leaning towards the maximum), with a Tikhonov term on the step
+// and analytic gradients (the sphere of the closest primitive that attains F). A step is tried at
+// full, half and quarter length and taken if the L^p mean of the residuals falls; the fit stops at
+// the first step refused at all three; the best iterate by the maximum residual is kept (the
+// connected skeleton included). Every iterate is projected: each centre stays inside the shape
+// (winding number > 1/2; a centre that would leave keeps its old position) and each radius is at
+// most the centre's distance to the surface plus an allowance: radius_tolerance, or the excess the
+// connected ball had over its centre's distance if larger.
 #pragma once
 #include "candidates.h"
 #include "selection.h"
@@ -20,12 +24,12 @@
 namespace ca {
 
 struct FitOptions {
-    uint32_t iterations = 10;          // Levenberg-Marquardt steps (each tries up to 3 lengths)
+    uint32_t iterations = 10;          // at most this many Levenberg-Marquardt steps (each tries up to 3 lengths)
     uint32_t surface_samples = 4000;   // surface residual points
-    uint32_t envelope_samples = 4000;  // boundary-of-E residual points (redrawn each iterate)
+    uint32_t envelope_samples = 4000;  // boundary-of-E residual points (about; moved with the balls)
     double power = 6;                  // weights |r|^(power-2)
     double regularization = 0.1;       // Tikhonov weight on the step, relative to the mean curvature
-    double radius_tolerance = 0.002;   // internal units: radius <= distance to surface + this
+    double radius_tolerance = 0.002;   // internal units: radius <= distance to surface + this (or + the connected excess)
     uint64_t seed = 1;
     int32_t threads = 0;               // 0 = all cores
 };

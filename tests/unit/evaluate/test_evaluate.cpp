@@ -166,6 +166,53 @@ TEST_CASE("sd_slab matches brute force over barycentric coordinates") {
     }
 }
 
+TEST_CASE("the attaining sphere gives the same distance and its derivatives") {
+    // The value with NearestSphere is the one without; -w[i] u and -w[i] are the derivatives
+    // with respect to ball i's centre and radius (checked by central differences where smooth).
+    Rng rng(19);
+    int compared = 0;
+    for (int k = 0; k < 400; ++k) {
+        Vec3 c[3] = {random_vec(rng, 1), random_vec(rng, 1), random_vec(rng, 1)};
+        double r[3] = {0.5 * rng.uniform(), 0.5 * rng.uniform(), 0.5 * rng.uniform()};
+        const bool slab = k % 2 == 0;
+        if (k % 8 == 1) {   // one ball swallows the other: the cone is a sphere
+            r[0] = 1.5;
+            c[1] = c[0] + random_vec(rng, 0.3);
+        }
+        const int nb = slab ? 3 : 2;
+        const Vec3 p = random_vec(rng, 2);
+        auto sd = [&](NearestSphere* at) {
+            return slab ? sd_slab(p, c[0], r[0], c[1], r[1], c[2], r[2], at) : sd_cone(p, c[0], r[0], c[1], r[1], at);
+        };
+        NearestSphere at;
+        const double d = sd(&at);
+        INFO("case " << k);
+        CHECK(d == sd(nullptr));
+        double wsum = 0;
+        for (int i = 0; i < nb; ++i) wsum += at.w[i];
+        CHECK(wsum == doctest::Approx(1));
+        CHECK(at.u.norm() == doctest::Approx(1));
+        const double h = 1e-6;
+        for (int i = 0; i < nb; ++i) {
+            for (int j = 0; j < 4; ++j) {
+                double* x = j < 3 ? &c[i][j] : &r[i];
+                const double x0 = *x;
+                *x = x0 + h;
+                const double up = sd(nullptr);
+                *x = x0 - h;
+                const double down = sd(nullptr);
+                *x = x0;
+                const double fd = (up - down) / (2 * h);
+                if (std::abs((up - d) - (d - down)) > 1e-9) continue;   // a kink: not smooth here
+                const double analytic = j < 3 ? -at.w[i] * at.u[j] : -at.w[i];
+                CHECK(std::abs(analytic - fd) < 1e-5);
+                ++compared;
+            }
+        }
+    }
+    CHECK(compared > 2000);
+}
+
 TEST_CASE("sd_slab of equal radii is the distance to a thick triangle") {
     const Vec3 c1(0, 0, 0), c2(1, 0, 0), c3(0, 1, 0);
     CHECK(sd_slab(Vec3(0.2, 0.2, 1), c1, 0.1, c2, 0.1, c3, 0.1) == doctest::Approx(0.9));
