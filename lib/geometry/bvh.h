@@ -151,7 +151,9 @@ inline Bvh build_bvh(const Mesh& mesh, std::vector<uint32_t> ids, uint32_t leaf_
 }
 
 // The BVH over a mesh's valid triangles and their corners in BVH order: what the winding
-// number and the distance queries both walk, built once for both.
+// number and the distance queries both walk, built once for both. The corner copy tests `stop`
+// every kStopCheckItems triangles too (it writes as much memory as the build); a stopped build
+// returns an empty tree.
 struct TriangleTree {
     Bvh bvh;
     std::vector<std::array<Vec3, 3>> tris;   // triangle corners, in bvh.order
@@ -163,6 +165,7 @@ inline std::shared_ptr<const TriangleTree> build_triangle_tree(const Mesh& mesh,
     tree->bvh = build_bvh(mesh, valid_triangles(mesh), 8, threads, stop);
     tree->tris.reserve(tree->bvh.order.size());
     for (uint32_t t : tree->bvh.order) {
+        if (stop && tree->tris.size() % kStopCheckItems == 0 && stop()) return std::make_shared<TriangleTree>();
         const Tri& f = mesh.triangles[t];
         tree->tris.push_back({mesh.vertices[f[0]], mesh.vertices[f[1]], mesh.vertices[f[2]]});
     }

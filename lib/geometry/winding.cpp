@@ -8,6 +8,7 @@
 #include "far_field.h"
 #include "parallel.h"
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 
@@ -83,10 +84,29 @@ WindingNumber::WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, d
     // is O(F) apart from the radius (the farthest corner from the centre, over the node's triangles:
     // farthest_corner prunes that walk by the node boxes). The root's two subtrees are separate
     // id ranges, [1, right) and [right, end), done at once with threads > 1.
-    m.exp.resize(m.bvh.nodes.size());
-    std::vector<double> weight(m.bvh.nodes.size(), 0.0);   // total area per node
-    std::vector<Vec3> weighted(m.bvh.nodes.size());        // area-weighted centroid sum per node
-    std::vector<detail::Moments> moments(m.bvh.nodes.size());   // for the parents' shifts
+    const size_t count = m.bvh.nodes.size();
+    if (count == 0) return;
+    std::vector<double> weight;              // total area per node
+    std::vector<Vec3> weighted;              // area-weighted centroid sum per node
+    std::vector<detail::Moments> moments;    // for the parents' shifts
+    // The per-node arrays are reserved (address space only) and then zero-filled kStopCheckItems
+    // nodes at a time with a stop test before each chunk: filling them touches every page, which
+    // a stop request should not have to wait for (nor free afterwards).
+    m.exp.reserve(count);
+    weight.reserve(count);
+    weighted.reserve(count);
+    moments.reserve(count);
+    for (size_t filled = 0; filled < count;) {
+        if (stop && stop()) {
+            impl_.reset();
+            return;
+        }
+        filled = std::min<size_t>(count, filled + detail::kStopCheckItems);
+        m.exp.resize(filled);
+        weight.resize(filled, 0.0);
+        weighted.resize(filled, Vec3::Zero());
+        moments.resize(filled);
+    }
     std::atomic<bool> halted{false};
     auto expand = [&](size_t n) {
         // a node's radius pass reads all its triangles: near the root a test every node, below
@@ -140,8 +160,6 @@ WindingNumber::WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, d
         moments[n] = detail::Moments(e);
         m.exp[n] = detail::FarField(e, m.beta);
     };
-    const size_t count = m.bvh.nodes.size();
-    if (count == 0) return;
     const detail::BvhNode& root = m.bvh.nodes[0];
     const size_t right = root.leaf() ? 1 : root.right;
     if (threads > 1 && !root.leaf()) {

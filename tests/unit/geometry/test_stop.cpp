@@ -34,8 +34,29 @@ TEST_CASE("stop requests: BVH, winding tree and sampling stop within a few thous
         CHECK(stopped->tris.empty());
         CHECK(n == after + 1);   // no test after the one that said stop
     }
+    // the corner copy after the BVH tests the stop too: stopped right after the BVH's last test
+    int bvh_calls = 0;
+    const std::function<bool()> count_bvh = [&] { return ++bvh_calls, false; };
+    CHECK(detail::build_bvh(m, detail::valid_triangles(m), 8, 1, count_bvh).order == plain->bvh.order);
+    CHECK(bvh_calls < calls);
+    {
+        int n = 0;
+        const std::function<bool()> after_bvh = [&] { return ++n > bvh_calls; };
+        const auto stopped = detail::build_triangle_tree(m, 1, after_bvh);
+        CHECK(stopped->bvh.nodes.empty());
+        CHECK(stopped->tris.empty());
+        CHECK(n == bvh_calls + 1);
+    }
     const Vec3 inside_tube(1.0, 0.0, 0.0);
+    // the winding tree tests the stop before each kStopCheckItems-node chunk of its zero-filled
+    // arrays, then along the expansion pass (every kStopCheckItems nodes and at every larger node)
+    const auto& nodes = full->bvh.nodes;
+    size_t expected = (nodes.size() + detail::kStopCheckItems - 1) / detail::kStopCheckItems;
+    for (size_t i = 0; i < nodes.size(); ++i)
+        expected += i % detail::kStopCheckItems == 0 || nodes[i].end - nodes[i].begin > detail::kStopCheckItems;
+    calls = 0;
     CHECK(WindingNumber(full, 2.0, 1, never).inside(inside_tube));
+    CHECK(size_t(calls) == expected);
     CHECK(WindingNumber(full, 2.0, 1, [] { return true; })(inside_tube) == 0.0);
 
     std::vector<Vec3> s;
