@@ -1,6 +1,7 @@
 // ca_candidates.cpp: step 1 at the C boundary: candidates from a surface view or from the
 // caller's arrays, and the candidate set's getters.
 #include "conversions.h"
+#include "parallel.h"
 #include "results.h"
 #include "struct_size.h"
 
@@ -45,7 +46,8 @@ ca_status ca_candidates(ca_context* ctx, const ca_surface_view* surface, const c
         st = read_surface(surface, true, raw, normals, &trust);
         if (!st.ok()) return st;
         ca::Surface surf;
-        st = ca::prepare_surface(std::move(raw), std::move(normals), surf, true, trust, monitor);
+        st = ca::prepare_surface(std::move(raw), std::move(normals), surf, true, trust, monitor,
+                                 ca::resolve_threads(ctx->desc.threads));
         if (!st.ok()) return st;
         if (trust == ca::PointNormals::trusted && surf.normals_source == ca::NormalSource::oriented)
             ctx->log(2, "the point normals point against each other at " +

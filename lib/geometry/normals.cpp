@@ -28,13 +28,13 @@ bool fit_plane(const std::vector<Vec3>& pts, const size_t* idx, size_t count, Ve
     return true;
 }
 
-std::vector<Vec3> estimate_normals(const std::vector<Vec3>& pts, size_t k) {
+std::vector<Vec3> estimate_normals(const std::vector<Vec3>& pts, size_t k, int threads) {
     std::vector<Vec3> normals(pts.size(), Vec3(0, 0, 1));
     if (pts.size() < 3) return normals;
     for_each_neighbourhood(pts, k, [&](size_t i, const size_t* idx, const double*, size_t found) {
         Vec3 mean, n;
         if (fit_plane(pts, idx, found, mean, n)) normals[i] = n;
-    });
+    }, threads);
     return normals;
 }
 
@@ -134,14 +134,23 @@ size_t tree_patches(const std::vector<Vec3>& pts, const std::vector<Vec3>& norma
 
 }  // namespace
 
-void orient_normals(const std::vector<Vec3>& pts, std::vector<Vec3>& normals, size_t k, bool estimated) {
+void orient_normals(const std::vector<Vec3>& pts, std::vector<Vec3>& normals, size_t k, bool estimated, int threads) {
     const size_t n = pts.size();
     if (n < 2 || normals.size() != n) return;
-    std::vector<std::vector<uint32_t>> adj(n);
+    // the searches in parallel (each point fills its own row), the symmetric graph in point order
+    const size_t want = std::min(k + 1, n);
+    std::vector<uint32_t> knn(n * want);
+    std::vector<uint32_t> found_at(n, 0);
     for_each_neighbourhood(pts, k, [&](size_t i, const size_t* idx, const double*, size_t found) {
-        for (size_t j = 0; j < found; ++j)
-            if (idx[j] != i) adj[i].push_back(uint32_t(idx[j])), adj[idx[j]].push_back(uint32_t(i));
-    });
+        for (size_t j = 0; j < found; ++j) knn[i * want + j] = uint32_t(idx[j]);
+        found_at[i] = uint32_t(found);
+    }, threads);
+    std::vector<std::vector<uint32_t>> adj(n);
+    for (uint32_t i = 0; i < n; ++i)
+        for (size_t j = 0; j < found_at[i]; ++j) {
+            const uint32_t o = knn[i * want + j];
+            if (o != i) adj[i].push_back(o), adj[o].push_back(i);
+        }
     // roots: the highest unvisited point first
     std::vector<uint32_t> by_height(n);
     for (uint32_t i = 0; i < n; ++i) by_height[i] = i;
@@ -176,21 +185,24 @@ void orient_normals(const std::vector<Vec3>& pts, std::vector<Vec3>& normals, si
     // the global step: each patch of the tree signed by the winding-number vote
     std::vector<uint32_t> label;
     const size_t count = tree_patches(pts, normals, parent, estimated, std::max<size_t>(kMinPatch, n / 200), label);
-    vote_patch_signs(pts, normals, label, count);
+    vote_patch_signs(pts, normals, label, count, threads);
 }
 
-double sign_disagreement(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, size_t k) {
+double sign_disagreement(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, size_t k, int threads) {
     if (pts.size() < 2 || normals.size() != pts.size()) return 0;
-    size_t counted = 0, against = 0;
+    // per point (its own slot), summed afterwards
+    std::vector<uint32_t> counted_at(pts.size(), 0), against_at(pts.size(), 0);
     for_each_neighbourhood(pts, k, [&](size_t i, const size_t* idx, const double*, size_t found) {
         for (size_t j = 0; j < found; ++j) {
             if (idx[j] == i) continue;
             const Vec3 d = pts[idx[j]] - pts[i];
             if (!(d.squaredNorm() > 0)) continue;
-            ++counted;
-            against += !agrees(d, normals[i], normals[idx[j]]);
+            ++counted_at[i];
+            against_at[i] += !agrees(d, normals[i], normals[idx[j]]);
         }
-    });
+    }, threads);
+    size_t counted = 0, against = 0;
+    for (size_t i = 0; i < pts.size(); ++i) counted += counted_at[i], against += against_at[i];
     return counted ? double(against) / double(counted) : 0.0;
 }
 

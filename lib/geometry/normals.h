@@ -9,7 +9,9 @@
 // (patch_signs.h). The global sign (outward) is fixed later by the winding number
 // (point_cloud.cpp). sign_disagreement: the
 // fraction of neighbouring pairs whose signs disagree by the same rule, a cheap check that normals
-// given as oriented really are.
+// given as oriented really are. `threads`: the per-point loops are split across that many
+// threads; every result is the same for any count (each point writes only its own slot, sums
+// are taken in point order).
 #pragma once
 #include "common.h"
 
@@ -18,17 +20,19 @@ namespace ca {
 // The least-squares plane of pts[idx[0..count)): its centroid and unit normal (direction of least
 // variance, sign arbitrary); false if degenerate.
 bool fit_plane(const std::vector<Vec3>& pts, const size_t* idx, size_t count, Vec3& mean, Vec3& normal);
-std::vector<Vec3> estimate_normals(const std::vector<Vec3>& pts, size_t k = 16);
+std::vector<Vec3> estimate_normals(const std::vector<Vec3>& pts, size_t k = 16, int threads = 1);
 // `estimated`: PCA normals, which average across thin parts and edges, so the facing rule has
 // nothing to go by there: every pair by the side-by-side rule, weights 1 - |n_i . n_j| only.
-void orient_normals(const std::vector<Vec3>& pts, std::vector<Vec3>& normals, size_t k = 16, bool estimated = false);
+void orient_normals(const std::vector<Vec3>& pts, std::vector<Vec3>& normals, size_t k = 16, bool estimated = false,
+                    int threads = 1);
 
 // The fraction of neighbouring pairs (j among i's k nearest) whose signs disagree: side by side
 // on a smooth part, normals pointing against each other; facing across a thin part, a crease or
 // a sharp edge (the offset well out of both tangent planes), not each point behind the other's
 // tangent plane (nor each in front of it). Consistent normals of a sampled surface give few such
 // pairs (across concave creases), random per-point signs about half.
-double sign_disagreement(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, size_t k = 8);
+double sign_disagreement(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, size_t k = 8,
+                         int threads = 1);
 // Above this sign_disagreement normals given as oriented are not trusted (re-oriented), and
 // oriented or estimated normals are refused: clean sampled clouds stay far below it, clouds with
 // random per-point signs far above (docs/pointclouds.md has the measurements).

@@ -47,7 +47,7 @@ bool follows_surface(const std::vector<Vec3>& given, const std::vector<Vec3>& pc
 }  // namespace
 
 Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool require_normals, PointNormals trust,
-                       const Monitor& monitor) {
+                       const Monitor& monitor, int threads) {
     out = Surface{};
     const size_t nv = raw.vertices.size();
     if (nv == 0) return fail(Code::degenerate_input, "the input has no vertices");
@@ -135,19 +135,19 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
         // winding number when the candidates are built
         out.normals_source = NormalSource::given;
         if (normals.empty()) {
-            normals = estimate_normals(raw.vertices);
+            normals = estimate_normals(raw.vertices, 16, threads);
             out.normals_source = NormalSource::estimated;
         } else {
-            out.disagreement_given = sign_disagreement(raw.vertices, normals);
+            out.disagreement_given = sign_disagreement(raw.vertices, normals, 8, threads);
             if (trust == PointNormals::unoriented || out.disagreement_given > kMaxSignDisagreement)
                 out.normals_source = NormalSource::oriented;
         }
         std::vector<Vec3> given;
         if (out.normals_source == NormalSource::oriented && trust == PointNormals::trusted) given = normals;
         if (out.normals_source != NormalSource::given)
-            orient_normals(raw.vertices, normals, 16, out.normals_source == NormalSource::estimated);
+            orient_normals(raw.vertices, normals, 16, out.normals_source == NormalSource::estimated, threads);
         out.disagreement = out.normals_source == NormalSource::given ? out.disagreement_given
-                                                                     : sign_disagreement(raw.vertices, normals);
+                                                                     : sign_disagreement(raw.vertices, normals, 8, threads);
         // Trusted normals that orientation does not make at least twice as consistent by the pair
         // rule are judged by the winding number instead (patch_signs.h: its residual depends on
         // no offsets between neighbours, which noise makes say little about signs). Unless
@@ -156,9 +156,9 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
         // or the winding number finds them consistent on its own
         const auto keep_given = [&] {
             if (out.disagreement < kSignCheckGain * out.disagreement_given) return false;
-            const double residual = winding_residual(raw.vertices, given);
-            if (winding_residual(raw.vertices, normals) < kSignCheckGain * residual) return false;
-            return residual < kMaxWindingResidual || follows_surface(given, estimate_normals(raw.vertices));
+            const double residual = winding_residual(raw.vertices, given, threads);
+            if (winding_residual(raw.vertices, normals, threads) < kSignCheckGain * residual) return false;
+            return residual < kMaxWindingResidual || follows_surface(given, estimate_normals(raw.vertices, 16, threads));
         };
         if (!given.empty() && keep_given()) {
             normals = std::move(given);
@@ -172,7 +172,7 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
         // so the pair rule would refuse usable clouds
         if (out.normals_source != NormalSource::estimated && !out.sign_check_inconclusive &&
             out.disagreement > kMaxSignDisagreement &&
-            !(trust == PointNormals::unoriented && follows_surface(normals, estimate_normals(raw.vertices))))
+            !(trust == PointNormals::unoriented && follows_surface(normals, estimate_normals(raw.vertices, 16, threads))))
             return fail(Code::invalid_input,
                         "the point cloud's normals could not be oriented consistently: after orientation " +
                             std::to_string(int(std::lround(100 * out.disagreement))) +

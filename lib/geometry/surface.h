@@ -49,8 +49,11 @@ struct Surface {
 // surface); re-oriented normals that still disagree are refused (invalid_input); estimated ones are judged by the
 // winding number when the candidates are built. Takes its arguments by value. The welding and
 // merge test `monitor` every Monitor::kCheckEvery items; a stop returns monitor.stop_status("surface").
+// A point cloud's normals are estimated, checked and oriented on `threads` threads (>= 1; the
+// result is the same for any count).
 Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool require_normals = true,
-                       PointNormals trust = PointNormals::trusted, const Monitor& monitor = Monitor{});
+                       PointNormals trust = PointNormals::trusted, const Monitor& monitor = Monitor{},
+                       int threads = 1);
 
 // Axis-aligned bounding box of points (min, max); empty input gives (0, 0).
 std::pair<Vec3, Vec3> bounding_box(const std::vector<Vec3>& pts);

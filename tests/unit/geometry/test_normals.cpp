@@ -189,3 +189,57 @@ TEST_CASE("normals: exact normals of a noisy thin box are kept as given") {
     CHECK(s.normals_source == NormalSource::given);
     CHECK(s.sign_check_inconclusive);
 }
+
+// The surface stage splits its per-point loops (searches, PCA, the sign checks, the vote's probes
+// and patch pairs) across threads: every count gives bit-identical normals and measures, so no
+// loop may write another point's (or probe's) slot, nor sum in an order that depends on the split.
+TEST_CASE("normals: the surface stage gives the same result on any number of threads") {
+    const shapes::Cloud plate = shapes::sample_cloud(
+        shapes::merged(shapes::box(1.0, 1.0, 0.03), shapes::capsule(0.6, 0.12), Vec3(0.5, 0.5, 0.15)), 3000, 3);
+    const shapes::Cloud caps = shapes::sample_cloud(
+        shapes::merged(shapes::capsule(0.5, 0.1), shapes::capsule(0.5, 0.1), Vec3(0, 0.215, 0)), 3000, 3);
+    const shapes::Cloud noisy = shapes::noisy_cloud(shapes::sample_cloud(shapes::box(1.0, 1.0, 0.04), 5000, 3), 0.005, 0.0);
+    struct Case { const char* name; const shapes::Cloud* cloud; std::vector<Vec3> normals; PointNormals trust; };
+    const Case cases[] = {{"plate, random signs, trusted", &plate, random_signs(plate.normals, 5), PointNormals::trusted},
+                          {"plate, random signs, unoriented", &plate, random_signs(plate.normals, 6), PointNormals::unoriented},
+                          {"two capsules, no normals", &caps, {}, PointNormals::estimate},
+                          {"noisy thin box, exact normals", &noisy, noisy.normals, PointNormals::trusted}};
+    for (const Case& k : cases) {
+        CAPTURE(std::string(k.name));
+        Surface one;
+        const Status st = prepare_surface(Mesh{k.cloud->points, {}}, k.normals, one, true, k.trust, Monitor{}, 1);
+        REQUIRE_MESSAGE(st.ok(), st.message);
+        for (int threads : {2, 3, 7}) {
+            CAPTURE(threads);
+            Surface many;
+            REQUIRE(prepare_surface(Mesh{k.cloud->points, {}}, k.normals, many, true, k.trust, Monitor{}, threads).ok());
+            CHECK(many.normals_source == one.normals_source);
+            CHECK(many.disagreement_given == one.disagreement_given);
+            CHECK(many.disagreement == one.disagreement);
+            CHECK(many.normals == one.normals);
+        }
+    }
+    // the steps on their own, with patches for the vote to sign
+    const std::vector<Vec3> pca = estimate_normals(caps.points);
+    std::vector<Vec3> oriented = random_signs(plate.normals, 7);
+    orient_normals(plate.points, oriented);
+    const double given = sign_disagreement(plate.points, random_signs(plate.normals, 8));
+    const double residual = winding_residual(plate.points, random_signs(plate.normals, 8));
+    std::vector<uint32_t> halves(plate.points.size());
+    for (size_t i = 0; i < halves.size(); ++i) halves[i] = uint32_t(plate.points[i].x() > 0.5) + 2 * (i % 2);
+    std::vector<Vec3> voted = random_signs(plate.normals, 9);
+    const std::vector<Vec3> unvoted = voted;
+    const size_t negated = vote_patch_signs(plate.points, voted, halves, 4);
+    for (int threads : {2, 3, 7}) {
+        CAPTURE(threads);
+        CHECK(estimate_normals(caps.points, 16, threads) == pca);
+        std::vector<Vec3> o = random_signs(plate.normals, 7);
+        orient_normals(plate.points, o, 16, false, threads);
+        CHECK(o == oriented);
+        CHECK(sign_disagreement(plate.points, random_signs(plate.normals, 8), 8, threads) == given);
+        CHECK(winding_residual(plate.points, random_signs(plate.normals, 8), threads) == residual);
+        std::vector<Vec3> v = unvoted;
+        CHECK(vote_patch_signs(plate.points, v, halves, 4, threads) == negated);
+        CHECK(v == voted);
+    }
+}
