@@ -316,6 +316,12 @@ Status fit_impl(const CandidateSet& set, const Selection& sel, const FitOptions&
         for (double alpha : {1.0, 0.5, 0.25}) {
             trial.balls = fitter.moved(sk.balls, dx, alpha, allow);
             if (!fitter.residuals(trial, drawn, trial_res)) return cancelled();
+            // every trial is a projected iterate: one refused on the L^p mean may still have the
+            // lowest maximum residual, the measure the kept skeleton is chosen by
+            if (trial_res.max_abs < best_err) {
+                best_err = trial_res.max_abs;
+                best = trial.balls;
+            }
             if (trial_res.lp < res.lp) {
                 sk.balls = trial.balls;
                 std::swap(res, trial_res);
@@ -324,14 +330,11 @@ Status fit_impl(const CandidateSet& set, const Selection& sel, const FitOptions&
             }
         }
         // The trials are drawn like the iterate (boundary_samples), so a refusal is no sampling
-        // accident: a more damped step in the same direction would be refused as well.
+        // accident. A more damped retry (another direction) is sometimes taken, but the further
+        // iterates it opens cost more residual evaluations than the fit is allowed (docs/fidelity.md).
         if (!taken) break;
         ++stats.accepted;
         damping = std::max(damping / 3, 1e-6);
-        if (res.max_abs < best_err) {
-            best_err = res.max_abs;
-            best = sk.balls;
-        }
     }
     sk.balls = best;
     stats.error_after = best_err;

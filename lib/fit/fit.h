@@ -11,8 +11,8 @@
 // weighted |r|^(p-2) (an L^p fit leaning towards the maximum), with a Tikhonov term on the step
 // and analytic gradients (the sphere of the closest primitive that attains F). A step is tried at
 // full, half and quarter length and taken if the L^p mean of the residuals falls; the fit stops at
-// the first step refused at all three; the best iterate by the maximum residual is kept (the
-// connected skeleton included). Every iterate is projected: each centre stays inside the shape
+// the first step refused at all three; of the connected skeleton and every trial (taken or
+// refused) the one of lowest maximum residual is kept. Every iterate is projected: each centre stays inside the shape
 // (winding number > 1/2; a centre that would leave keeps its old position) and each radius is at
 // most the centre's distance to the surface plus an allowance: radius_tolerance, or the excess the
 // connected ball had over its centre's distance if larger.
