@@ -75,10 +75,12 @@ ca_status ca_select(ca_context* ctx, const ca_candidate_set* set, const ca_selec
         retain_set(set);
         r.set = set;
         double hd_reached = -1;
+        // the delta searches judge each probe as ca_connect and ca_evaluate at their defaults would
+        auto probe_connect = [&] { return connect_options(defaults<ca_connect_options>(), set->core, ctx->desc.threads); };
         if (target_error) {
             ca::TargetErrorOptions te;
             te.target_error = o.target_error;
-            te.connect = connect_options(defaults<ca_connect_options>(), set->core, ctx->desc.threads);
+            te.connect = probe_connect();
             te.evaluate = default_evaluation(ctx->desc.threads);
             ca::TargetErrorResult ter;
             st = ca::select_target_error(set->core, so, te, ctx->monitor(), ter);
@@ -90,7 +92,7 @@ ca_status ca_select(ca_context* ctx, const ca_candidate_set* set, const ca_selec
                                 std::to_string(hd_reached) + " %");
         } else if (lowest_hd) {
             ca::TargetCountHdOptions tc;
-            tc.connect = connect_options(defaults<ca_connect_options>(), set->core, ctx->desc.threads);
+            tc.connect = probe_connect();
             tc.evaluate = default_evaluation(ctx->desc.threads);
             ca::TargetCountHdResult tcr;
             st = ca::select_target_count_hd(set->core, so, tc, ctx->monitor(), tcr);

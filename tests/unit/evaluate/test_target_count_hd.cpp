@@ -7,27 +7,13 @@
 
 #include "candidates.h"
 #include "mesh_io.h"
-#include "support/mesh_convert.h"
+#include "support/fox_candidates.h"
 #include "target_count_hd.h"
 
 #include <cmath>
 #include <string>
 
 namespace {
-
-ca::CandidateSet fox_set() {
-    caio::MeshData data;
-    std::string error;
-    REQUIRE_MESSAGE(caio::read_mesh(std::string(CA_TEST_DATA) + "/fox.obj", data, error), error);
-    ca::Surface surface;
-    REQUIRE(ca::prepare_surface(to_core_mesh(data), {}, surface).ok());
-    ca::CandidateOptions co;
-    co.cover_samples = 800;
-    co.voronoi_samples = 2000;
-    ca::CandidateSet set;
-    REQUIRE(ca::generate_candidates(std::move(surface), co, ca::Monitor{}, set).ok());
-    return set;
-}
 
 ca::TargetCountHdOptions options() {
     ca::TargetCountHdOptions tc;
@@ -62,7 +48,7 @@ void check_result(const ca::TargetCountHdResult& r, const ca::TargetCountHdOptio
 }  // namespace
 
 TEST_CASE("test_target_count_hd: fox: a smaller cover of lower HD wins, and never more than K balls") {
-    const ca::CandidateSet set = fox_set();
+    const ca::CandidateSet set = fox_candidate_set();
     const ca::TargetCountHdOptions tc = options();
     {
         ca::SelectOptions so;
@@ -90,7 +76,7 @@ TEST_CASE("test_target_count_hd: fox: a smaller cover of lower HD wins, and neve
 }
 
 TEST_CASE("test_target_count_hd: invalid options are refused") {
-    const ca::CandidateSet set = fox_set();
+    const ca::CandidateSet set = fox_candidate_set();
     ca::TargetCountHdResult r;
     auto code = [&](const ca::SelectOptions& so, const ca::TargetCountHdOptions& tc) {
         return ca::select_target_count_hd(set, so, tc, ca::Monitor{}, r).code;

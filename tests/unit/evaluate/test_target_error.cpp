@@ -10,27 +10,13 @@
 #include "evaluate.h"
 #include "mesh_io.h"
 #include "selection.h"
-#include "support/mesh_convert.h"
+#include "support/fox_candidates.h"
 #include "target_error.h"
 
 #include <algorithm>
 #include <string>
 
 namespace {
-
-ca::CandidateSet fox_set() {
-    caio::MeshData data;
-    std::string error;
-    REQUIRE_MESSAGE(caio::read_mesh(std::string(CA_TEST_DATA) + "/fox.obj", data, error), error);
-    ca::Surface surface;
-    REQUIRE(ca::prepare_surface(to_core_mesh(data), {}, surface).ok());
-    ca::CandidateOptions co;
-    co.cover_samples = 800;
-    co.voronoi_samples = 2000;
-    ca::CandidateSet set;
-    REQUIRE(ca::generate_candidates(std::move(surface), co, ca::Monitor{}, set).ok());
-    return set;
-}
 
 ca::TargetErrorOptions options(double target) {
     ca::TargetErrorOptions te;
@@ -58,7 +44,7 @@ std::pair<size_t, double> brute(const ca::CandidateSet& set, const ca::TargetErr
 }  // namespace
 
 TEST_CASE("test_target_error: fox: HD <= E with no more balls than any passing probed delta and an unreachable E flagged") {
-    const ca::CandidateSet set = fox_set();
+    const ca::CandidateSet set = fox_candidate_set();
     const double target = 2.6;
     const ca::TargetErrorOptions te = options(target);
     ca::TargetErrorResult r;
@@ -100,7 +86,7 @@ TEST_CASE("test_target_error: fox: HD <= E with no more balls than any passing p
 }
 
 TEST_CASE("test_target_error: invalid options are refused") {
-    const ca::CandidateSet set = fox_set();
+    const ca::CandidateSet set = fox_candidate_set();
     ca::TargetErrorResult r;
     auto code = [&](const ca::SelectOptions& so, const ca::TargetErrorOptions& te) {
         return ca::select_target_error(set, so, te, ca::Monitor{}, r).code;
