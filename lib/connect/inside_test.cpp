@@ -17,6 +17,7 @@
 #include "distance.h"
 #include "hole_caps.h"
 #include "kdtree.h"
+#include "mesh_topology.h"
 #include "point_winding.h"
 #include "winding.h"
 
@@ -43,28 +44,13 @@ constexpr size_t kProbeWindow = 48;
 }  // namespace
 
 bool closed_mesh(const Mesh& mesh) {
-    // half-edges bucketed by their smaller vertex (a counting sort), each stored as its larger
-    // vertex * 2 + (1 if it runs downwards); a bucket sorted, every larger vertex must have as
-    // many upward as downward entries
+    // in the half-edge buckets every larger vertex must have as many upward as downward entries
     const size_t nv = mesh.vertices.size();
     for (const Tri& f : mesh.triangles)
         if (!detail::triangle_ok(mesh, f)) return false;
-    std::vector<uint32_t> start(nv + 1, 0);
-    auto for_each_half_edge = [&](auto&& g) {
-        for (const Tri& f : mesh.triangles)
-            for (int i = 0; i < 3; ++i) {
-                const uint32_t a = f[size_t(i)], b = f[size_t((i + 1) % 3)];
-                if (a != b) g(std::min(a, b), uint64_t(std::max(a, b)) * 2 + (b < a));
-            }
-    };
-    for_each_half_edge([&](uint32_t u, uint64_t) { ++start[u + 1]; });
-    for (size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
-    std::vector<uint64_t> other(start[nv]);
-    std::vector<uint32_t> fill(start.begin(), start.end() - 1);
-    for_each_half_edge([&](uint32_t u, uint64_t key) { other[fill[u]++] = key; });
+    const HalfEdgeBuckets edges = half_edge_buckets(mesh);
     for (size_t u = 0; u < nv; ++u) {
-        const auto b = other.begin() + start[u], e = other.begin() + start[u + 1];
-        std::sort(b, e);
+        const auto b = edges.key.begin() + edges.start[u], e = edges.key.begin() + edges.start[u + 1];
         for (auto k = b; k != e;) {
             const uint64_t w = *k >> 1;
             long balance = 0;

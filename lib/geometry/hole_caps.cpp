@@ -2,6 +2,7 @@
 #include "hole_caps.h"
 
 #include "duplicates.h"
+#include "mesh_topology.h"
 #include "union_find.h"
 
 #include <algorithm>
@@ -14,28 +15,13 @@ Mesh hole_caps(const Mesh& mesh, const Monitor& monitor) {
     // vertices with identical coordinates are one vertex (split seams are not holes)
     const std::vector<uint32_t> weld = weld_map(mesh.vertices, monitor);
     if (weld.size() != mesh.vertices.size()) return {};
-    // edges used by one triangle only, ascending: the edges (u < w) bucketed by u (a counting
-    // sort), each stored as w * 2 + (1 if its triangle runs w -> u), each bucket sorted, runs of
-    // one w of length 1 kept with their direction
+    // edges used by one triangle only, ascending: in the half-edge buckets, runs of one larger
+    // vertex of length 1, kept with their direction
     const size_t nv = mesh.vertices.size();
-    std::vector<uint32_t> start(nv + 1, 0);
-    auto for_each_edge = [&](auto&& f) {
-        for (const Tri& t : mesh.triangles)
-            for (int a = 0; a < 3; ++a) {
-                const uint32_t u = weld[t[size_t(a)]], w = weld[t[size_t((a + 1) % 3)]];
-                if (u != w) f(std::min(u, w), uint64_t(std::max(u, w)) * 2 + (w < u));
-            }
-    };
-    for_each_edge([&](uint32_t u, uint64_t) { ++start[u + 1]; });
-    for (size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
-    std::vector<uint64_t> other(start[nv]);
-    std::vector<uint32_t> fill(start.begin(), start.end() - 1);
-    for_each_edge([&](uint32_t u, uint64_t key) { other[fill[u]++] = key; });
-    fill = std::vector<uint32_t>();
+    const HalfEdgeBuckets edges = half_edge_buckets(mesh, weld);
     std::vector<std::array<uint32_t, 2>> boundary;   // directed as in its triangle
     for (uint32_t u = 0; u < nv; ++u) {
-        const auto b = other.begin() + start[u], e = other.begin() + start[u + 1];
-        std::sort(b, e);
+        const auto b = edges.key.begin() + edges.start[u], e = edges.key.begin() + edges.start[u + 1];
         for (auto k = b; k != e;) {
             auto run = k;
             while (run != e && (*run >> 1) == (*k >> 1)) ++run;

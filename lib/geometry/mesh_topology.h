@@ -1,5 +1,6 @@
 // mesh_topology.h: the genus of each connected part of a triangle mesh, from its Euler
-// characteristic. The skeleton's loops are checked against it (connect/loops.cpp).
+// characteristic (the skeleton's loops are checked against it, connect/loops.cpp), and the
+// half-edges bucketed by vertex that the closedness and hole tests read.
 #pragma once
 #include "common.h"
 
@@ -18,5 +19,15 @@ struct MeshTopology {
 // one position are ignored. A part is closed and edge-manifold when every edge is on exactly two
 // of its triangles; then chi = V - E + F and genus = (2 - chi) / 2.
 MeshTopology mesh_topology(const Mesh& mesh);
+
+// Half-edges (a, b), a != b, of the triangles' corners mapped by `vertex` (identity when empty),
+// bucketed by their smaller vertex u (a counting sort): bucket u is key[start[u] .. start[u+1]),
+// each key the larger vertex * 2 + (1 if the half-edge runs downwards, larger -> smaller), each
+// bucket sorted, so the half-edges on one edge are adjacent.
+struct HalfEdgeBuckets {
+    std::vector<uint32_t> start;   // vertex count + 1 offsets
+    std::vector<uint64_t> key;
+};
+HalfEdgeBuckets half_edge_buckets(const Mesh& mesh, const std::vector<uint32_t>& vertex = {});
 
 }  // namespace ca
