@@ -2,7 +2,8 @@
 // Strackee, atan2 form), and the hierarchical approximation of Barill et al. 2018: every BVH
 // node stores a Taylor expansion (dipole, first- and second-order moments) of its triangles'
 // solid-angle field about its area-weighted centroid; a query uses it when it is farther than
-// beta * radius from that centre and recurses otherwise (leaves are summed exactly).
+// beta * radius from that centre and recurses otherwise (leaves are summed exactly). The inside
+// decision takes the same walk with a cheaper atan2 and a proven rounding bound (see inside()).
 #include "winding.h"
 #include "bvh.h"
 #include "far_field.h"
@@ -223,7 +224,8 @@ double WindingNumber::operator()(const Vec3& q) const {
 // for the leaves' atan2 (a libm call is most of a leaf term's cost), and the accurate walk only
 // when that decision is not certain. Why it always equals operator()'s: both sum the same n
 // terms in the same order (the same far/near tests; the far terms are the same expression on the
-// same arguments, so equal); a leaf term is 2 atan2(num, den) on the same num and den, so the
+// same arguments, so equal: this file is built with -ffp-contract=off, no fused multiply-adds
+// placed differently in the two walks); a leaf term is 2 atan2(num, den) on the same num and den, so the
 // two differ by at most D = 2 (kArcError + 1 ulp of libm's atan2) < 4e-12 per term. Recursive
 // summation errs by at most gamma_(n-1) sum |t_i| (Higham, Accuracy and Stability, 4.2), so
 // |omega - omega~| <= n D + gamma_(n-1) (2 sum |t~_i| + n D), with gamma_(n-1) < 1e-15 n taken
