@@ -126,10 +126,11 @@ struct FarField {
 
 // The solid angle at q (not yet divided by 4 pi) of everything under the tree `nodes`: a node
 // farther than beta * radius from its expansion's centre contributes its expansion, a leaf near
-// q the exact sum leaf_term(q, i) over its items, any other node its two children.
-template <class LeafTerm>
+// q the exact sum leaf_term(q, i) over its items, any other node its two children. `on_term` sees
+// every term as it is added (in the order of the sum): what a caller's rounding bound needs.
+template <class LeafTerm, class OnTerm>
 double far_field_sum(const std::vector<BvhNode>& nodes, const std::vector<FarField>& exp,
-                     const Vec3& q, LeafTerm leaf_term) {
+                     const Vec3& q, LeafTerm leaf_term, OnTerm on_term) {
     double omega = 0;
     uint32_t stack[128];   // DFS with a median-split tree: depth + 1 entries at most
     int top = 0;
@@ -138,18 +139,30 @@ double far_field_sum(const std::vector<BvhNode>& nodes, const std::vector<FarFie
         const uint32_t n = stack[--top];
         const FarField& e = exp[n];
         if ((q - e.centre).squaredNorm() > e.reach2) {
-            omega += e.eval(q);
+            const double t = e.eval(q);
+            on_term(t);
+            omega += t;
             continue;
         }
         const BvhNode& node = nodes[n];
         if (node.leaf()) {
-            for (uint32_t i = node.begin; i < node.end; ++i) omega += leaf_term(q, i);
+            for (uint32_t i = node.begin; i < node.end; ++i) {
+                const double t = leaf_term(q, i);
+                on_term(t);
+                omega += t;
+            }
         } else {
             stack[top++] = node.left;
             stack[top++] = node.right;
         }
     }
     return omega;
+}
+
+template <class LeafTerm>
+double far_field_sum(const std::vector<BvhNode>& nodes, const std::vector<FarField>& exp,
+                     const Vec3& q, LeafTerm leaf_term) {
+    return far_field_sum(nodes, exp, q, leaf_term, [](double) {});
 }
 
 }  // namespace detail

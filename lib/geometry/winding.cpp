@@ -2,7 +2,8 @@
 // Strackee, atan2 form), and the hierarchical approximation of Barill et al. 2018: every BVH
 // node stores a Taylor expansion (dipole, first- and second-order moments) of its triangles'
 // solid-angle field about its area-weighted centroid; a query uses it when it is farther than
-// beta * radius from that centre and recurses otherwise (leaves are summed exactly).
+// beta * radius from that centre and recurses otherwise (leaves are summed exactly). The inside
+// decision takes the same walk with a cheaper atan2 and a proven rounding bound (see inside()).
 #include "winding.h"
 #include "bvh.h"
 #include "far_field.h"
@@ -18,15 +19,49 @@ namespace {
 
 constexpr double kFourPi = 4.0 * 3.14159265358979323846;
 
+constexpr double kPi = 3.14159265358979323846;
+
 // Signed solid angle of triangle (a, b, c) seen from q; positive when q is behind the triangle
 // (on the side opposite to its right-handed normal). Degenerate triangles give 0, never NaN.
-double solid_angle(const Vec3& q, const Vec3& a0, const Vec3& b0, const Vec3& c0) {
+// `arc(y, x)` is atan2 or atan2_approx, on the same num and den.
+template <class Arc>
+double solid_angle_by(const Vec3& q, const Vec3& a0, const Vec3& b0, const Vec3& c0, Arc arc) {
     const Vec3 a = a0 - q, b = b0 - q, c = c0 - q;
     const double la = a.norm(), lb = b.norm(), lc = c.norm();
     const double num = a.dot(b.cross(c));
     if (num == 0) return 0.0;   // coplanar with q (or zero area): atan2(0, den < 0) would give 2 pi
     const double den = la * lb * lc + a.dot(b) * lc + a.dot(c) * lb + b.dot(c) * la;
-    return 2.0 * std::atan2(num, den);
+    return 2.0 * arc(num, den);
+}
+
+double solid_angle(const Vec3& q, const Vec3& a0, const Vec3& b0, const Vec3& c0) {
+    return solid_angle_by(q, a0, b0, c0, [](double y, double x) { return std::atan2(y, x); });
+}
+
+// atan2(y, x) for y != 0 within kArcError of the true value (NaN in, NaN out). The octant
+// reduction t = min(|x|, |y|) / max(|x|, |y|) in [0, 1], then for t > tan(pi/12) the identity
+// atan t = pi/6 + atan s, s = (sqrt3 t - 1) / (sqrt3 + t), leaves |s| <= tan(pi/12) = 0.26795;
+// atan s = s - s^3/3 + s^5/5 - ... is alternating with falling terms there, so cutting it after
+// s^17/17 errs by at most |s|^19/19 < 7.3e-13. Rounding adds < 1e-14 (every quantity is O(1) and
+// about 30 operations touch it; atan' <= 1 carries s's error unchanged), hence 1e-12.
+constexpr double kArcError = 1e-12;
+double atan2_approx(double y, double x) {
+    constexpr double kTan15 = 0.26794919243112270, kSqrt3 = 1.7320508075688772;
+    const double ax = std::fabs(x), ay = std::fabs(y);
+    const bool steep = ay > ax;
+    const double t = steep ? ax / ay : ay / ax;
+    double s = t, base = 0;
+    if (t > kTan15) {
+        s = (kSqrt3 * t - 1.0) / (kSqrt3 + t);
+        base = kPi / 6;
+    }
+    const double s2 = s * s;
+    double p = 1.0 / 17;
+    for (const double k : {-1.0 / 15, 1.0 / 13, -1.0 / 11, 1.0 / 9, -1.0 / 7, 1.0 / 5, -1.0 / 3, 1.0}) p = k + s2 * p;
+    double a = base + s * p;
+    if (steep) a = 0.5 * kPi - a;
+    if (x < 0) a = kPi - a;
+    return y < 0 ? -a : a;
 }
 
 // The largest squared distance from c to a triangle corner under node `root`: the maximum over
@@ -183,6 +218,36 @@ double WindingNumber::operator()(const Vec3& q) const {
     return detail::far_field_sum(m.bvh.nodes, m.exp, q, [&](const Vec3& p, uint32_t i) {
                return solid_angle(p, m.tris[i][0], m.tris[i][1], m.tris[i][2]);
            }) / kFourPi;
+}
+
+// The decision of operator() at q (fl(omega / 4pi) > 1/2) from the same walk with atan2_approx
+// for the leaves' atan2 (a libm call is most of a leaf term's cost), and the accurate walk only
+// when that decision is not certain. Why it always equals operator()'s: both sum the same n
+// terms in the same order (the same far/near tests; the far terms are the same expression on the
+// same arguments, so equal: this file is built with -ffp-contract=off, no fused multiply-adds
+// placed differently in the two walks); a leaf term is 2 atan2(num, den) on the same num and den, so the
+// two differ by at most D = 2 (kArcError + 1 ulp of libm's atan2) < 4e-12 per term. Recursive
+// summation errs by at most gamma_(n-1) sum |t_i| (Higham, Accuracy and Stability, 4.2), so
+// |omega - omega~| <= n D + gamma_(n-1) (2 sum |t~_i| + n D), with gamma_(n-1) < 1e-15 n taken
+// (a factor 9 above n u, which also covers this bound's own rounding). fl(omega / 4pi) > 1/2 when
+// omega > 2pi (1 + 1e-15) and not when omega < 2pi (1 - 1e-15) (one division, relative error u).
+bool WindingNumber::inside(const Vec3& q) const {
+    if (!impl_ || impl_->bvh.nodes.empty()) return false;
+    const Impl& m = *impl_;
+    double terms = 0, magnitude = 0;
+    const double omega = detail::far_field_sum(
+        m.bvh.nodes, m.exp, q,
+        [&](const Vec3& p, uint32_t i) { return solid_angle_by(p, m.tris[i][0], m.tris[i][1], m.tris[i][2], atan2_approx); },
+        [&](double t) {
+            terms += 1;
+            magnitude += std::fabs(t);
+        });
+    constexpr double kTermBound = 4e-12;
+    const double slack = terms * kTermBound + 1e-15 * terms * (2 * magnitude + terms * kTermBound);
+    const double half = 0.5 * kFourPi;
+    if (omega - slack > half * (1 + 1e-15)) return true;
+    if (omega + slack < half * (1 - 1e-15)) return false;
+    return (*this)(q) > 0.5;   // also a NaN omega~ (non-finite input)
 }
 
 double winding_number_brute_force(const Mesh& mesh, const Vec3& q) {

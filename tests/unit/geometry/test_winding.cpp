@@ -269,6 +269,62 @@ TEST_CASE("winding: open meshes decide inside at w > 1/2, also where w lies in (
     }
 }
 
+TEST_CASE("winding: inside(q) is w(q) > 1/2 exactly, also where w crosses 1/2 within one ulp") {
+    // inside() decides from a cheaper walk and falls back to w() only inside its rounding bound;
+    // the bisected crossings put w within an ulp of 1/2, where a bound too small shows.
+    Mesh open_cube = unit_cube();
+    std::vector<Tri> sides;
+    for (const Tri& f : open_cube.triangles)
+        if (open_cube.vertices[f[0]].z() + open_cube.vertices[f[1]].z() + open_cube.vertices[f[2]].z() < 3)
+            sides.push_back(f);
+    open_cube.triangles = sides;
+    Mesh bowl = icosphere(2, Vec3(0, 0, 0), 1.0);
+    std::vector<Tri> lower;
+    for (const Tri& f : bowl.triangles)
+        if ((bowl.vertices[f[0]] + bowl.vertices[f[1]] + bowl.vertices[f[2]]).z() < 0) lower.push_back(f);
+    bowl.triangles = lower;
+    Mesh sphere = icosphere(3, Vec3(0.1, -0.2, 0.3), 1.0);
+    Mesh cube = unit_cube();
+    Rng rng(99);
+    int crossings = 0, compared = 0;
+    for (const Mesh* mesh : {&cube, &sphere, &open_cube, &bowl}) {
+        const WindingNumber w(*mesh);
+        auto agree = [&](const Vec3& q) {
+            CHECK(w.inside(q) == (w(q) > 0.5));
+            const double exact = winding_number_brute_force(*mesh, q);
+            if (std::abs(exact - 0.5) > 0.01) {
+                CHECK(w.inside(q) == (exact > 0.5));
+                ++compared;
+            }
+        };
+        Vec3 lo = mesh->vertices[0], hi = lo;
+        for (const Vec3& v : mesh->vertices) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+        const Vec3 pad = 0.3 * (hi - lo);
+        for (int i = 0; i < 300; ++i) agree(random_point(rng, lo - pad, hi + pad));
+        for (const Tri& f : mesh->triangles) {   // just off every face, both sides
+            const Vec3 c = (mesh->vertices[f[0]] + mesh->vertices[f[1]] + mesh->vertices[f[2]]) / 3.0;
+            const Vec3 n = (mesh->vertices[f[1]] - mesh->vertices[f[0]]).cross(mesh->vertices[f[2]] - mesh->vertices[f[0]]).normalized();
+            for (double h : {1e-9, 1e-6, 1e-3}) agree(c + h * n), agree(c - h * n);
+        }
+        // segments from random points to random points: where w is on both sides of 1/2, bisect
+        // to two adjacent points (w of the one above 1/2 exceeds it by rounding only)
+        for (int i = 0; i < 400; ++i) {
+            Vec3 a = random_point(rng, lo - pad, hi + pad), b = random_point(rng, lo - pad, hi + pad);
+            if ((w(a) > 0.5) == (w(b) > 0.5)) continue;
+            for (int k = 0; k < 200; ++k) {
+                const Vec3 mid = 0.5 * (a + b);
+                if (mid == a || mid == b) break;
+                ((w(mid) > 0.5) == (w(a) > 0.5) ? a : b) = mid;
+            }
+            CHECK(w.inside(a) == (w(a) > 0.5));
+            CHECK(w.inside(b) == (w(b) > 0.5));
+            ++crossings;
+        }
+    }
+    CHECK(crossings >= 200);
+    CHECK(compared >= 1000);
+}
+
 TEST_CASE("winding: the tree and the expansions built on two threads equal one thread's") {
     const Mesh mesh = merge(icosphere(4, Vec3(0, 0, 0), 1.0), torus(64, 32, Vec3(3, 0, 0), 1.2, 0.4));
     const auto one = detail::build_triangle_tree(mesh, 1), two = detail::build_triangle_tree(mesh, 2);
