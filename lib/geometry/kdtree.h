@@ -129,7 +129,6 @@ public:
                     n.reach2 = std::max(nodes_[n.left].reach2, nodes_[n.left + 1].reach2);
             }
         }
-        index_ = std::move(order);
     }
 
     // Whether some point i has distance2(q, i) < reach2[i] (the reaches given to the constructor;
@@ -189,7 +188,7 @@ private:
     static constexpr size_t kStack = 80;
     struct Node {
         double lo[3], hi[3];
-        uint32_t begin, end;   // its points: xyz_/index_ entries [begin, end)
+        uint32_t begin, end;   // its points: xyz_ entries [begin, end)
         uint32_t left;         // children left and left + 1; 0 for a leaf
         double reach2;         // the largest squared reach of its points (with reaches only)
         bool leaf() const { return left == 0; }
@@ -246,7 +245,6 @@ private:
     }
     std::vector<Node> nodes_;
     std::vector<double> xyz_;       // the points in leaf order
-    std::vector<uint32_t> index_;   // their indices in the input
     std::vector<double> reach2_;    // their squared reaches (or none)
 };
 
