@@ -20,29 +20,40 @@
 #include "point_winding.h"
 #include "winding.h"
 
+#include <cmath>
 #include <functional>
 
 namespace ca {
 namespace {
 
-// The samples no candidate reaches within kFallbackReach (none when `monitor` stopped the queries).
+// The samples no candidate reaches within kFallbackReach: those that no ball's reach covers by
+// the coverage rule (coverage.h), asked per sample of a tree of the ball centres, which stops at
+// the first ball that reaches. None when an input is not finite (as build_coverage refuses it) or
+// `monitor` stopped the queries.
 std::vector<size_t> unreached_samples(const CandidateSet& set, int threads, const Monitor& monitor) {
     std::vector<Vec3> centers(set.balls.size());
-    std::vector<double> reach(set.balls.size());
+    std::vector<double> reach2(set.balls.size());
     for (size_t i = 0; i < set.balls.size(); ++i) {
+        const double reach = set.balls[i].radius + kFallbackReach;
+        if (!set.balls[i].center.allFinite() || !std::isfinite(reach) || reach < 0) return {};
         centers[i] = set.balls[i].center;
-        reach[i] = set.balls[i].radius + kFallbackReach;
+        reach2[i] = covered_radius2(reach);
     }
+    for (const Vec3& s : set.cover_samples)
+        if (!s.allFinite()) return {};
+    const PackedPointTree tree(centers, reach2);
+    std::vector<uint8_t> reached(set.cover_samples.size(), 0);
     // the queries make no progress calls of their own (a progress call's stop would not be seen
     // by the caller's monitor.stopped()); the cancel flag and the budget still stop them
     Monitor quiet = monitor;
     quiet.progress = nullptr;
-    Coverage cov;
-    if (!build_coverage(set.cover_samples, centers, reach, quiet, cov, threads).ok()) return {};
-    if (cov.sample_ptr.size() != set.cover_samples.size() + 1) cov.build_transpose();
+    if (!parallel_for(set.cover_samples.size(), resolve_threads(threads), 8192, quiet, "fallback", [&](size_t b, size_t e) {
+            for (size_t j = b; j < e; ++j) reached[j] = tree.reaches(set.cover_samples[j]);
+        }))
+        return {};
     std::vector<size_t> out;
     for (size_t j = 0; j < set.cover_samples.size(); ++j)
-        if (cov.sample_ptr[j + 1] == cov.sample_ptr[j]) out.push_back(j);
+        if (!reached[j]) out.push_back(j);
     return out;
 }
 

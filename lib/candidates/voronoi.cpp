@@ -44,7 +44,7 @@ Status voronoi_vertices(const std::vector<Vec3>& pts, int threads, const Monitor
     // balls that stick out of the shape; clamp them. Only a sample nearer than the circumradius
     // (with a relative margin far above rounding) can lower the radius, so the search starts
     // from that bound; a sample it finds has the squared distance an unbounded search gives.
-    PointTree sample_tree(pts);
+    const PackedPointTree sample_tree(pts);
     constexpr double kBoundMargin = 1e-9;
     if (!parallel_for(raw.size(), threads, 8192, monitor, "delaunay", [&](size_t begin, size_t end) {
             for (size_t i = begin; i < end; ++i) {

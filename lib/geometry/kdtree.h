@@ -1,5 +1,9 @@
-// kdtree.h: a nanoflann k-d tree over a vector of 3-D points (radii and distances squared, as
-// nanoflann 1.4 takes them). Built in the constructor; const queries are thread-safe.
+// kdtree.h: two k-d trees over a vector of 3-D points (radii and distances squared). PointTree
+// wraps nanoflann 1.4 (neighbour lists, counts, radius searches); PackedPointTree is this
+// project's own, for two searches whose answer is one number or one bit, where tight node boxes
+// prune more than nanoflann's split distances: the nearest squared distance below a bound, and
+// whether any of a set of balls reaches a point. Both are built in the constructor; const queries
+// are thread-safe.
 #pragma once
 #include "common.h"
 #include "parallel.h"
@@ -9,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 namespace ca {
 
@@ -64,13 +69,6 @@ public:
         if (cap > 0 && !adaptor_.pts->empty()) tree_.findNeighbors(result, q.data(), nanoflann::SearchParams(32, 0, false));
         return result.count;
     }
-    // The squared distance of the nearest point if one is closer than sqrt(bound2) (the same value
-    // nearest() gives), else bound2: a search that starts from the bound prunes more.
-    double nearest_squared_below(const Vec3& q, double bound2) const {
-        NearestResult result{bound2};
-        if (!adaptor_.pts->empty()) tree_.findNeighbors(result, q.data(), nanoflann::SearchParams(32, 0, false));
-        return result.best;
-    }
     // Distance to the nearest point (+infinity for an empty set).
     double distance(const Vec3& q) const {
         size_t idx = 0;
@@ -91,19 +89,163 @@ private:
             return count < cap;
         }
     };
-    // nanoflann result set of nearest_squared_below. A leaf compares its points with the bound it
-    // read on entry, so addPoint keeps the smaller of the two.
-    struct NearestResult {
-        double best;
-        double worstDist() const { return best; }
-        bool full() const { return true; }
-        bool addPoint(double dist, size_t) {
-            best = std::min(best, dist);
-            return true;
-        }
-    };
     PointSetAdaptor adaptor_;
     nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PointSetAdaptor>, PointSetAdaptor, 3, size_t> tree_;
+};
+
+// A k-d tree over a copy of the points stored in leaf order, every node with the tight box of its
+// points (median splits on the box's longest side, at most kLeaf points a leaf). Its answers are
+// exact and the same as a scan of all points: a point's squared distance is computed as
+// nanoflann's (((0 + dx^2) + dy^2) + dz^2, d = q - p), and a node is skipped only on a bound built
+// from its box's sides in the same order; rounding is monotonic, so that bound is <= every point's
+// computed distance. Points must be finite (a set with a non-finite coordinate becomes one leaf:
+// scanned, still exact), fewer than 2^32. Points may carry a squared reach each (balls):
+// reaches(q) asks whether q is strictly within one of them.
+class PackedPointTree {
+public:
+    explicit PackedPointTree(const std::vector<Vec3>& pts) : PackedPointTree(pts, {}) {}
+    // reach2: empty, or one squared reach per point (for reaches())
+    PackedPointTree(const std::vector<Vec3>& pts, const std::vector<double>& reach2) {
+        if (pts.empty()) return;
+        std::vector<uint32_t> order(pts.size());
+        std::iota(order.begin(), order.end(), 0u);
+        const bool finite = std::all_of(pts.begin(), pts.end(), [](const Vec3& p) { return p.allFinite(); });
+        nodes_.reserve(4 * (pts.size() / kLeaf + 1));
+        nodes_.emplace_back();
+        build(pts, order, 0, 0, uint32_t(pts.size()), finite);
+        xyz_.resize(3 * pts.size());
+        for (size_t i = 0; i < order.size(); ++i)
+            for (int d = 0; d < 3; ++d) xyz_[3 * i + size_t(d)] = pts[order[i]][d];
+        if (reach2.size() == pts.size()) {
+            reach2_.resize(pts.size());
+            for (size_t i = 0; i < order.size(); ++i) reach2_[i] = reach2[order[i]];
+            // children come after their parent: one backward pass gives each node its largest reach
+            for (size_t k = nodes_.size(); k-- > 0;) {
+                Node& n = nodes_[k];
+                n.reach2 = -std::numeric_limits<double>::infinity();
+                if (n.leaf())
+                    for (uint32_t i = n.begin; i < n.end; ++i) n.reach2 = std::max(n.reach2, reach2_[i]);
+                else
+                    n.reach2 = std::max(nodes_[n.left].reach2, nodes_[n.left + 1].reach2);
+            }
+        }
+    }
+
+    // Whether some point i has distance2(q, i) < reach2[i] (the reaches given to the constructor;
+    // false without them). Stops at the first such point.
+    bool reaches(const Vec3& q) const {
+        if (reach2_.empty()) return false;
+        uint32_t stack[kStack];
+        size_t top = 0;
+        stack[top++] = 0;
+        while (top > 0) {
+            const Node& node = nodes_[stack[--top]];
+            if (!(lower_bound(node, q) < node.reach2)) continue;
+            if (node.leaf()) {
+                for (uint32_t i = node.begin; i < node.end; ++i)
+                    if (distance2(q, i) < reach2_[i]) return true;
+                continue;
+            }
+            stack[top++] = node.left + 1;
+            stack[top++] = node.left;
+        }
+        return false;
+    }
+
+    // min(bound2, the smallest squared distance from q to a point): the value of
+    // PointTree::nearest()'s squared distance when a point is closer than sqrt(bound2).
+    double nearest_squared_below(const Vec3& q, double bound2) const {
+        double best = bound2;
+        if (nodes_.empty()) return best;
+        Pending stack[kStack];
+        size_t top = 0;
+        stack[top++] = {0, lower_bound(nodes_[0], q)};
+        while (top > 0) {
+            const Pending item = stack[--top];
+            if (item.lower >= best) continue;
+            const Node& node = nodes_[item.node];
+            if (node.leaf()) {
+                for (uint32_t i = node.begin; i < node.end; ++i) best = std::min(best, distance2(q, i));
+                continue;
+            }
+            const double a = lower_bound(nodes_[node.left], q), b = lower_bound(nodes_[node.left + 1], q);
+            // the nearer child is searched first (pushed last)
+            if (a <= b) {
+                stack[top++] = {node.left + 1, b};
+                stack[top++] = {node.left, a};
+            } else {
+                stack[top++] = {node.left, a};
+                stack[top++] = {node.left + 1, b};
+            }
+        }
+        return best;
+    }
+
+private:
+    static constexpr uint32_t kLeaf = 16;
+    // median splits: depth <= log2(n) + 1 < 34 for n < 2^32, and a search holds at most two
+    // pending nodes a level
+    static constexpr size_t kStack = 80;
+    struct Node {
+        double lo[3], hi[3];
+        uint32_t begin, end;   // its points: xyz_ entries [begin, end)
+        uint32_t left;         // children left and left + 1; 0 for a leaf
+        double reach2;         // the largest squared reach of its points (with reaches only)
+        bool leaf() const { return left == 0; }
+    };
+    struct Pending {
+        uint32_t node;
+        double lower;
+    };
+
+    // Fills node `id` with the points order[begin, end) and splits it (its two children made
+    // next to each other, then filled).
+    void build(const std::vector<Vec3>& pts, std::vector<uint32_t>& order, uint32_t id, uint32_t begin,
+               uint32_t end, bool finite) {
+        Node node{};
+        node.begin = begin;
+        node.end = end;
+        for (int d = 0; d < 3; ++d) node.lo[d] = node.hi[d] = pts[order[begin]][d];
+        for (uint32_t i = begin + 1; i < end; ++i)
+            for (int d = 0; d < 3; ++d) {
+                node.lo[d] = std::min(node.lo[d], pts[order[i]][d]);
+                node.hi[d] = std::max(node.hi[d], pts[order[i]][d]);
+            }
+        int axis = 0;
+        for (int d = 1; d < 3; ++d)
+            if (node.hi[d] - node.lo[d] > node.hi[axis] - node.lo[axis]) axis = d;
+        const bool split = end - begin > kLeaf && finite && node.hi[axis] > node.lo[axis];
+        if (split) {
+            node.left = uint32_t(nodes_.size());
+            nodes_.emplace_back();
+            nodes_.emplace_back();
+        }
+        nodes_[id] = node;
+        if (!split) return;
+        const uint32_t mid = begin + (end - begin) / 2;
+        std::nth_element(order.begin() + begin, order.begin() + mid, order.begin() + end,
+                         [&](uint32_t a, uint32_t b) { return pts[a][axis] < pts[b][axis]; });
+        build(pts, order, node.left, begin, mid, finite);
+        build(pts, order, node.left + 1, mid, end, finite);
+    }
+
+    double distance2(const Vec3& q, uint32_t i) const {
+        const double* p = &xyz_[3 * size_t(i)];
+        const double dx = q.x() - p[0], dy = q.y() - p[1], dz = q.z() - p[2];
+        return dx * dx + dy * dy + dz * dz;
+    }
+    // <= distance2 of every point of the node: the gap to the box, side by side
+    static double lower_bound(const Node& n, const Vec3& q) {
+        double s = 0;
+        for (int d = 0; d < 3; ++d) {
+            const double g = q[d] < n.lo[d] ? n.lo[d] - q[d] : (q[d] > n.hi[d] ? q[d] - n.hi[d] : 0.0);
+            s += g * g;
+        }
+        return s;
+    }
+    std::vector<Node> nodes_;
+    std::vector<double> xyz_;       // the points in leaf order
+    std::vector<double> reach2_;    // their squared reaches (or none)
 };
 
 // Calls f(i, idx, d2, found) for every point i of pts with its `found` nearest points (at most
