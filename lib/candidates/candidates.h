@@ -7,12 +7,11 @@
 // (the inner Voronoi diagram = medial mesh of the medial-axis route).
 #pragma once
 #include "common.h"
-
-#include <functional>
 #include "delaunay.h"
 #include "hole_caps.h"
 #include "surface.h"
 
+#include <functional>
 #include <memory>
 
 namespace ca {
