@@ -11,6 +11,7 @@
 #include "hole_caps.h"
 #include "surface.h"
 
+#include <functional>
 #include <memory>
 
 namespace ca {
@@ -83,9 +84,15 @@ size_t add_fallback_balls(CandidateSet& set, const WindingNumber& winding, const
 
 // Point clouds: the same balls, grown along the cover samples' unit outward normals
 // (`normals[j]` for cover_samples[j]), inside by the cloud's winding number, radius = distance
-// to the nearest point of dense_samples. Stops as add_fallback_balls does.
+// to the nearest point of dense_samples. `noise` (noisy clouds; default: clean): where no point
+// just below a sample is inside, points down to noise.depth are tried, and a centre must also pass
+// noise.below_surface. Stops as add_fallback_balls does.
+struct CloudNoise {
+    double depth = 0;                                  // the inside test is unreliable above this depth
+    std::function<bool(const Vec3&)> below_surface;    // null: no further test
+};
 size_t add_cloud_fallback_balls(CandidateSet& set, const PointCloudWinding& winding, const std::vector<Vec3>& normals,
-                                int threads = 0, const Monitor& monitor = Monitor{});
+                                const CloudNoise& noise = {}, int threads = 0, const Monitor& monitor = Monitor{});
 
 // Open meshes (hole_caps.cpp): every candidate's radius is clamped to its distance to the hole
 // caps (geometry/hole_caps.h: every closed boundary loop capped by a fan from its centroid), so no

@@ -70,13 +70,14 @@ public:
     bool noisy() const;
     double noise_ratio() const { return noise_ratio_; }   // median off-plane distance / median d16
     double scale_growth() const { return scale_growth_; } // median off-plane distance, 16 over 8 neighbours
+    double noise() const { return noise_; }               // noise deviation estimate: 1.4826 x median off-plane distance
     double height(const Vec3& q) const;   // signed distance of q above the plane of its nearest point
     Vec3 project(const Vec3& q) const;    // q moved onto the plane of its nearest point
 private:
     size_t nearest(const Vec3& q) const;
     std::vector<Vec3> mean_, normal_;
     PointTree tree_;
-    double noise_ratio_ = 0, scale_growth_ = 0;
+    double noise_ratio_ = 0, scale_growth_ = 0, noise_ = 0;
 };
 // Drops the balls whose centre is above the local plane (height > 0); returns how many.
 size_t drop_outside_local_planes(const LocalPlanes& planes, int threads, const Monitor& monitor, std::vector<Ball>& balls);

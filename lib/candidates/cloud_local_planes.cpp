@@ -8,7 +8,9 @@
 //   outward can pass the inside test (w > 1/2) while lying outside the sampled surface: a ball is
 //   dropped when its centre is on the outer side of the plane at its nearest cloud point;
 // - a cover sample is projected onto the plane at its nearest point, so the skeleton covers the
-//   denoised surface instead of reaching out to every point the noise pushed outward.
+//   denoised surface instead of reaching out to every point the noise pushed outward;
+// - noise() estimates the noise's standard deviation from the median distance to the planes,
+//   the depth within which the winding number is unreliable (the fallback balls start below it).
 #include "candidates_internal.h"
 
 #include "kdtree.h"
@@ -23,7 +25,8 @@ namespace cand {
 namespace {
 constexpr size_t kPlaneNeighbours = 16;
 constexpr size_t kSmallNeighbours = 8;
-constexpr double kNoisy = 0.03, kMaxGrowth = 1.4;
+constexpr double kNoisy = 0.03, kMaxGrowth = 1.6;
+constexpr double kMedianToSigma = 1.4826;   // median |x| of a centred Gaussian is 0.6745 sigma
 double median_of(std::vector<double> v) {
     if (v.empty()) return 0;
     const size_t mid = v.size() / 2;
@@ -47,6 +50,7 @@ LocalPlanes::LocalPlanes(const std::vector<Vec3>& pts, const std::vector<Vec3>& 
         residual[i] = std::abs((pts[i] - m).dot(n));
     }, threads);
     const double d16 = median_of(spacing), r16 = median_of(residual), r8 = median_of(small);
+    noise_ = kMedianToSigma * r16;
     noise_ratio_ = d16 > 0 ? r16 / d16 : 0;
     scale_growth_ = r8 > 0 ? r16 / r8 : 0;
 }

@@ -11,7 +11,12 @@
 // else covers the sample. Samples where no point below the surface is inside (open sheets, open
 // scans, non-orientable strips) get no ball and are still reported as uncoverable. On an open
 // mesh the radius is also the distance to the hole caps (hole_caps.cpp); on a point cloud it is
-// the distance to the nearest cloud point, and inside means point-cloud winding number > 1/2.
+// the distance to the nearest cloud point, and inside means point-cloud winding number > 1/2. On
+// a noisy cloud the winding number fluctuates around 1/2 within the noise band below the
+// (denoised) sample, so a sample with no inside point just below it gets its ball deeper, up to
+// CloudNoise::depth (such a ball reaches the sample for offsets delta >= its depth), and a centre
+// must also lie below the local plane at its nearest point, as the candidates' (a ball grown
+// along a sample's normal can otherwise end up outside, where w fluctuates above 1/2).
 #include "candidates.h"
 
 #include "coverage.h"
@@ -58,8 +63,10 @@ std::vector<size_t> unreached_samples(const CandidateSet& set, int threads, cons
 }
 
 // The ball under sample s (unit inward direction -n): false if no point below s is inside.
+// `noise_depth` > 0 (noisy clouds): the inside test is unreliable within that depth, so when no
+// shallow point is inside, deeper ones are tried, doubling from kFallbackReach up to it.
 bool grow_ball(const Vec3& s, const Vec3& n, const std::function<bool(const Vec3&)>& inside,
-               const std::function<double(const Vec3&)>& radius_at, Ball& best) {
+               const std::function<double(const Vec3&)>& radius_at, Ball& best, double noise_depth = 0) {
     // first depth inside the shape: half the reach, smaller for thinner parts
     best = {s, -1};
     double depth = 0.5 * kFallbackReach;
@@ -68,6 +75,10 @@ bool grow_ball(const Vec3& s, const Vec3& n, const std::function<bool(const Vec3
         if (!inside(c)) continue;
         best = {c, radius_at(c)};
         break;
+    }
+    for (double t = kFallbackReach; !(best.radius > 0) && t <= noise_depth; t *= 2) {
+        const Vec3 c = s - t * n;
+        if (inside(c)) best = {c, radius_at(c)}, depth = t;
     }
     if (!(best.radius > 0)) return false;
     // grow towards the medial axis while the ball still touches the surface at s only:
@@ -128,18 +139,18 @@ size_t add_fallback_balls(CandidateSet& set, const WindingNumber& winding, const
 }
 
 size_t add_cloud_fallback_balls(CandidateSet& set, const PointCloudWinding& winding, const std::vector<Vec3>& normals,
-                                int threads, const Monitor& monitor) {
+                                const CloudNoise& noise, int threads, const Monitor& monitor) {
     if (set.cover_samples.empty() || set.dense_samples.empty() || normals.size() != set.cover_samples.size()) return 0;
     const PointTree tree(set.dense_samples);
     auto radius_at = [&](const Vec3& c) { return tree.distance(c); };
-    auto inside = [&](const Vec3& c) { return winding.inside(c); };
+    auto inside = [&](const Vec3& c) { return winding.inside(c) && (!noise.below_surface || noise.below_surface(c)); };
     size_t added = 0;
     const std::vector<size_t> unreached = unreached_samples(set, threads, monitor);
     for (size_t k = 0; k < unreached.size(); ++k) {
         if (monitor.stopped_at(k)) break;
         const size_t j = unreached[k];
         Ball best;
-        if (!grow_ball(set.cover_samples[j], normals[j], inside, radius_at, best)) continue;
+        if (!grow_ball(set.cover_samples[j], normals[j], inside, radius_at, best, noise.depth)) continue;
         set.balls.push_back(best);
         ++added;
     }

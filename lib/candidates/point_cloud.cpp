@@ -47,6 +47,9 @@ std::vector<Ball> cluster_filter(const std::vector<Ball>& balls, int threads) {
 constexpr double kOrientationProbe = 0.01;
 // Above this fraction of inconsistent probes the orientation is not trusted (the cloud is refused).
 constexpr double kMaxInconsistent = 0.3;
+// Noisy clouds: the winding number is trusted only this many noise deviations below the surface
+// (the fallback balls of samples with no inside point just below them start deeper).
+constexpr double kNoiseBand = 3;
 
 // The probe depth at point i: kOrientationProbe, but at most half the local thickness (how far
 // behind p_i, along -n_i, the nearest of its 16 neighbours lies whose normal points the other
@@ -191,7 +194,12 @@ Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monito
                     : random_cloud_candidates(opt, upts, *winding, threads, monitor, out.balls);
     if (!st.ok()) return st;
     if (planes.noisy()) out.outside_local_plane = drop_outside_local_planes(planes, threads, monitor, out.balls);
-    out.fallback_balls = add_cloud_fallback_balls(out, *winding, sample_normals, threads, monitor);
+    CloudNoise noise;
+    if (planes.noisy()) {
+        noise.depth = kNoiseBand * planes.noise();
+        noise.below_surface = [&planes](const Vec3& c) { return planes.height(c) <= 0; };
+    }
+    out.fallback_balls = add_cloud_fallback_balls(out, *winding, sample_normals, noise, threads, monitor);
     if (monitor.stopped()) return monitor.stop_status("fallback balls");
     out.cloud_winding = std::move(winding);
     return Status::success();

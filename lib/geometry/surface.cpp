@@ -44,6 +44,10 @@ bool follows_surface(const std::vector<Vec3>& given, const std::vector<Vec3>& pc
     for (size_t i = 0; i < given.size(); ++i) along += std::abs(given[i].dot(pca[i])) > 0.8;
     return along >= 0.8 * double(given.size());
 }
+// The PCA neighbourhood of follows_surface's second try: on a dense noisy cloud the 16 nearest
+// neighbours lie within the noise band, so their PCA direction is mostly noise; 64 neighbours span
+// about twice the radius, where the surface's extent dominates the noise again.
+constexpr size_t kNoisyPcaNeighbours = 64;
 }  // namespace
 
 Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool require_normals, PointNormals trust,
@@ -152,13 +156,15 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
         // rule are judged by the winding number instead (patch_signs.h: its residual depends on
         // no offsets between neighbours, which noise makes say little about signs). Unless
         // orientation at least halves that residual too, the signs were not wrong, and the
-        // caller's normals are kept if they describe the surface: their directions follow PCA's,
-        // or the winding number finds them consistent on its own
+        // caller's normals are kept if they describe the surface: their directions follow PCA's
+        // (of 16 neighbours, or of 64 on dense noisy clouds), or the winding number finds them
+        // consistent on its own
         const auto keep_given = [&] {
             if (out.disagreement < kSignCheckGain * out.disagreement_given) return false;
             const double residual = winding_residual(raw.vertices, given, threads);
             if (winding_residual(raw.vertices, normals, threads) < kSignCheckGain * residual) return false;
-            return residual < kMaxWindingResidual || follows_surface(given, estimate_normals(raw.vertices, 16, threads));
+            return residual < kMaxWindingResidual || follows_surface(given, estimate_normals(raw.vertices, 16, threads)) ||
+                   follows_surface(given, estimate_normals(raw.vertices, kNoisyPcaNeighbours, threads));
         };
         if (!given.empty() && keep_given()) {
             normals = std::move(given);
