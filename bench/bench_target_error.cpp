@@ -1,9 +1,11 @@
 // bench_target_error.cpp: the error-bounded selection (ca_select_options.target_error) on every
 // mesh of <data>/meshes/paper: at --target-error 2, the balls, the two-sided Hausdorff distance
-// it reached (% of the bbox diagonal), the delta, the probes and the time; beside it a sweep of
-// fixed deltas (each selected, connected and evaluated at the defaults) and the smallest ball
-// count of the sweep that reaches HD <= 2 %. Summary: how many closed models reach 2 %, and on
-// how many the search needs fewer, as many or more balls than the sweep's best.
+// it reached (% of the bbox diagonal), the delta, the probes and the CPU time, once with the
+// default connection and once with the fit (probe_fit = 1: each probe is fitted); beside them a
+// sweep of fixed deltas (each selected, then connected at the defaults and, separately, with the
+// fit, and evaluated) and the smallest ball count of each sweep that reaches HD <= 2 %. Summary,
+// without and with the fit: how many closed models reach 2 %, and on how many the search needs
+// fewer, as many or more balls than its sweep's best.
 // usage: bench_target_error [DATA_ROOT]   (default ../shared/data; skipped when missing)
 #include "bench_common.h"
 #include "connect.h"
@@ -20,17 +22,32 @@ const double kSweep[] = {0.005, 0.0075, 0.01, 0.0125, 0.015, 0.02, 0.025, 0.03, 
 struct Probe {
     ca_status status = CA_OK;
     size_t balls = 0;
-    double hd = 0, delta = 0, seconds = 0;
+    double hd = 0, delta = 0, cpu_s = 0;
     uint64_t probes = 0;
 };
 
-// Select with `so` on `set`, then (unless target_error measured it) connect and evaluate at the
-// defaults.
-Probe run(ca_context* ctx, const ca_surface_view& v, const ca_candidate_set* set, const ca_select_options& so) {
-    Probe p;
-    const auto t = std::chrono::steady_clock::now();
-    ca_selection* sel = nullptr;
+// The two-sided HD of `sel` connected with `fit` (0/1) at the defaults otherwise.
+ca_status connected_hd(ca_context* ctx, const ca_surface_view& v, const ca_candidate_set* set, const ca_selection* sel,
+                       int32_t fit, double& hd) {
+    ca_connect_options co;
+    ca_connect_options_init(&co);
+    co.fit = fit;
     ca_skeleton* sk = nullptr;
+    ca_status st = ca_connect(ctx, set, sel, &co, &sk);
+    size_t edges = 0, faces = 0, components = 0;
+    long betti1 = 0;
+    ca_evaluation ev{};
+    if (st == CA_OK) st = bench::measure_skeleton(ctx, v, sk, true, edges, faces, components, betti1, ev);
+    hd = ev.hd_two_sided;
+    ca_skeleton_destroy(sk);
+    return st;
+}
+
+// The search with `so` (target_error set): balls, the HD it measured, delta, probes, CPU time.
+Probe search(ca_context* ctx, const ca_candidate_set* set, const ca_select_options& so) {
+    Probe p;
+    const double c0 = bench::cpu_seconds();
+    ca_selection* sel = nullptr;
     p.status = ca_select(ctx, set, &so, &sel);
     if (p.status == CA_OK) {
         ca_select_stats ss;
@@ -40,19 +57,68 @@ Probe run(ca_context* ctx, const ca_surface_view& v, const ca_candidate_set* set
         p.delta = ss.delta_absolute / ca_candidate_set_reference_length(set);
         p.probes = ss.probes;
         p.hd = ss.hd_reached;
-        if (p.hd < 0) {
-            p.status = ca_connect(ctx, set, sel, nullptr, &sk);
-            size_t edges = 0, faces = 0, components = 0;
-            long betti1 = 0;
-            ca_evaluation ev{};
-            if (p.status == CA_OK) p.status = bench::measure_skeleton(ctx, v, sk, true, edges, faces, components, betti1, ev);
-            p.hd = ev.hd_two_sided;
-        }
     }
-    p.seconds = bench::seconds_since(t);
-    ca_skeleton_destroy(sk);
+    p.cpu_s = bench::cpu_seconds() - c0;
     ca_selection_destroy(sel);
     return p;
+}
+
+// One swept delta, selected once and measured without (out[0]) and with (out[1]) the fit.
+void sweep_delta(ca_context* ctx, const ca_surface_view& v, const ca_candidate_set* set, ca_select_options so,
+                 Probe out[2]) {
+    ca_selection* sel = nullptr;
+    const double c0 = bench::cpu_seconds();
+    const ca_status st = ca_select(ctx, set, &so, &sel);
+    const double select_s = bench::cpu_seconds() - c0;
+    for (int fit = 0; fit < 2; ++fit) {
+        Probe& p = out[fit];
+        p = Probe{};
+        const double c1 = bench::cpu_seconds();
+        p.status = st;
+        if (st == CA_OK) {
+            p.balls = ca_selection_count(sel);
+            p.delta = so.delta;
+            p.status = connected_hd(ctx, v, set, sel, fit, p.hd);
+        }
+        p.cpu_s = select_s + bench::cpu_seconds() - c1;
+    }
+    ca_selection_destroy(sel);
+}
+
+struct Tally {
+    int closed_models = 0, closed_reached = 0, fewer = 0, same = 0, more = 0, sweep_none = 0;
+    double search_s = 0, sweep_s = 0;
+    void add(bool closed, const Probe& te, bool found, const Probe& best, double sweep_cpu) {
+        const bool reached = te.status == CA_OK && te.hd <= kTarget;
+        if (closed) {
+            ++closed_models;
+            closed_reached += reached;
+        }
+        search_s += te.cpu_s;
+        sweep_s += sweep_cpu;
+        if (!found) ++sweep_none;
+        else if (reached && te.balls < best.balls) ++fewer;
+        else if (reached && te.balls == best.balls) ++same;
+        else ++more;
+    }
+    void print(const char* what) const {
+        std::printf("%s: closed models reaching HD <= %.0f %%: %d of %d. Against the sweep's best (models where a swept "
+                    "delta reaches it): fewer balls on %d, as many on %d, more (or target not reached) on %d; no swept "
+                    "delta reaches it on %d. CPU time: search %.0f s, sweep %.0f s in all.\n",
+                    what, kTarget, closed_reached, closed_models, fewer, same, more, sweep_none, search_s, sweep_s);
+    }
+};
+
+void print_search(const Probe& te) {
+    if (te.status != CA_OK) std::printf(" failed (%d) | | | %.1f |", te.status, te.cpu_s);
+    else
+        std::printf(" %zu | %.3f%s | %llu | %.1f |", te.balls, te.hd, te.hd <= kTarget ? "" : " (not reached)",
+                    (unsigned long long)te.probes, te.cpu_s);
+}
+
+void print_best(bool found, const Probe& best) {
+    if (found) std::printf(" %zu | %.3f | %.4g |", best.balls, best.hd, best.delta);
+    else std::printf(" none | | |");
 }
 
 }  // namespace
@@ -64,15 +130,19 @@ int main(int argc, char** argv) {
         std::printf("bench_target_error: no models under %s/meshes/paper, skipped\n", root.c_str());
         return 0;
     }
-    std::printf("\n## Error-bounded selection: --target-error %.0f against a delta sweep\n\n", kTarget);
+    std::printf("\n## Error-bounded selection: --target-error %.0f against a delta sweep, without and with the fit\n\n",
+                kTarget);
     std::printf("Defaults otherwise (|S| 1500, Voronoi candidates, exact cover, fast effort, medial route, evaluation "
-                "30 000 / 100 000 samples). Sweep deltas:");
+                "30 000 / 100 000 samples). \"fit\": probe_fit = 1 (each probe connected with fit = 1, 10 "
+                "iterations), and the sweep connected with fit = 1. Sweep deltas:");
     for (double d : kSweep) std::printf(" %g", d);
-    std::printf("; \"sweep best\" is the fewest balls among them with HD <= %.0f %%.\n\n", kTarget);
-    std::printf("| model | closed | target: balls | HD %% | delta | probes | s | sweep best: balls | HD %% | delta | sweep s |\n");
-    std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
-    int closed_models = 0, closed_reached = 0, fewer = 0, same = 0, more = 0, sweep_none = 0;
-    double target_s = 0, sweep_s = 0;
+    std::printf("; \"sweep best\" is the fewest balls among them with HD <= %.0f %%. CPU s: user + system of the "
+                "process, all threads.\n\n",
+                kTarget);
+    std::printf("| model | closed | target: balls | HD %% | probes | CPU s | fit target: balls | HD %% | probes | CPU s "
+                "| sweep best: balls | HD %% | delta | fit sweep best: balls | HD %% | delta |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    Tally plain, fitted;
     for (const std::string& path : models) {
         caio::MeshData mesh;
         std::string err;
@@ -93,45 +163,40 @@ int main(int argc, char** argv) {
         ca_select_options so;
         ca_select_options_init(&so);
         so.target_error = kTarget;
-        const Probe te = run(ctx, v, set, so);
+        const Probe te = search(ctx, set, so);
+        so.probe_fit = 1;
+        const Probe te_fit = search(ctx, set, so);
         so.target_error = 0;
-        Probe best;
-        bool found = false;
-        double s_sweep = 0;
+        so.probe_fit = 0;
+        Probe best[2];
+        bool found[2] = {false, false};
+        double sweep_s[2] = {0, 0};
         for (double d : kSweep) {
             so.delta = d;
-            const Probe p = run(ctx, v, set, so);
-            s_sweep += p.seconds;
-            if (p.status != CA_OK || p.hd > kTarget) continue;
-            if (!found || p.balls < best.balls || (p.balls == best.balls && p.hd < best.hd)) best = p;
-            found = true;
+            Probe p[2];
+            sweep_delta(ctx, v, set, so, p);
+            for (int f = 0; f < 2; ++f) {
+                sweep_s[f] += p[f].cpu_s;
+                if (p[f].status != CA_OK || p[f].hd > kTarget) continue;
+                if (!found[f] || p[f].balls < best[f].balls || (p[f].balls == best[f].balls && p[f].hd < best[f].hd))
+                    best[f] = p[f];
+                found[f] = true;
+            }
         }
         ca_candidate_set_destroy(set);
         ca_context_destroy(ctx);
-        const bool reached = te.status == CA_OK && te.hd <= kTarget;
-        if (closed) {
-            ++closed_models;
-            closed_reached += reached;
-        }
-        target_s += te.seconds;
-        sweep_s += s_sweep;
-        if (!found) ++sweep_none;
-        else if (reached && te.balls < best.balls) ++fewer;
-        else if (reached && te.balls == best.balls) ++same;
-        else ++more;
-        if (te.status != CA_OK)
-            std::printf("| %s | %s | failed (%d) | | | | %.1f |", bench::stem(path).c_str(), closed ? "yes" : "no", te.status,
-                        te.seconds);
-        else
-            std::printf("| %s | %s | %zu | %.3f%s | %.4f | %llu | %.1f |", bench::stem(path).c_str(), closed ? "yes" : "no",
-                        te.balls, te.hd, reached ? "" : " (not reached)", te.delta, (unsigned long long)te.probes, te.seconds);
-        if (found) std::printf(" %zu | %.3f | %.4g | %.1f |\n", best.balls, best.hd, best.delta, s_sweep);
-        else std::printf(" none | | | %.1f |\n", s_sweep);
+        plain.add(closed, te, found[0], best[0], sweep_s[0]);
+        fitted.add(closed, te_fit, found[1], best[1], sweep_s[1]);
+        std::printf("| %s | %s |", bench::stem(path).c_str(), closed ? "yes" : "no");
+        print_search(te);
+        print_search(te_fit);
+        print_best(found[0], best[0]);
+        print_best(found[1], best[1]);
+        std::printf("\n");
         std::fflush(stdout);
     }
-    std::printf("\nClosed models reaching HD <= %.0f %% with --target-error %.0f: %d of %d. Against the sweep's best "
-                "(models where a swept delta reaches it): fewer balls on %d, as many on %d, more (or target not reached) "
-                "on %d; no swept delta reaches it on %d. Time: target %.0f s, sweep %.0f s in all.\n",
-                kTarget, kTarget, closed_reached, closed_models, fewer, same, more, sweep_none, target_s, sweep_s);
+    std::printf("\n");
+    plain.print("Without the fit");
+    fitted.print("With the fit");
     return 0;
 }

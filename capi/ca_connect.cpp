@@ -33,19 +33,16 @@ ca_status ca_connect(ca_context* ctx, const ca_candidate_set* set, const ca_sele
         const ca::Monitor monitor = ctx->monitor();  // one budget for connection and fit
         const auto t0 = std::chrono::steady_clock::now();
         const ca::ConnectOptions co = connect_options(o, set->core, ctx->desc.threads);
-        const bool has_mesh = !set->core.surface.point_cloud && !set->core.surface.mesh.triangles.empty();
         ca::Skeleton sk;
         ca::ConnectReport report;
         st = ca::connect_balls(set->core, selection->core, co, monitor, sk, &report);
         if (!st.ok()) return st;
         if (o.fit_iterations < 0) return ca::fail(Code::invalid_argument, "fit_iterations must be >= 0");
         ca::FitStats fs;
-        const bool fitted = o.fit != 0 && has_mesh && o.fit_iterations > 0;
+        const std::optional<ca::FitOptions> fo = fit_options(o, set->core, ctx->desc.threads);
+        const bool fitted = fo.has_value();
         if (fitted) {
-            ca::FitOptions fo;
-            fo.iterations = uint32_t(o.fit_iterations);
-            fo.threads = ctx->desc.threads;
-            st = ca::fit_skeleton(set->core, selection->core, fo, monitor, sk, fs);
+            st = ca::fit_skeleton(set->core, selection->core, *fo, monitor, sk, fs);
             if (!st.ok()) return st;
         }
         const ca::TopologyStats topo = ca::topology(sk);

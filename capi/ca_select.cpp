@@ -48,6 +48,8 @@ ca_status ca_select(ca_context* ctx, const ca_candidate_set* set, const ca_selec
             return ca::fail(Code::invalid_argument, "target_tolerance must be a finite number > 0");
         if (!(std::isfinite(o.target_error) && o.target_error >= 0))
             return ca::fail(Code::invalid_argument, "target_error must be a finite number >= 0 (percent of the bbox diagonal; 0 = off)");
+        if (o.probe_fit != 0 && o.probe_fit != 1)
+            return ca::fail(Code::invalid_argument, "probe_fit must be 0 or 1, not " + std::to_string(o.probe_fit));
         const bool target_error = o.target_error > 0;  // the rest is checked by select_target_error
         // target_count with the offset dilation on a set with a surface: the lowest HD within K
         // balls (the scale dilation and caller arrays keep the plain smallest dilation)
@@ -75,12 +77,17 @@ ca_status ca_select(ca_context* ctx, const ca_candidate_set* set, const ca_selec
         retain_set(set);
         r.set = set;
         double hd_reached = -1;
-        // the delta searches judge each probe as ca_connect and ca_evaluate at their defaults would
-        auto probe_connect = [&] { return connect_options(defaults<ca_connect_options>(), set->core, ctx->desc.threads); };
+        // the delta searches judge each probe as ca_connect (at its defaults, with fit = probe_fit)
+        // and ca_evaluate at its defaults would
+        ca_connect_options probe_co = defaults<ca_connect_options>();
+        probe_co.fit = o.probe_fit;
+        const ca::ConnectOptions probe_connect = connect_options(probe_co, set->core, ctx->desc.threads);
+        const std::optional<ca::FitOptions> probe_fit = fit_options(probe_co, set->core, ctx->desc.threads);
         if (target_error) {
             ca::TargetErrorOptions te;
             te.target_error = o.target_error;
-            te.connect = probe_connect();
+            te.connect = probe_connect;
+            te.fit = probe_fit;
             te.evaluate = default_evaluation(ctx->desc.threads);
             ca::TargetErrorResult ter;
             st = ca::select_target_error(set->core, so, te, ctx->monitor(), ter);
@@ -92,7 +99,8 @@ ca_status ca_select(ca_context* ctx, const ca_candidate_set* set, const ca_selec
                                 std::to_string(hd_reached) + " %");
         } else if (lowest_hd) {
             ca::TargetCountHdOptions tc;
-            tc.connect = probe_connect();
+            tc.connect = probe_connect;
+            tc.fit = probe_fit;
             tc.evaluate = default_evaluation(ctx->desc.threads);
             ca::TargetCountHdResult tcr;
             st = ca::select_target_count_hd(set->core, so, tc, ctx->monitor(), tcr);

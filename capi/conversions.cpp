@@ -83,4 +83,13 @@ ca::ConnectOptions connect_options(const ca_connect_options& o, const ca::Candid
     return co;
 }
 
+std::optional<ca::FitOptions> fit_options(const ca_connect_options& o, const ca::CandidateSet& set, int32_t threads) {
+    const bool has_mesh = !set.surface.point_cloud && !set.surface.mesh.triangles.empty();
+    if (!(o.fit != 0 && has_mesh && o.fit_iterations > 0)) return std::nullopt;
+    ca::FitOptions fo;
+    fo.iterations = uint32_t(o.fit_iterations);
+    fo.threads = threads;
+    return fo;
+}
+
 }  // namespace capi

@@ -6,7 +6,10 @@
 #include "struct_size.h"
 
 #include "connect.h"
+#include "fit.h"
 #include "surface.h"
+
+#include <optional>
 
 #include <array>
 #include <cstring>
@@ -60,5 +63,9 @@ void fill(Array<double>& a, const Allocator& al, const std::vector<ca::Vec3>& pt
 // The core's connect options from the caller's (method already checked): AUTO is the medial
 // route for a mesh, the power route for point clouds and caller arrays.
 ca::ConnectOptions connect_options(const ca_connect_options& o, const ca::CandidateSet& set, int32_t threads);
+
+// The core's fit options when ca_connect with `o` fits (fit on, fit_iterations > 0, a triangle
+// mesh: the fit needs one), else none. fit_iterations must already be checked (>= 0).
+std::optional<ca::FitOptions> fit_options(const ca_connect_options& o, const ca::CandidateSet& set, int32_t threads);
 
 }  // namespace capi

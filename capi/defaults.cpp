@@ -48,6 +48,7 @@ template <> ca_select_options defaults<ca_select_options>() {
     o.divide_threshold = 100000;
     o.effort = CA_EFFORT_FAST;
     o.target_error = 0;
+    o.probe_fit = 0;
     return o;
 }
 

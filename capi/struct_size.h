@@ -73,7 +73,7 @@ struct ca_skeleton_stats {
 }  // namespace abi1
 
 // ---- as first published in ABI 2: ca_context_desc before time_limit_s, ca_select_stats before
-// hd_reached, ca_skeleton_stats before genus were appended ----
+// hd_reached, ca_select_options before probe_fit, ca_skeleton_stats before genus were appended ----
 namespace abi2_first {
 struct ca_context_desc {
     abi1::ca_context_desc abi1_fields;
@@ -90,6 +90,10 @@ struct ca_skeleton_stats {
     uint64_t fit_uncovered;
     int32_t fitted;
 };
+struct ca_select_options {
+    abi1::ca_select_options abi1_fields;
+    double target_error;
+};
 }  // namespace abi2_first
 
 // Published sizes of each struct, first (ABI 1) to current. A new ABI version appends its size;
@@ -105,7 +109,8 @@ CA_PUBLISHED(ca_context_desc, sizeof(abi1::ca_context_desc), sizeof(abi2_first::
              sizeof(ca_context_desc))
 CA_PUBLISHED(ca_surface_view, sizeof(abi1::ca_surface_view), sizeof(ca_surface_view))
 CA_PUBLISHED(ca_candidate_options, sizeof(ca_candidate_options))
-CA_PUBLISHED(ca_select_options, sizeof(abi1::ca_select_options), sizeof(ca_select_options))
+CA_PUBLISHED(ca_select_options, sizeof(abi1::ca_select_options), sizeof(abi2_first::ca_select_options),
+             sizeof(ca_select_options))
 CA_PUBLISHED(ca_select_stats, sizeof(abi1::ca_select_stats), sizeof(abi2_first::ca_select_stats),
              sizeof(ca_select_stats))
 CA_PUBLISHED(ca_connect_options, sizeof(abi1::ca_connect_options), sizeof(ca_connect_options))
@@ -135,6 +140,9 @@ static_assert(offsetof(ca_select_stats, rowgen_rounds) == offsetof(abi2_first::c
 static_assert(offsetof(ca_select_options, effort) == offsetof(abi1::ca_select_options, effort) &&
                   offsetof(ca_select_options, target_error) >= sizeof(abi1::ca_select_options),
               "ca_select_options: ABI 1 is a prefix of ABI 2");
+static_assert(offsetof(ca_select_options, target_error) == offsetof(abi2_first::ca_select_options, target_error) &&
+                  offsetof(ca_select_options, probe_fit) >= sizeof(abi2_first::ca_select_options),
+              "ca_select_options: its first ABI 2 layout is a prefix of the current one");
 
 static_assert(offsetof(ca_connect_options, reconnect) == offsetof(abi1::ca_connect_options, reconnect) &&
                   offsetof(ca_connect_options, fit) >= sizeof(abi1::ca_connect_options),

@@ -286,6 +286,12 @@ typedef struct ca_select_options {
                                     bbox diagonal, by a search over delta from the delta above (offset
                                     dilation only, not with target_count; docs/fidelity.md: what it
                                     guarantees). The stats give the HD reached and the delta. */
+    int32_t probe_fit;           /* ABI 2 (appended after target_error). How the target_error search and
+                                    target_count's lowest-HD search connect each probe: 0 (default): the
+                                    default ca_connect_options; 1: the same with fit = 1, so the HD
+                                    judged and reported (hd_reached) is that of the fitted skeleton
+                                    ca_connect gives with fit = 1 (meshes; docs/fidelity.md). Ignored
+                                    by the other selections */
 } ca_select_options;
 
 CA_API ca_status ca_select_options_defaults(ca_select_options* options, uint32_t struct_size); /* the defaults named above */

@@ -84,6 +84,7 @@ namespace CoverageAxis
             public uint divide_threshold;
             public int effort;
             public double target_error;     // ABI 2
+            public int probe_fit;           // ABI 2 (appended after target_error)
         }
 
         [StructLayout(LayoutKind.Sequential)]

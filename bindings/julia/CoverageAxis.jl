@@ -71,6 +71,7 @@ struct SelectOptions
     divide_threshold::UInt32
     effort::Int32
     target_error::Float64     # ABI 2
+    probe_fit::Int32          # ABI 2 (appended after target_error)
 end
 
 struct SelectStats

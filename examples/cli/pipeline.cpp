@@ -350,7 +350,7 @@ Outcome run_pipeline(const std::string& input, const RunOptions& o, const Output
     j["outputs"] = outputs_json(out);
     if (evaluate_run) add_evaluation(j, ev);
     // --target-count: the HD of what was written (the library's search measured the default
-    // connection without fit, which --fit or --connect change)
+    // connection, fitted with --fit, which --connect changes)
     if (o.select.target_count > 0) j["hd_reached"] = ev.hd_two_sided;
     else if (ss.hd_reached >= 0) j["hd_reached"] = ss.hd_reached;
     else j["hd_reached"] = nullptr;

@@ -142,7 +142,8 @@ void add_run_options(CLI::App& app, RunOptions& o) {
 
     app.add_option("--connect", o.connect_route, "auto (medial for meshes, power for point clouds) | medial | power")
         ->capture_default_str()->check(CLI::IsMember(keys(kRoutes)))->group(connect);
-    app.add_flag("--fit", "fit the balls' centres and radii to the surface after connecting (docs/fidelity.md)")
+    app.add_flag("--fit", "fit the balls' centres and radii to the surface after connecting; the --target-error and "
+                 "--target-count searches then measure fitted skeletons (docs/fidelity.md)")
         ->group(connect);
 
     app.add_option("--ignore-samples", o.ignore_samples_file, "indices (0-based) of samples that need not be covered")->group(control);
@@ -168,9 +169,10 @@ bool finish_run_options(const CLI::App& app, RunOptions& o, std::string& error) 
     o.select.effort = value_of(kEfforts, o.effort);
     o.connect.method = value_of(kRoutes, o.connect_route);
     o.connect.fit = app.count("--fit") ? 1 : 0;
-    if (o.select.target_error > 0 && (o.connect.fit || o.connect.method != CA_CONNECT_AUTO)) {
-        error = "--target-error measures the default connection: it does not take " +
-                (o.connect.fit ? std::string("--fit") : "--connect " + o.connect_route);
+    // the delta searches measure what is written: the default connection, fitted with --fit
+    o.select.probe_fit = o.connect.fit;
+    if (o.select.target_error > 0 && o.connect.method != CA_CONNECT_AUTO) {
+        error = "--target-error measures the default connection: it does not take --connect " + o.connect_route;
         return false;
     }
     if (o.candidate_kind.rfind("random", 0) == 0 && o.candidate_kind.size() > 6) {

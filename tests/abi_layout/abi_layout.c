@@ -68,6 +68,7 @@ int main(void) {
     FIELD(ca_select_options, divide_threshold);
     FIELD(ca_select_options, effort);
     FIELD(ca_select_options, target_error);
+    FIELD(ca_select_options, probe_fit);
     STRUCT(ca_select_stats);
     FIELD(ca_select_stats, struct_size);
     FIELD(ca_select_stats, proven_optimal);

@@ -449,6 +449,59 @@ static void test_evaluate(void) {
     ca_context_destroy(ctx);
 }
 
+/* The two-sided HD of `sel` connected at the defaults with `fit` and evaluated at the defaults. */
+static double connected_hd(ca_context* ctx, const ca_candidate_set* set, const ca_selection* sel, int32_t fit) {
+    ca_surface_view v = box_view();
+    ca_connect_options cop;
+    ca_skeleton* sk = NULL;
+    ca_skeleton_view view;
+    ca_evaluation e;
+    ca_connect_options_init(&cop);
+    cop.fit = fit;
+    CHECK(ca_connect(ctx, set, sel, &cop, &sk) == CA_OK);
+    ca_skeleton_view_init(&view);
+    CHECK(ca_skeleton_get_view(sk, &view) == CA_OK);
+    e.struct_size = sizeof e;
+    CHECK(ca_evaluate(ctx, &v, &view, NULL, &e) == CA_OK);
+    ca_skeleton_destroy(sk);
+    return e.hd_two_sided;
+}
+
+/* probe_fit = 1: both delta searches (target_error, target_count by HD) report the HD of the
+   selection as ca_connect with fit = 1 and ca_evaluate at their defaults measure it, which the
+   fit changes on the box (so a search probing without the fit fails here). */
+static void test_probe_fit(void) {
+    ca_context* ctx = NULL;
+    ca_candidate_set* set = NULL;
+    ca_selection* sel = NULL;
+    ca_surface_view v = box_view();
+    ca_candidate_options o = small_options();
+    ca_select_options so;
+    ca_select_stats ss;
+    int search;
+    CHECK(ca_context_create(NULL, &ctx) == CA_OK);
+    CHECK(ca_candidates(ctx, &v, &o, &set) == CA_OK);
+    for (search = 0; search < 2; ++search) {
+        double fitted, plain;
+        ca_select_options_init(&so);
+        CHECK(so.probe_fit == 0);
+        so.probe_fit = 1;
+        if (search == 0) so.target_error = 8;
+        else so.target_count = 12;
+        sel = NULL;
+        CHECK(ca_select(ctx, set, &so, &sel) == CA_OK);
+        ss.struct_size = sizeof ss;
+        CHECK(ca_selection_stats(sel, &ss) == CA_OK && ss.hd_reached > 0);
+        fitted = connected_hd(ctx, set, sel, 1);
+        plain = connected_hd(ctx, set, sel, 0);
+        CHECK(fabs(ss.hd_reached - fitted) < 1e-9 * fitted);
+        CHECK(fabs(fitted - plain) > 1e-6);
+        ca_selection_destroy(sel);
+    }
+    ca_candidate_set_destroy(set);
+    ca_context_destroy(ctx);
+}
+
 int main(void) {
     test_versions();
     test_null_and_sizes();
@@ -458,6 +511,7 @@ int main(void) {
     test_box_pipeline();
     test_evaluate();
     test_routes_and_target();
+    test_probe_fit();
     printf("test_abi: %d passed, %d failed\n", checks - failures, failures);
     return failures ? 1 : 0;
 }

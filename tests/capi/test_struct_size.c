@@ -56,6 +56,12 @@ typedef struct v1_select_options {
     int32_t effort;
 } v1_select_options;
 
+/* ca_select_options as first published in ABI 2, before probe_fit was appended */
+typedef struct v2_first_select_options {
+    v1_select_options v1;
+    double target_error;
+} v2_first_select_options;
+
 /* ca_select_stats as first published in ABI 2, before hd_reached was appended */
 typedef struct v2_first_select_stats {
     v1_select_stats v1;
@@ -295,9 +301,11 @@ static void test_connect_layouts(void) {
     ca_context_destroy(ctx);
 }
 
-/* ABI 1 select options (no target_error: off) and the first ABI 2 select stats are accepted;
-   target_error is checked: NaN, negative, with target_count, with the scale dilation, or on a set
-   from caller arrays (no surface) are CA_ERROR_INVALID_ARGUMENT naming target_error. */
+/* ABI 1 select options (no target_error: off), the first ABI 2 select options (no probe_fit: off)
+   and the first ABI 2 select stats are accepted; probe_fit defaults to 0 and values other than 0
+   and 1 are CA_ERROR_INVALID_ARGUMENT naming it; target_error is checked: NaN, negative, with
+   target_count, with the scale dilation, or on a set from caller arrays (no surface) are
+   CA_ERROR_INVALID_ARGUMENT naming target_error. */
 static void test_select_layouts(void) {
     ca_context* ctx = NULL;
     ca_candidate_set* set = NULL;
@@ -305,6 +313,8 @@ static void test_select_layouts(void) {
     ca_surface_view v = box_view();
     struct { v1_select_options o; unsigned char tail[16]; } old;
     struct { v2_first_select_stats s; unsigned char tail[16]; } ss;
+    struct { v2_first_select_options o; unsigned char tail[16]; } old2;
+    ca_select_stats at_old2;
     ca_select_stats full;
     ca_select_options o;
     const double samples[] = {0, 0, 0, 1, 0, 0};
@@ -326,6 +336,24 @@ static void test_select_layouts(void) {
           canary_intact(ss.tail, sizeof ss.tail));
     ca_selection_destroy(sel);
     sel = NULL;
+    /* the first ABI 2 layout: a probe_fit read past its size would be -1 (refused) */
+    CHECK(o.probe_fit == 0 && sizeof(v2_first_select_options) < sizeof o &&
+          sizeof(v1_select_options) < sizeof(v2_first_select_options));
+    memcpy(&old2.o, &o, sizeof old2.o);
+    memset(old2.tail, 0xFF, sizeof old2.tail);
+    old2.o.v1.struct_size = (uint32_t)sizeof old2.o;
+    old2.o.target_error = 50; /* reached at the first probe: the search runs, cheaply */
+    CHECK(ca_select(ctx, set, (const ca_select_options*)(void*)&old2, &sel) == CA_OK);
+    at_old2.struct_size = sizeof at_old2;
+    CHECK(ca_selection_stats(sel, &at_old2) == CA_OK && at_old2.hd_reached >= 0 && at_old2.hd_reached <= 50);
+    ca_selection_destroy(sel);
+    sel = NULL;
+    o.probe_fit = 2;
+    CHECK(ca_select(ctx, set, &o, &sel) == CA_ERROR_INVALID_ARGUMENT && sel == NULL);
+    CHECK(strstr(ca_context_last_error(ctx), "probe_fit") != NULL);
+    o.probe_fit = -1;
+    CHECK(ca_select(ctx, set, &o, &sel) == CA_ERROR_INVALID_ARGUMENT && sel == NULL);
+    o.probe_fit = 0;
     o.target_error = 0.0 / 0.0;
     CHECK(ca_select(ctx, set, &o, &sel) == CA_ERROR_INVALID_ARGUMENT && sel == NULL);
     CHECK(strstr(ca_context_last_error(ctx), "target_error") != NULL);

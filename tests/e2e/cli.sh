@@ -78,9 +78,16 @@ check "target error with target count: refused by the library (exit 1)" test $? 
 check "target error with target count: INVALID_ARGUMENT naming both" grep -q 'CA_ERROR_INVALID_ARGUMENT.*target_error and target_count' "$tmp/te2.json"
 "$tool" "$data/fox.obj" -o "$tmp/te3.ma" --target-error -1 --quiet 2> "$tmp/err"
 check "negative target error: usage error (exit 2)" test $? -eq 2
-"$tool" "$data/fox.obj" -o "$tmp/te4.ma" --target-error 2 --fit --quiet 2> "$tmp/err"
-check "target error with --fit: usage error (exit 2)" test $? -eq 2
-check "target error with --fit: says why" grep -q 'default connection' "$tmp/err"
+"$tool" "$data/fox.obj" -o "$tmp/te4.ma" --target-error 2 --connect power --quiet 2> "$tmp/err"
+check "target error with --connect power: usage error (exit 2)" test $? -eq 2
+check "target error with --connect power: says why" grep -q 'default connection' "$tmp/err"
+# with --fit the search measures fitted skeletons: the HD reached is that of the fitted .ma written
+"$tool" "$data/fox.obj" -o "$tmp/tf.ma" --samples 800 --voronoi-samples 2000 --target-error 2.6 --fit --evaluate --json > "$tmp/tf.json"
+check "target error with --fit runs" test $? -eq 0
+hd_tf=$(json_field hd_reached "$tmp/tf.json")
+check "target error with --fit: HD reached $hd_tf <= 2.6" awk -v h="$hd_tf" 'BEGIN{exit !(h >= 0 && h <= 2.6)}'
+check "target error with --fit: --evaluate measures the same HD" awk -v h="$hd_tf" -v e="$(json_field hd_two_sided "$tmp/tf.json")" 'BEGIN{d=h-e; if(d<0)d=-d; exit !(d < 1e-9)}'
+check "target error with --fit: the skeleton was fitted" grep -q '"error_after"' "$tmp/tf.json"
 
 # divide and conquer on request: spatial parts, still a full cover
 "$tool" "$data/fox.obj" -o "$tmp/dc.ma" --samples 3000 --divide 1000 --json > "$tmp/dc.json"

@@ -206,7 +206,8 @@ def select(candidate_set, *, context=None, ignorable_samples=None, forced_in=Non
     """Step 2: the fewest dilated candidate balls covering every sample.
     Options: dilation ("offset" | "scale"; scale=S alone selects "scale"), delta, scale, solver,
     time_limit_s, skip_uncoverable, target_count, target_tolerance, divide_threshold, effort, target_error
-    (% of the bbox diagonal: the fewest balls within that two-sided Hausdorff distance; stats hd_reached).
+    (% of the bbox diagonal: the fewest balls within that two-sided Hausdorff distance; stats hd_reached),
+    probe_fit (1: the target_error and target_count searches measure fitted skeletons, as connect(fit=1)).
     Masks (one flag per sample or ball, truthy = set): ignorable_samples, forced_in, forced_out."""
     if options.get("scale") is not None and options.get("dilation") is None:
         options["dilation"] = "scale"

@@ -31,7 +31,8 @@ class _SelectOptions(Structure):
                 ("solver", c_int32), ("time_limit_s", c_double), ("skip_uncoverable", c_int32),
                 ("ignorable_samples", c_void_p), ("forced_in", c_void_p), ("forced_out", c_void_p),
                 ("target_count", c_uint32), ("target_tolerance", c_double), ("divide_threshold", c_uint32),
-                ("effort", c_int32), ("target_error", c_double)]
+                ("effort", c_int32), ("target_error", c_double),
+                ("probe_fit", c_int32)]
 
 
 class _SelectStats(Structure):

@@ -158,6 +158,8 @@ ca_struct!(ca_select_options {
     effort: i32,
     /// ABI 2
     target_error: f64,
+    /// ABI 2 (appended after target_error)
+    probe_fit: i32,
 });
 
 ca_struct!(#[derive(Debug, Default)] ca_select_stats {

@@ -1,19 +1,23 @@
-// test_target_error.cpp: the error-bounded selection (lib/evaluate/target_error) on fox.obj. For a
+// test_target_error.cpp: the error-bounded selection (lib/search/target_error) on fox.obj. For a
 // reachable E the returned HD is <= E and is what an independent select + connect + evaluate at
 // the returned delta measures, and no probed delta gives a passing skeleton with fewer balls
 // (brute force over the same deltas: returning, say, the last probe fails this); for an
-// unreachable E the lowest-HD probe comes back unreached; invalid options are refused.
+// unreachable E the lowest-HD probe comes back unreached; with the fit, each probe's HD is that of
+// the fitted skeleton (select + connect + fit + evaluate run independently) and differs from the
+// unfitted one; invalid options are refused.
 #include <doctest/doctest.h>
 
 #include "candidates.h"
 #include "connect.h"
 #include "evaluate.h"
+#include "fit.h"
 #include "mesh_io.h"
 #include "selection.h"
 #include "support/fox_candidates.h"
 #include "target_error.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace {
@@ -28,7 +32,7 @@ ca::TargetErrorOptions options(double target) {
     return te;
 }
 
-// One probe, run independently: the ball count and two-sided HD at delta.
+// One probe, run independently: the ball count and two-sided HD at delta (fitted when te.fit).
 std::pair<size_t, double> brute(const ca::CandidateSet& set, const ca::TargetErrorOptions& te, double delta) {
     ca::SelectOptions so;
     so.delta = delta;
@@ -36,12 +40,44 @@ std::pair<size_t, double> brute(const ca::CandidateSet& set, const ca::TargetErr
     REQUIRE(ca::select_balls(set, so, ca::Monitor{}, sel).ok());
     ca::Skeleton sk;
     REQUIRE(ca::connect_balls(set, sel, te.connect, ca::Monitor{}, sk).ok());
+    ca::FitStats fs;
+    if (te.fit) REQUIRE(ca::fit_skeleton(set, sel, *te.fit, ca::Monitor{}, sk, fs).ok());
     ca::EvaluateResult ev;
     REQUIRE(ca::evaluate(set.surface.mesh, sk, te.evaluate, ca::Monitor{}, ev).ok());
     return {sel.indices.size(), ev.hd_two_sided};
 }
 
 }  // namespace
+
+TEST_CASE("test_target_error: fox with the fit: every probe's HD is the fitted skeleton's") {
+    const ca::CandidateSet set = fox_candidate_set();
+    const double target = 2.6;
+    ca::TargetErrorOptions te = options(target);
+    te.max_probes = 4;
+    te.fit = ca::FitOptions{};
+    te.fit->iterations = 3;
+    te.fit->surface_samples = 1500;
+    te.fit->envelope_samples = 1500;
+    ca::TargetErrorResult r;
+    const ca::Status st = ca::select_target_error(set, ca::SelectOptions{}, te, ca::Monitor{}, r);
+    REQUIRE_MESSAGE(st.ok(), st.message);
+    REQUIRE(r.probes.size() >= 2);
+    ca::TargetErrorOptions plain = te;
+    plain.fit.reset();
+    bool fit_changed_hd = false;
+    for (const ca::TargetErrorProbe& p : r.probes) {
+        CAPTURE(p.delta);
+        const auto [balls, hd] = brute(set, te, p.delta);
+        CHECK(balls == p.balls);
+        CHECK(hd == doctest::Approx(p.hd).epsilon(1e-9));
+        CHECK(p.passed == (p.hd <= target));
+        fit_changed_hd |= std::abs(brute(set, plain, p.delta).second - p.hd) > 1e-6;
+    }
+    CHECK(fit_changed_hd);  // else this test could not tell a probe without the fit
+    const auto [balls, hd] = brute(set, te, r.selection.delta);
+    CHECK(balls == r.selection.indices.size());
+    CHECK(hd == doctest::Approx(r.evaluation.hd_two_sided).epsilon(1e-9));
+}
 
 TEST_CASE("test_target_error: fox: HD <= E with no more balls than any passing probed delta and an unreachable E flagged") {
     const ca::CandidateSet set = fox_candidate_set();

@@ -34,7 +34,7 @@ Status select_target_count_hd(const CandidateSet& set, const SelectOptions& opt,
     const size_t K = opt.target_count;
     // the target size: its errors (no cover with K balls, bad options) are the search's
     DeltaProbe best;
-    Status st = probe_delta(set, opt, tc.connect, tc.evaluate, monitor, best);
+    Status st = probe_delta(set, opt, tc.connect, tc.fit, tc.evaluate, monitor, best);
     if (!st.ok()) return st;
     best.summary.passed = true;  // select_balls returns a fitting cover only
     out.probes.push_back(best.summary);
@@ -47,7 +47,7 @@ Status select_target_count_hd(const CandidateSet& set, const SelectOptions& opt,
     for (uint32_t i = 1; i < tc.max_probes; ++i) {
         probe_opt.delta = d0 + unit * i;
         DeltaProbe p;
-        st = probe_delta(set, probe_opt, tc.connect, tc.evaluate, monitor, p);
+        st = probe_delta(set, probe_opt, tc.connect, tc.fit, tc.evaluate, monitor, p);
         ++solves;
         if (st.code == Code::uncoverable) continue;  // cannot happen above a delta with a cover; harmless
         if (st.code == Code::time_limit) break;      // the best so far stands

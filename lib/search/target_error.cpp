@@ -57,7 +57,7 @@ Status select_target_error(const CandidateSet& set, const SelectOptions& opt, co
         ++runs;
         DeltaProbe p;
         probe_opt.delta = d;
-        st = probe_delta(set, probe_opt, te.connect, te.evaluate, monitor, p);
+        st = probe_delta(set, probe_opt, te.connect, te.fit, te.evaluate, monitor, p);
         if (st.code == Code::uncoverable) {
             uncoverable = true;
             st = Status::success();

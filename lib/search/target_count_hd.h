@@ -23,6 +23,8 @@ namespace ca {
 
 struct TargetCountHdOptions {
     ConnectOptions connect;       // how each probe is connected (the caller's or the defaults)
+    std::optional<FitOptions> fit;  // set: each probe is fitted after connecting (fit.h), so the HD
+                                    // judged is the fitted skeleton's
     EvaluateOptions evaluate;     // how each probe is measured (ca_evaluate's defaults)
     uint32_t max_probes = 9;      // select + connect + evaluate runs, the first included (>= 1)
     double step = 0.02;           // relative delta step between probes (> 0)

@@ -1,11 +1,15 @@
 // delta_probe.h: one probe of the delta searches (target_error.h, target_count_hd.h): select at
-// one offset delta on a candidate set, connect, evaluate against the set's surface, so that every
-// search measures its candidates exactly as ca_connect + ca_evaluate would.
+// one offset delta on a candidate set, connect, optionally fit (fit.h), evaluate against the
+// set's surface, so that every search measures its candidates exactly as ca_connect +
+// ca_evaluate would.
 #pragma once
 #include "candidates.h"
 #include "connect.h"
 #include "evaluate.h"
+#include "fit.h"
 #include "selection.h"
+
+#include <optional>
 
 namespace ca {
 
@@ -25,9 +29,11 @@ struct DeltaProbe {
 };
 
 // Selects with `opt` at opt.delta (opt.target_count as given: 0 for one solve), connects with
-// `connect` and evaluates with `evaluate` against set.surface.mesh. The first failing step's
-// status is returned (Code::uncoverable when no cover exists at that delta).
+// `connect`, fits with `fit` when it is set (fit_skeleton: a no-op without a triangle mesh) and
+// evaluates with `evaluate` against set.surface.mesh. The first failing step's status is returned
+// (Code::uncoverable when no cover exists at that delta).
 Status probe_delta(const CandidateSet& set, const SelectOptions& opt, const ConnectOptions& connect,
-                   const EvaluateOptions& evaluate, const Monitor& monitor, DeltaProbe& out);
+                   const std::optional<FitOptions>& fit, const EvaluateOptions& evaluate, const Monitor& monitor,
+                   DeltaProbe& out);
 
 }  // namespace ca

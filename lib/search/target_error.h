@@ -23,6 +23,8 @@ namespace ca {
 struct TargetErrorOptions {
     double target_error = 2;      // E, percent of the input bounding-box diagonal (> 0)
     ConnectOptions connect;       // how each probe is connected (the caller's or the defaults)
+    std::optional<FitOptions> fit;  // set: each probe is fitted after connecting (fit.h), so the HD
+                                    // judged is the fitted skeleton's
     EvaluateOptions evaluate;     // how each probe is measured (ca_evaluate's defaults)
     uint32_t max_probes = 14;     // select + connect + evaluate runs, at most
 };

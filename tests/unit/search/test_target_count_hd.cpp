@@ -1,4 +1,4 @@
-// test_target_count_hd.cpp: the lowest HD within K balls (lib/evaluate/target_count_hd) on
+// test_target_count_hd.cpp: the lowest HD within K balls (lib/search/target_count_hd) on
 // fox.obj. With the exact solver at K = 12 the target size's cover (12 balls) is beaten by a
 // larger delta's 11-ball cover of lower HD, which must come back (returning the first probe, or
 // the highest HD, fails); with the greedy solver at K = 29 a larger delta gives 30 balls of lower
