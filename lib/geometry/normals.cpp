@@ -68,11 +68,19 @@ bool uncertain(const Vec3& d, const Vec3& a, const Vec3& b) {
            (a.dot(b) >= 0) != (da * db < 0);
 }
 
+// Estimated normals: an uncertain pair counts as one only between normals within this |cosine|
+// (about 18 degrees), the pair across a sheet thinner than PCA's neighbourhoods (both sides get
+// the sheet's normal, and the offset is a few degrees out of it). Elsewhere PCA's normals tilt
+// with the sampling on detailed parts, and the same rule would mark side-by-side pairs there.
+constexpr double kEstimatedUncertainCos = 0.95;
+
 // 1 - |n_u . n_v|; 2 more for an uncertain pair, so the tree takes one only where nothing else
 // joins its two ends.
-double edge_weight(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, uint32_t u, uint32_t v) {
-    const double w = 1.0 - std::abs(normals[u].dot(normals[v]));
-    return uncertain(pts[u] - pts[v], normals[u], normals[v]) ? w + 2.0 : w;
+double edge_weight(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, uint32_t u, uint32_t v,
+                   bool estimated) {
+    const double c = std::abs(normals[u].dot(normals[v])), w = 1.0 - c;
+    const bool counts = !estimated || c > kEstimatedUncertainCos;
+    return counts && uncertain(pts[u] - pts[v], normals[u], normals[v]) ? w + 2.0 : w;
 }
 
 }  // namespace
@@ -82,28 +90,28 @@ namespace {
 // A tree edge that propagation may have taken the wrong way round: between normals more than
 // 60 degrees apart (weight 1 - |n_u . n_v| above this), a pair facing across (a thin part, a
 // crease: the facing rule is only as good as the sampling there, and estimated normals average
-// across such parts), or an uncertain pair. Patches are cut there and each is signed as a whole
+// across creases), or an uncertain pair. Patches are cut there and each is signed as a whole
 // by the winding-number vote instead (patch_signs.h), which sees the entire cloud.
 constexpr double kCutWeight = 0.5;
 // Patches below max(this, n / 200) points are joined to a neighbouring patch.
 constexpr size_t kMinPatch = 32;
 
-bool unreliable(const Vec3& d, const Vec3& a, const Vec3& b, bool estimated) {
-    return 1.0 - std::abs(a.dot(b)) > kCutWeight || facing(d, a, b) || (!estimated && uncertain(d, a, b));
+bool unreliable(const Vec3& d, const Vec3& a, const Vec3& b) {
+    return 1.0 - std::abs(a.dot(b)) > kCutWeight || facing(d, a, b) || uncertain(d, a, b);
 }
 
 // Patches of the propagation tree (parent[v] == v: a root) cut at its unreliable edges; patches
 // smaller than `min_size` points are joined back across their cut edges (lightest first), since
 // too few points carry too little winding number to be signed on their own. Returns the count.
 size_t tree_patches(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, const std::vector<uint32_t>& parent,
-                    bool estimated, size_t min_size, std::vector<uint32_t>& label) {
+                    size_t min_size, std::vector<uint32_t>& label) {
     const size_t n = pts.size();
     UnionFind uf(n);
     std::vector<std::pair<double, uint32_t>> cut;   // (weight, child)
     for (uint32_t v = 0; v < n; ++v) {
         const uint32_t p = parent[v];
         if (p == v) continue;
-        if (unreliable(pts[v] - pts[p], normals[p], normals[v], estimated))
+        if (unreliable(pts[v] - pts[p], normals[p], normals[v]))
             cut.push_back({1.0 - std::abs(normals[p].dot(normals[v])), v});
         else
             uf.unite(v, p);
@@ -173,18 +181,14 @@ void orient_normals(const std::vector<Vec3>& pts, std::vector<Vec3>& normals, si
             if (done[v]) continue;
             done[v] = 1;
             parent[v] = p;
-            const bool same = estimated ? normals[v].dot(normals[p]) >= 0
-                                        : agrees(pts[v] - pts[p], normals[p], normals[v]);
-            if (v != p && !same) normals[v] = -normals[v];
+            if (v != p && !agrees(pts[v] - pts[p], normals[p], normals[v])) normals[v] = -normals[v];
             for (uint32_t u : adj[v])
-                if (!done[u])
-                    heap.push({estimated ? 1.0 - std::abs(normals[u].dot(normals[v])) : edge_weight(pts, normals, u, v),
-                               {u, v}});
+                if (!done[u]) heap.push({edge_weight(pts, normals, u, v, estimated), {u, v}});
         }
     }
     // the global step: each patch of the tree signed by the winding-number vote
     std::vector<uint32_t> label;
-    const size_t count = tree_patches(pts, normals, parent, estimated, std::max<size_t>(kMinPatch, n / 200), label);
+    const size_t count = tree_patches(pts, normals, parent, std::max<size_t>(kMinPatch, n / 200), label);
     vote_patch_signs(pts, normals, label, count, threads);
 }
 

