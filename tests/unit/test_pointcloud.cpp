@@ -257,6 +257,8 @@ TEST_CASE("point cloud: the local planes find a dense noisy cloud noisy, and its
     CHECK(clean_planes.scale_growth() > 2);
     CHECK(noisy_planes.noisy());
     CHECK(noisy_planes.scale_growth() > 1.4);   // the case the plane test must not miss
+}
+
 // Thin sheets closer together than PCA's neighbourhoods (a plane's wings and tail): PCA gets the
 // direction right (both sides are parallel); the signs across the sheet come from the facing rule
 // (normals.h). Without normals the skeleton must be about as good as with the exact ones: two-sided
