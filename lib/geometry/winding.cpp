@@ -243,6 +243,7 @@ bool WindingNumber::inside(const Vec3& q) const {
             magnitude += std::fabs(t);
         });
     constexpr double kTermBound = 4e-12;
+    static_assert(2 * (kArcError + 1e-15) <= kTermBound, "D = 2 (kArcError + 1 ulp) per term");
     const double slack = terms * kTermBound + 1e-15 * terms * (2 * magnitude + terms * kTermBound);
     const double half = 0.5 * kFourPi;
     if (omega - slack > half * (1 + 1e-15)) return true;
