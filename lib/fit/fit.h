@@ -36,7 +36,7 @@ struct FitOptions {
     int32_t threads = 0;               // 0 = all cores
     // Off by default. On: the fit above and a second fit (second_fit_options), both from the
     // connected skeleton; of the two, the one of lower two-sided Hausdorff distance as evaluate()
-    // measures it at its default options is kept (the first on a tie). About 3x the fit's time.
+    // measures it at its default options is kept (the first on a tie). 4-6x the fit's CPU time.
     bool thorough = false;
 };
 
