@@ -37,6 +37,8 @@ ca_status ca_connect(ca_context* ctx, const ca_candidate_set* set, const ca_sele
         ca::ConnectReport report;
         st = ca::connect_balls(set->core, selection->core, co, monitor, sk, &report);
         if (!st.ok()) return st;
+        if (o.fit < 0 || o.fit > 2)
+            return ca::fail(Code::invalid_argument, "fit must be 0, 1 or 2, not " + std::to_string(o.fit));
         if (o.fit_iterations < 0) return ca::fail(Code::invalid_argument, "fit_iterations must be >= 0");
         ca::FitStats fs;
         const std::optional<ca::FitOptions> fo = fit_options(o, set->core, ctx->desc.threads);

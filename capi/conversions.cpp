@@ -88,6 +88,7 @@ std::optional<ca::FitOptions> fit_options(const ca_connect_options& o, const ca:
     if (!(o.fit != 0 && has_mesh && o.fit_iterations > 0)) return std::nullopt;
     ca::FitOptions fo;
     fo.iterations = uint32_t(o.fit_iterations);
+    fo.thorough = o.fit == 2;
     fo.threads = threads;
     return fo;
 }

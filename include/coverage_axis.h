@@ -354,7 +354,10 @@ typedef struct ca_connect_options {
     int32_t reconnect;           /* 1 (default): join components by the shortest inside edges */
     int32_t fit;                 /* ABI 2. 1: after connecting, move each ball's centre and radius to fit
                                     the surface, edges and faces unchanged (meshes; docs/fidelity.md);
-                                    default 0 */
+                                    2: the thorough fit, that fit and a second one with twice its
+                                    boundary samples, of which the one of lower two-sided HD as
+                                    ca_evaluate measures it at its defaults is kept (4-6x the
+                                    CPU time); other values are CA_ERROR_INVALID_ARGUMENT; default 0 */
     int32_t fit_iterations;      /* ABI 2. Fitting steps; default 10 */
 } ca_connect_options;
 

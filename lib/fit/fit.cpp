@@ -346,8 +346,8 @@ Status fit_impl(const CandidateSet& set, const Selection& sel, const FitOptions&
 
 }  // namespace
 
-Status fit_skeleton(const CandidateSet& set, const Selection& sel, const FitOptions& opt, const Monitor& monitor,
-                    Skeleton& sk, FitStats& stats) {
+Status fit_once(const CandidateSet& set, const Selection& sel, const FitOptions& opt, const Monitor& monitor,
+                Skeleton& sk, FitStats& stats) {
     return fit_impl(set, sel, opt, monitor, sk, stats);
 }
 

@@ -16,6 +16,8 @@
 // (winding number > 1/2; a centre that would leave keeps its old position) and each radius is at
 // most the centre's distance to the surface plus an allowance: radius_tolerance, or the excess the
 // connected ball had over its centre's distance if larger.
+// The thorough fit (FitOptions::thorough, off by default; choose.cpp) runs this fit and a second
+// one and keeps the one the evaluator measures closer.
 #pragma once
 #include "candidates.h"
 #include "selection.h"
@@ -32,6 +34,10 @@ struct FitOptions {
     double radius_tolerance = 0.002;   // internal units: radius <= distance to surface + this (or + the connected excess)
     uint64_t seed = 1;
     int32_t threads = 0;               // 0 = all cores
+    // Off by default. On: the fit above and a second fit (second_fit_options), both from the
+    // connected skeleton; of the two, the one of lower two-sided Hausdorff distance as evaluate()
+    // measures it at its default options is kept (the first on a tie). 4-6x the fit's CPU time.
+    bool thorough = false;
 };
 
 struct FitStats {
@@ -39,9 +45,22 @@ struct FitStats {
     uint32_t iterations = 0, accepted = 0;      // steps computed / steps taken
     size_t uncovered = 0;     // cover samples that no fitted ball covers with its dilated radius
     double time_s = 0;
+    // thorough only: the evaluator's two-sided HD (% of the bbox diagonal) of the first and the
+    // second fit, and which was kept (0 the first, 1 the second)
+    double hd_first = 0, hd_second = 0;
+    uint32_t kept = 0;
 };
 
-// Fits sk's balls (internal units; sk as made by connect_balls from set and sel) in place.
+// The second fit of the thorough one: these options with twice the boundary samples of E (the
+// bulges between the regular samples are those the evaluator's denser draw finds).
+FitOptions second_fit_options(const FitOptions& opt);
+
+// One fit (fit.cpp), the thorough option ignored.
+Status fit_once(const CandidateSet& set, const Selection& sel, const FitOptions& opt, const Monitor& monitor,
+                Skeleton& sk, FitStats& stats);
+
+// Fits sk's balls (internal units; sk as made by connect_balls from set and sel) in place: one fit,
+// or with opt.thorough the better of two (choose.cpp).
 // Needs a triangle mesh: for point clouds and caller arrays it leaves sk unchanged.
 Status fit_skeleton(const CandidateSet& set, const Selection& sel, const FitOptions& opt,
                     const Monitor& monitor, Skeleton& sk, FitStats& stats);

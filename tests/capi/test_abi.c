@@ -496,6 +496,19 @@ static void test_probe_fit(void) {
         plain = connected_hd(ctx, set, sel, 0);
         CHECK(fabs(ss.hd_reached - fitted) < 1e-9 * fitted);
         CHECK(fabs(fitted - plain) > 1e-6);
+        /* fit = 2 (thorough): never farther than fit = 1 by ca_evaluate at its defaults */
+        CHECK(connected_hd(ctx, set, sel, 2) <= fitted);
+        ca_selection_destroy(sel);
+    }
+    {   /* fit values other than 0, 1, 2 are refused */
+        ca_connect_options cop;
+        ca_skeleton* sk = NULL;
+        ca_select_options_init(&so);
+        CHECK(ca_select(ctx, set, &so, &sel) == CA_OK);
+        ca_connect_options_init(&cop);
+        cop.fit = 3;
+        CHECK(ca_connect(ctx, set, sel, &cop, &sk) == CA_ERROR_INVALID_ARGUMENT && sk == NULL);
+        CHECK(strstr(ca_context_last_error(ctx), "fit") != NULL);
         ca_selection_destroy(sel);
     }
     ca_candidate_set_destroy(set);

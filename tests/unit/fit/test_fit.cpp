@@ -96,3 +96,38 @@ TEST_CASE("test_fit: capsule and torus: lower Hausdorff distance, same topology,
         CHECK(stats.uncovered == uncovered);
     }
 }
+
+// Brute force: the thorough fit returns, ball for ball, whichever of the regular fit and the
+// second fit (second_fit_options) evaluate() at its defaults measures closer, the first on a tie.
+TEST_CASE("test_fit: the thorough fit keeps the fit of lower evaluated Hausdorff distance") {
+    for (int shape = 0; shape < 2; ++shape) {
+        const ca::CandidateSet set =
+            candidates(shape == 0 ? shapes::torus(1.0, 0.3, 64, 24) : shapes::capsule(1.0, 0.3, 48, 24));
+        ca::Selection sel;
+        REQUIRE(ca::select_balls(set, {}, ca::Monitor{}, sel).ok());
+        ca::ConnectOptions copt;
+        copt.method = ca::ConnectMethod::medial;
+        ca::Skeleton sk;
+        REQUIRE(ca::connect_balls(set, sel, copt, ca::Monitor{}, sk).ok());
+        ca::FitOptions opt;
+        ca::FitStats stats;
+        ca::Skeleton first = sk, second = sk, thorough = sk;
+        REQUIRE(ca::fit_skeleton(set, sel, opt, ca::Monitor{}, first, stats).ok());
+        REQUIRE(ca::fit_skeleton(set, sel, ca::second_fit_options(opt), ca::Monitor{}, second, stats).ok());
+        opt.thorough = true;
+        REQUIRE(ca::fit_skeleton(set, sel, opt, ca::Monitor{}, thorough, stats).ok());
+        const double h1 = two_sided(set, first), h2 = two_sided(set, second);
+        CHECK(h1 != h2);   // the two fits differ, so the choice is tested
+        const ca::Skeleton& want = h2 < h1 ? second : first;
+        CHECK(stats.kept == (h2 < h1 ? 1u : 0u));
+        CHECK(stats.hd_first == h1);
+        CHECK(stats.hd_second == h2);
+        REQUIRE(thorough.balls.size() == want.balls.size());
+        for (size_t i = 0; i < want.balls.size(); ++i) {
+            CHECK(thorough.balls[i].center == want.balls[i].center);
+            CHECK(thorough.balls[i].radius == want.balls[i].radius);
+        }
+        CHECK(two_sided(set, thorough) == std::min(h1, h2));
+        CHECK(thorough.faces == sk.faces);
+    }
+}
