@@ -149,6 +149,11 @@ printf '2 0 0\nv 0 0 0 1\n' > "$tmp/bad.ma"
 check "--fit runs" test $? -eq 0
 check "--fit keeps the balls and edges" test "$(json_field selected "$tmp/f.json") $(json_field edges "$tmp/f.json")" = "$(json_field selected "$tmp/e.json") $(json_field edges "$tmp/e.json")"
 check "--fit moves the balls" bash -c "! cmp -s '$tmp/e.ma' '$tmp/f.ma'"
+# the thorough fit keeps the better of two fits by the evaluator at its defaults (what --evaluate runs)
+"$tool" "$data/fox.obj" -o "$tmp/ft.ma" --fit-thorough --evaluate --json > "$tmp/ft.json"
+check "--fit-thorough runs" test $? -eq 0
+check "--fit-thorough is no farther than --fit" awk -v t="$(json_field hd_two_sided "$tmp/ft.json")" -v f="$(json_field hd_two_sided "$tmp/f.json")" 'BEGIN{exit !(t > 0 && t <= f + 1e-9)}'
+check "--fit-thorough keeps the balls and edges" test "$(json_field selected "$tmp/ft.json") $(json_field edges "$tmp/ft.json")" = "$(json_field selected "$tmp/e.json") $(json_field edges "$tmp/e.json")"
 "$tool" evaluate "$data/fox.obj" "$tmp/bad.ma" > /dev/null 2> "$tmp/err"
 check "evaluate: a malformed .ma is a clear failure" test $? -eq 3 -a -s "$tmp/err"
 
