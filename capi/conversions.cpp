@@ -73,8 +73,10 @@ void fill(Array<double>& a, const Allocator& al, const std::vector<Vec3>& pts, c
 
 ca::ConnectOptions connect_options(const ca_connect_options& o, const ca::CandidateSet& set, int32_t threads) {
     ca::ConnectOptions co;
+    // the medial route needs an inside test: a mesh's winding number or a point cloud's
     const bool has_mesh = !set.surface.point_cloud && !set.surface.mesh.triangles.empty();
-    if (o.method == CA_CONNECT_AUTO) co.method = has_mesh ? ca::ConnectMethod::medial : ca::ConnectMethod::power;
+    const bool has_inside = has_mesh || set.cloud_winding != nullptr;
+    if (o.method == CA_CONNECT_AUTO) co.method = has_inside ? ca::ConnectMethod::medial : ca::ConnectMethod::power;
     else co.method = static_cast<ca::ConnectMethod>(o.method);
     co.remove_outside = o.remove_outside != 0;
     co.fill_holes = o.fill_holes != 0;

@@ -42,8 +42,8 @@ struct CandidateSet {
     std::vector<Vec3> cover_samples;      // S
     std::vector<Vec3> dense_samples;      // the Voronoi samples C (or the points of a cloud)
     std::vector<Vec3> connect_samples;    // power-diagram samples (empty: use dense_samples)
-    // Voronoi generator on a mesh: the Delaunay tetrahedra of dense_samples (flat ones dropped)
-    // and, per tetrahedron, whether its circumcentre is inside the shape (winding number > 1/2).
+    // Voronoi generator (mesh or point cloud): the Delaunay tetrahedra of dense_samples and, per
+    // tetrahedron, whether its circumcentre is inside the shape (winding number > 1/2; flat ones outer).
     // Empty otherwise (the medial-axis route then builds them itself).
     std::vector<Tet> voronoi_tets;
     std::vector<uint8_t> voronoi_inner;
