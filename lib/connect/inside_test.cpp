@@ -197,7 +197,7 @@ bool InsideTest::point_ok(Probes* probes, const Vec3& p, double r, double tol, d
         if (need > 0 && impl_->caps && impl_->caps->distance_below(p, need) < need) return false;
     } else if (tol >= 0 && impl_->cloud_tree) {
         const double need = r - tol;
-        if (need > 0 && impl_->cloud_tree->nearest_squared_below(p, need * need) < need * need) return false;
+        if (need > 0 && impl_->cloud_tree->distance(p) < need) return false;
     }
     for (int i = 0; i < n_own; ++i)
         if (in_ball(p, *own[i])) return true;
