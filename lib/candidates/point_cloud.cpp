@@ -191,6 +191,7 @@ Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monito
     // noisy clouds: cover the denoised surface (cloud_local_planes.cpp)
     const LocalPlanes planes(upts, unrm, threads);
     out.noise_ratio = planes.noise_ratio();
+    out.noisy_cloud = planes.noisy();
     out.noise_scale_growth = planes.scale_growth();
     std::vector<Vec3> sample_normals;
     const size_t pool = out.outliers ? kept.size() : pts.size();

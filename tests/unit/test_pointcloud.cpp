@@ -15,6 +15,7 @@
 #include "selection.h"
 #include "support/clouds.h"
 #include "support/shapes.h"
+#include "../../capi/conversions.h"
 
 #include <cmath>
 
@@ -290,6 +291,20 @@ TEST_CASE("point cloud: a noisy box is covered at the defaults and no ball leave
     for (const ca::Ball& b : r.skeleton.balls)
         for (int k = 0; k < 3; ++k) out = std::max({out, b.radius - b.center[k], b.center[k] + b.radius - hi[k]});
     CHECK(out <= 3 * sigma);
+}
+
+// CA_CONNECT_AUTO joins a clean cloud's balls along its inner medial axis (the cloud's winding
+// number as the inside test) and a noisy cloud's by the power diagram: inner Voronoi balls follow
+// the noise out of the shape.
+TEST_CASE("point cloud: the automatic route is medial on a clean cloud and power on a noisy one") {
+    const shapes::Cloud clean = shapes::sample_cloud(shapes::box(1.0, 0.5, 0.25), 5000, 3);
+    const Run c = run(clean), n = run(shapes::noisy_cloud(clean, 0.005, 0.0));
+    CHECK(!c.set.noisy_cloud);
+    CHECK(n.set.noisy_cloud);
+    ca_connect_options o;
+    ca_connect_options_init(&o);
+    CHECK(capi::connect_options(o, c.set, 1).method == ca::ConnectMethod::medial);
+    CHECK(capi::connect_options(o, n.set, 1).method == ca::ConnectMethod::power);
 }
 
 // Dense noisy clouds count as noisy: with 40 000 points on a sphere the 16 nearest neighbours lie
