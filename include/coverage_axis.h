@@ -343,8 +343,8 @@ CA_API ca_status ca_selection_stats(const ca_selection* selection, ca_select_sta
 
 /* ---- step 3: connectivity ------------------------------------------------------------------ */
 #define CA_CONNECT_POWER  0 /* regular triangulation of selected balls and dense surface samples */
-#define CA_CONNECT_MEDIAL 1 /* regions of the selected balls on the inner Voronoi medial mesh (meshes) */
-#define CA_CONNECT_AUTO   2 /* MEDIAL for meshes, POWER for point clouds and caller arrays */
+#define CA_CONNECT_MEDIAL 1 /* regions of the selected balls on the inner Voronoi medial mesh (meshes, point clouds) */
+#define CA_CONNECT_AUTO   2 /* MEDIAL for meshes and clean point clouds, POWER for noisy clouds and caller arrays */
 
 typedef struct ca_connect_options {
     uint32_t struct_size;        /* sizeof(ca_connect_options) */

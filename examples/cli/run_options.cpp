@@ -140,7 +140,7 @@ void add_run_options(CLI::App& app, RunOptions& o) {
         ->capture_default_str()->group(cover);
     app.add_flag("--skip-uncoverable", "ignore samples no ball covers instead of failing")->group(cover);
 
-    app.add_option("--connect", o.connect_route, "auto (medial for meshes, power for point clouds) | medial | power")
+    app.add_option("--connect", o.connect_route, "auto (medial for meshes and clean point clouds, power for noisy ones) | medial | power")
         ->capture_default_str()->check(CLI::IsMember(keys(kRoutes)))->group(connect);
     app.add_flag("--fit", "fit the balls' centres and radii to the surface after connecting; the --target-error and "
                  "--target-count searches then measure fitted skeletons (docs/fidelity.md)")

@@ -42,8 +42,8 @@ struct CandidateSet {
     std::vector<Vec3> cover_samples;      // S
     std::vector<Vec3> dense_samples;      // the Voronoi samples C (or the points of a cloud)
     std::vector<Vec3> connect_samples;    // power-diagram samples (empty: use dense_samples)
-    // Voronoi generator on a mesh: the Delaunay tetrahedra of dense_samples (flat ones dropped)
-    // and, per tetrahedron, whether its circumcentre is inside the shape (winding number > 1/2).
+    // Voronoi generator (mesh or point cloud): the Delaunay tetrahedra of dense_samples and, per
+    // tetrahedron, whether its circumcentre is inside the shape (winding number > 1/2; flat ones outer).
     // Empty otherwise (the medial-axis route then builds them itself).
     std::vector<Tet> voronoi_tets;
     std::vector<uint8_t> voronoi_inner;
@@ -62,6 +62,7 @@ struct CandidateSet {
     size_t outside_local_plane = 0;       // point clouds: candidates dropped outside the local surface (cloud_local_planes.cpp)
     double noise_ratio = 0;               // point clouds: median off-plane distance / spacing (cloud_local_planes.cpp)
     double noise_scale_growth = 0;        // point clouds: the same over 16 and 8 neighbours (cloud_local_planes.cpp)
+    bool noisy_cloud = false;             // point clouds: judged noisy by those two (cloud_local_planes.cpp)
     double orientation_inconsistent = 0;  // point clouds: fraction of orientation probes failing (point_cloud.cpp)
     std::vector<Ball> balls;              // P, undilated medial radii
     size_t fallback_balls = 0;            // of which added by add_fallback_balls (at the end)

@@ -113,19 +113,30 @@ void drop_outliers(const std::vector<Vec3>& pts, std::vector<Vec3>& upts, std::v
     unrm.resize(n);
 }
 
+// Also the inner flags of every tetrahedron (circumcentre inside by the winding number; flat or
+// far ones outer), which the medial connection route reuses instead of a second Delaunay.
 Status voronoi_cloud_candidates(const std::vector<Vec3>& upts, const PointCloudWinding& winding, int threads,
-                                const Monitor& monitor, std::vector<Ball>& out) {
+                                const Monitor& monitor, std::vector<Ball>& out, std::vector<Tet>& tets,
+                                std::vector<uint8_t>& inner) {
     std::vector<Ball> balls;
-    std::vector<Tet> tets_unused;
+    std::vector<uint8_t> raw_inner;
+    std::vector<Tet> raw_tets_kept;
     Status st = voronoi_vertices(upts, threads, monitor,
-        [&](const std::vector<uint32_t>& ids, const std::vector<Ball>& raw, const std::vector<Tet>&,
+        [&](const std::vector<uint32_t>& ids, const std::vector<Ball>& raw, const std::vector<Tet>& raw_tets,
             std::vector<uint8_t>& keep) {
-            const bool done = parallel_for(ids.size(), threads, 8192, monitor, "inside", [&](size_t b, size_t e) {
-                for (size_t k = b; k < e; ++k) keep[k] = winding.inside(raw[ids[k]].center);
+            raw_inner.assign(raw.size(), 0);
+            const bool done = parallel_for(raw.size(), threads, 8192, monitor, "inside", [&](size_t b, size_t e) {
+                for (size_t k = b; k < e; ++k) raw_inner[k] = winding.inside(raw[k].center);
             });
-            return done ? Status::success() : monitor.stop_status("inside");
-        }, balls, tets_unused);
+            if (!done) return monitor.stop_status("inside");
+            for (size_t k = 0; k < ids.size(); ++k) keep[k] = raw_inner[ids[k]];
+            raw_tets_kept = raw_tets;
+            return Status::success();
+        }, balls, tets);
     if (!st.ok()) return st;
+    inner.assign(tets.size(), 0);
+    for (size_t t = 0, r = 0; t < tets.size() && r < raw_tets_kept.size(); ++t)
+        if (tets[t] == raw_tets_kept[r]) inner[t] = raw_inner[r++];
     out = cluster_filter(balls, threads);
     return Status::success();
 }
@@ -180,6 +191,7 @@ Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monito
     // noisy clouds: cover the denoised surface (cloud_local_planes.cpp)
     const LocalPlanes planes(upts, unrm, threads);
     out.noise_ratio = planes.noise_ratio();
+    out.noisy_cloud = planes.noisy();
     out.noise_scale_growth = planes.scale_growth();
     std::vector<Vec3> sample_normals;
     const size_t pool = out.outliers ? kept.size() : pts.size();
@@ -190,7 +202,7 @@ Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monito
     }
     out.dense_samples = upts;
     Status st = opt.generator == Generator::voronoi
-                    ? voronoi_cloud_candidates(upts, *winding, threads, monitor, out.balls)
+                    ? voronoi_cloud_candidates(upts, *winding, threads, monitor, out.balls, out.voronoi_tets, out.voronoi_inner)
                     : random_cloud_candidates(opt, upts, *winding, threads, monitor, out.balls);
     if (!st.ok()) return st;
     if (planes.noisy()) out.outside_local_plane = drop_outside_local_planes(planes, threads, monitor, out.balls);

@@ -36,9 +36,10 @@ Status connect_balls(const CandidateSet& set, const Selection& sel, const Connec
     if (sel.indices.size() != sel.dilated_radii.size()) return fail(Code::internal, "inconsistent selection");
     for (uint32_t i : sel.indices)
         if (i >= set.balls.size()) return fail(Code::invalid_argument, "the selection does not belong to this candidate set");
-    if (opt.method == ConnectMethod::medial && set.surface.mesh.triangles.empty())
+    if (opt.method == ConnectMethod::medial && set.surface.mesh.triangles.empty() && !set.cloud_winding)
         return fail(Code::invalid_argument,
-                    "the medial-axis connection needs a triangle mesh; use the power-diagram route for point clouds");
+                    "the medial-axis connection needs a triangle mesh or a point cloud's winding number; use the "
+                    "power-diagram route for candidate sets from caller arrays");
     for (uint32_t i : sel.indices) out.balls.push_back(set.balls[i]);
     Status st;
     switch (opt.method) {

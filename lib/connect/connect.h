@@ -5,10 +5,11 @@
 //    (weight r'^2, r' the dilated radius) together with dense surface samples (weight delta^2,
 //    CandidateSet::connect_samples, 10 000 by default), by Qhull's 4-D lifting; an edge or
 //    triangle of a cell whose vertices are all selected balls becomes a skeleton edge/triangle.
-//  * medial (meshes only): the inner Voronoi diagram of the Voronoi samples as a medial mesh
+//  * medial (meshes and point clouds): the inner Voronoi diagram of the Voronoi samples (a cloud's
+//    points) as a medial mesh
 //    (vertices: circumcentres of inner Delaunay tetrahedra; edges: inner tetrahedra sharing a
 //    face; faces: the Voronoi polygon dual to a Delaunay edge whose closed ring of tetrahedra is
-//    all inner, fanned into triangles). Each selected ball is snapped to its nearest medial
+//    all inner, fanned into triangles; inner by the mesh's or the cloud's winding number). Each selected ball is snapped to its nearest medial
 //    vertex (its own vertex for the Voronoi generator); every medial vertex gets the label of its
 //    nearest anchor along the medial mesh (multi-source Dijkstra, Euclidean edge lengths); two
 //    anchors whose regions share a medial edge are joined by an edge, three anchors meeting on
@@ -30,9 +31,10 @@
 //    topology, so such loops would be spurious).
 //    One failing point removes the element (InsideTest, inside_test.cpp: the rule is evaluated
 //    exactly, but most winding-number and distance queries are skipped by a Lipschitz bound and
-//    by surface-free balls on closed meshes). On the medial route (meshes), removal and hole filling also require the
+//    by surface-free balls on closed meshes). On the medial route, removal and hole filling also require the
 //    element's reconstruction to stay in the shape: at each test point the interpolated ball
-//    (radius interpolated like the centre) must have distance to the surface >= radius - delta
+//    (radius interpolated like the centre) must have distance to the surface (for a point cloud:
+//    to its nearest point) >= radius - delta
 //    (a cone or slab bridging a concave gap, e.g. between fingers, bulges out of the shape and
 //    would spoil the Hausdorff distance); on an open mesh also distance to the hole caps
 //    (hole_caps.h) >= radius - delta (balls touching a curved cap span slabs that cross it). Reconnection uses the centre-line rule only, so that a
@@ -90,7 +92,8 @@ struct ConnectReport {
 };
 
 // Skeleton in internal units; its balls are the selected balls (undilated radii), in selection order.
-// The medial route needs a mesh: point clouds give Code::invalid_argument.
+// The medial route needs a mesh or a point cloud's winding number: a set from caller arrays gives
+// Code::invalid_argument.
 Status connect_balls(const CandidateSet& set, const Selection& sel, const ConnectOptions& opt,
                      const Monitor& monitor, Skeleton& out, ConnectReport* report = nullptr);
 
@@ -108,8 +111,9 @@ public:
     InsideTest& operator=(InsideTest&&) noexcept;
     bool inside(const Vec3& p) const;   // (point-cloud) winding number > 1/2
     // Edge (a, b) / triangle (a, b, c) of balls: every test point at spacing h passes. With
-    // envelope_tol >= 0 (meshes), the interpolated ball at each test point must also stay inside
-    // the shape up to envelope_tol (distance to the surface >= interpolated radius - envelope_tol):
+    // envelope_tol >= 0, the interpolated ball at each test point must also stay inside
+    // the shape up to envelope_tol (distance to the surface, or to a cloud's nearest point,
+    // >= interpolated radius - envelope_tol):
     // the reconstruction of the element (cone, slab) does not bulge out of the shape.
     // outside_tol > 0 (meshes) also accepts test points outside the shape by at most outside_tol.
     bool segment_inside(const Ball& a, const Ball& b, double h, double envelope_tol = -1, double outside_tol = 0) const;

@@ -67,6 +67,8 @@ struct InsideTest::Impl {
     std::shared_ptr<const MeshDistance> caps;       // open meshes: the hole caps (envelope rule)
     bool closed = false;                      // winding number integer-valued (shortcut allowed)
     std::shared_ptr<const PointCloudWinding> cloud_winding;   // point clouds (the candidate set's)
+    std::vector<Vec3> cloud_points;           // point clouds: the points (envelope rule)
+    std::unique_ptr<PointTree> cloud_tree;
     std::vector<Vec3> centers;                // the candidate balls (point clouds without a winding number)
     std::vector<double> radii;
     std::unique_ptr<PointTree> tree;
@@ -155,6 +157,10 @@ InsideTest::InsideTest(const CandidateSet& set) : impl_(std::make_unique<Impl>()
         return;
     }
     impl_->cloud_winding = set.cloud_winding;
+    // the distance to the surface of a point cloud: to its nearest point (an overestimate by at
+    // most the sample spacing, far below the envelope tolerance delta)
+    impl_->cloud_points = set.dense_samples.empty() ? set.cover_samples : set.dense_samples;
+    impl_->cloud_tree = std::make_unique<PointTree>(impl_->cloud_points);
     if (impl_->cloud_winding) return;
     for (const Ball& b : set.balls) {
         impl_->centers.push_back(b.center);
@@ -180,7 +186,7 @@ bool InsideTest::inside(const Vec3& p) const {
     return false;
 }
 
-// One test point: the envelope condition (tol >= 0, meshes), then inside one of the element's
+// One test point: the envelope condition (tol >= 0), then inside one of the element's
 // own balls, inside the shape, or (outside_tol > 0, meshes) at most outside_tol outside it.
 bool InsideTest::point_ok(Probes* probes, const Vec3& p, double r, double tol, double outside_tol,
                           const Ball* const* own, int n_own) const {
@@ -189,6 +195,9 @@ bool InsideTest::point_ok(Probes* probes, const Vec3& p, double r, double tol, d
         if (need > 0 && !probes->distance_at_least(p, need)) return false;
         // the hole caps bound the element as the surface does: nothing bulges out through a hole
         if (need > 0 && impl_->caps && impl_->caps->distance_below(p, need) < need) return false;
+    } else if (tol >= 0 && impl_->cloud_tree) {
+        const double need = r - tol;
+        if (need > 0 && impl_->cloud_tree->distance(p) < need) return false;
     }
     for (int i = 0; i < n_own; ++i)
         if (in_ball(p, *own[i])) return true;

@@ -10,6 +10,7 @@
 #include "delaunay.h"
 #include "kdtree.h"
 #include "parallel.h"
+#include "point_winding.h"
 #include "sampling.h"
 #include "winding.h"
 
@@ -46,15 +47,17 @@ Status voronoi_diagram(const CandidateSet& set, int threads, const Monitor& moni
     for (uint32_t i : remove_near_duplicates(raw, 1e-7)) pts.push_back(raw[i]);
     Status st = delaunay_tetrahedra(pts, tets, monitor, "connect");
     if (!st.ok()) return st;
+    // the inside test: the mesh's winding number, or a point cloud's own (point_winding.h)
+    const PointCloudWinding* cloud = set.surface.mesh.triangles.empty() ? set.cloud_winding.get() : nullptr;
     const std::shared_ptr<const WindingNumber> own =
-        set.winding ? nullptr : std::make_shared<const WindingNumber>(set.surface.mesh);
-    const WindingNumber& winding = set.winding ? *set.winding : *own;
+        set.winding || cloud ? nullptr : std::make_shared<const WindingNumber>(set.surface.mesh);
+    const WindingNumber* winding = set.winding ? set.winding.get() : own.get();
     inner.assign(tets.size(), 0);
     const bool done = parallel_for(tets.size(), resolve_threads(threads), 8192, monitor, "connect", [&](size_t b, size_t e) {
         for (size_t t = b; t < e; ++t) {
             Vec3 c;
             const Tet& q = tets[t];
-            inner[t] = circumcenter(pts[q[0]], pts[q[1]], pts[q[2]], pts[q[3]], c) && winding.inside(c);
+            inner[t] = circumcenter(pts[q[0]], pts[q[1]], pts[q[2]], pts[q[3]], c) && (cloud ? cloud->inside(c) : winding->inside(c));
         }
     });
     return done ? Status::success() : monitor.stop_status("connect");

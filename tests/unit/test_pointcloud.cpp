@@ -15,6 +15,7 @@
 #include "selection.h"
 #include "support/clouds.h"
 #include "support/shapes.h"
+#include "../../capi/conversions.h"
 
 #include <cmath>
 
@@ -27,7 +28,8 @@ struct Run {
 };
 
 // Runs the three steps on a cloud; balls come back in the cloud's own units.
-Run run(shapes::Cloud cloud, ca::CandidateOptions copt = {}, ca::PointNormals trust = ca::PointNormals::trusted) {
+Run run(shapes::Cloud cloud, ca::CandidateOptions copt = {}, ca::PointNormals trust = ca::PointNormals::trusted,
+        ca::ConnectOptions kopt = {}) {
     Run r;
     ca::SelectOptions sopt;
     sopt.cover.time_limit_s = 0;
@@ -39,7 +41,7 @@ Run run(shapes::Cloud cloud, ca::CandidateOptions copt = {}, ca::PointNormals tr
     REQUIRE_MESSAGE(st.ok(), st.message);
     st = ca::select_balls(r.set, sopt, monitor, r.sel);
     REQUIRE_MESSAGE(st.ok(), st.message);
-    st = ca::connect_balls(r.set, r.sel, {}, monitor, r.skeleton);
+    st = ca::connect_balls(r.set, r.sel, kopt, monitor, r.skeleton);
     REQUIRE_MESSAGE(st.ok(), st.message);
     for (ca::Ball& b : r.skeleton.balls) {
         b.center = r.set.surface.norm.to_user(b.center);
@@ -69,7 +71,51 @@ void check_ring(const Run& r, double R, double tube) {
     CHECK(ca::topology(r.skeleton).components == 1);
 }
 
+// A dumbbell: spheres of radius 1 at x = +-1.5 joined by a cylinder of radius 0.25 along x,
+// sampled on the boundary of the union (exact outward normals), about `n` points in all.
+shapes::Cloud dumbbell_cloud(size_t n) {
+    shapes::Cloud c;
+    ca::Rng rng(5);
+    const double neck = 0.25;
+    auto in_sphere = [](const ca::Vec3& p) { return (p - ca::Vec3(-1.5, 0, 0)).norm() < 1 || (p - ca::Vec3(1.5, 0, 0)).norm() < 1; };
+    for (size_t i = 0; i < n; ++i) {
+        const double u = 2 * rng.uniform() - 1, phi = 6.283185307179586 * rng.uniform();
+        const ca::Vec3 d(u, std::sqrt(1 - u * u) * std::cos(phi), std::sqrt(1 - u * u) * std::sin(phi));
+        const ca::Vec3 p = (i % 2 ? ca::Vec3(1.5, 0, 0) : ca::Vec3(-1.5, 0, 0)) + d;
+        if (std::abs(p.x()) < 1.5 && std::hypot(p.y(), p.z()) < neck) continue;   // inside the neck
+        c.points.push_back(p), c.normals.push_back(d);
+        if (i % 4) continue;   // the neck: a quarter as many draws (its area is about a tenth)
+        const ca::Vec3 q(3 * rng.uniform() - 1.5, neck * std::cos(phi), neck * std::sin(phi));
+        if (!in_sphere(q)) c.points.push_back(q), c.normals.push_back(ca::Vec3(0, q.y(), q.z()) / neck);
+    }
+    return c;
+}
+
 }  // namespace
+
+TEST_CASE("point cloud: the envelope rule measures the distance to the cloud's points") {
+    // The segment between the two bulbs' centres runs inside the neck (centre-line rule passes),
+    // but its interpolated balls (radius 1) stick far out of the neck (radius 0.25): refused.
+    Run r = run(dumbbell_cloud(8000));
+    const ca::Normalization& nz = r.set.surface.norm;
+    const ca::Ball a{nz.to_internal(ca::Vec3(-1.5, 0, 0)), 1 / nz.scale}, b{nz.to_internal(ca::Vec3(1.5, 0, 0)), 1 / nz.scale};
+    const ca::InsideTest test(r.set);
+    const double h = 0.005, delta = 0.02;
+    CHECK(test.segment_inside(a, b, h));
+    CHECK(!test.segment_inside(a, b, h, delta));
+    // small balls along the neck's axis stay within it
+    const ca::Ball c{nz.to_internal(ca::Vec3(-0.3, 0, 0)), 0.2 / nz.scale}, d{nz.to_internal(ca::Vec3(0.3, 0, 0)), 0.2 / nz.scale};
+    CHECK(test.segment_inside(c, d, h, delta));
+}
+
+TEST_CASE("point cloud: the medial route connects a sampled torus into a ring and a dumbbell into one component") {
+    const double R = 1.0, tube = 0.3;
+    ca::ConnectOptions kopt;
+    kopt.method = ca::ConnectMethod::medial;
+    check_ring(run(shapes::sample_cloud(shapes::torus(R, tube, 128, 48), 8000), {}, ca::PointNormals::trusted, kopt), R, tube);
+    Run r = run(dumbbell_cloud(8000), {}, ca::PointNormals::trusted, kopt);
+    CHECK(ca::topology(r.skeleton).components == 1);
+}
 
 TEST_CASE("point cloud: a sampled sphere gives one ball at its centre") {
     const double R = 2.0;
@@ -245,6 +291,20 @@ TEST_CASE("point cloud: a noisy box is covered at the defaults and no ball leave
     for (const ca::Ball& b : r.skeleton.balls)
         for (int k = 0; k < 3; ++k) out = std::max({out, b.radius - b.center[k], b.center[k] + b.radius - hi[k]});
     CHECK(out <= 3 * sigma);
+}
+
+// CA_CONNECT_AUTO joins a clean cloud's balls along its inner medial axis (the cloud's winding
+// number as the inside test) and a noisy cloud's by the power diagram: inner Voronoi balls follow
+// the noise out of the shape.
+TEST_CASE("point cloud: the automatic route is medial on a clean cloud and power on a noisy one") {
+    const shapes::Cloud clean = shapes::sample_cloud(shapes::box(1.0, 0.5, 0.25), 5000, 3);
+    const Run c = run(clean), n = run(shapes::noisy_cloud(clean, 0.005, 0.0));
+    CHECK(!c.set.noisy_cloud);
+    CHECK(n.set.noisy_cloud);
+    ca_connect_options o;
+    ca_connect_options_init(&o);
+    CHECK(capi::connect_options(o, c.set, 1).method == ca::ConnectMethod::medial);
+    CHECK(capi::connect_options(o, n.set, 1).method == ca::ConnectMethod::power);
 }
 
 // Dense noisy clouds count as noisy: with 40 000 points on a sphere the 16 nearest neighbours lie
