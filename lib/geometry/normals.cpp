@@ -4,7 +4,6 @@
 
 #include "kdtree.h"
 #include "patch_signs.h"
-#include "point_signs.h"
 #include "union_find.h"
 
 #include <Eigen/Eigenvalues>
@@ -191,7 +190,6 @@ void orient_normals(const std::vector<Vec3>& pts, std::vector<Vec3>& normals, si
     std::vector<uint32_t> label;
     const size_t count = tree_patches(pts, normals, parent, std::max<size_t>(kMinPatch, n / 200), label);
     vote_patch_signs(pts, normals, label, count, threads);
-    refine_point_signs(pts, normals, 3, threads);
 }
 
 double sign_disagreement(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, size_t k, int threads) {
