@@ -6,8 +6,8 @@
 // exact normals; and, only when --variants names it, (o): (b)'s PCA directions with the signs of
 // the exact normals, passed as trusted, a diagnostic that tells what wrong signs cost (b, c) from
 // what PCA's directions cost (it counts in no summary line). Each row: whether it succeeded, |V|,
-// the samples left uncovered (an uncoverable cloud is run again with skip_uncoverable to count them and measure the rest), the Hausdorff
-// distances against the source mesh (ca_evaluate at its defaults) and the pipeline's time
+// the samples left uncovered (an uncoverable cloud is run again with skip_uncoverable to count
+// them and measure the rest), the Hausdorff distances against the source mesh (ca_evaluate at its defaults) and the pipeline's time
 // (candidates + select + connect, not the evaluation). Then the mesh route's distance per shape
 // and one summary line per target.
 // The evaluation uses 10 000 surface and 30 000 envelope samples (the mesh route's too), so that
