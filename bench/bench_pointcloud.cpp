@@ -3,15 +3,17 @@
 // area-uniformly (fixed seed) from every mesh under <data>/meshes/paper at 5000 and 30 000 points,
 // in four variants: (a) the exact normals of the sampled triangles, (b) PCA normals with random
 // signs, (c) no normals, (d) Gaussian noise of 0.5 % of the bbox diagonal per coordinate with the
-// exact normals. Each row: whether it succeeded, |V|, the samples left uncovered (an uncoverable
-// cloud is run again with skip_uncoverable to count them and measure the rest), the Hausdorff
-// distances against the source mesh (ca_evaluate at its defaults) and the pipeline's time
+// exact normals; and, only when --variants names it, (o): (b)'s PCA directions with the signs of
+// the exact normals, passed as trusted, a diagnostic that tells what wrong signs cost (b, c) from
+// what PCA's directions cost (it counts in no summary line). Each row: whether it succeeded, |V|,
+// the samples left uncovered (an uncoverable cloud is run again with skip_uncoverable to count
+// them and measure the rest), the Hausdorff distances against the source mesh (ca_evaluate at its defaults) and the pipeline's time
 // (candidates + select + connect, not the evaluation). Then the mesh route's distance per shape
 // and one summary line per target.
 // The evaluation uses 10 000 surface and 30 000 envelope samples (the mesh route's too), so that
 // the whole table stays within minutes; clouds above 5000 points are sampled only from the
 // shapes named by --large (bunny, fish, horse) unless --full.
-// usage: bench_pointcloud [DATA_ROOT] [--only NAME[,NAME...]] [--sizes N[,N...]] [--variants abcd]
+// usage: bench_pointcloud [DATA_ROOT] [--only NAME[,NAME...]] [--sizes N[,N...]] [--variants abcdo]
 //                         [--large NAME[,NAME...] | --full]
 //   --only keeps the meshes and clouds whose file stem starts with one of the names.
 #include "bench_common.h"
@@ -207,7 +209,7 @@ struct Variant {
     const char* label;
 };
 const Variant kVariants[] = {{'a', "(a) exact normals"}, {'b', "(b) PCA, random signs"}, {'c', "(c) no normals"},
-                             {'d', "(d) 0.5 % noise"}};
+                             {'d', "(d) 0.5 % noise"}, {'o', "(o) PCA, exact signs"}};
 
 // The cloud of variant `key` sampled from `mesh` with `n` points: positions and normals (empty: none).
 void make_variant(const ca::Mesh& mesh, size_t n, char key, double diagonal, std::vector<double>& xyz,
@@ -222,6 +224,13 @@ void make_variant(const ca::Mesh& mesh, size_t n, char key, double diagonal, std
         ca::Rng rng(99 + n);
         for (ca::Vec3& v : pca)
             if (rng.next() & 1) v = -v;
+        normals = flatten(pca);
+    }
+    if (key == 'o') {
+        // diagnostic: (b)'s directions with the signs of the exact normals, passed as trusted
+        std::vector<ca::Vec3> pca = ca::estimate_normals(c.points);
+        for (size_t i = 0; i < pca.size(); ++i)
+            if (pca[i].dot(c.normals[i]) < 0) pca[i] = -pca[i];
         normals = flatten(pca);
     }
     if (key == 'd') {
@@ -260,7 +269,7 @@ void print_ratio_line(const char* what, const std::vector<double>& ratios, doubl
 int main(int argc, char** argv) {
     Options o;
     if (!parse(argc, argv, o)) {
-        std::fprintf(stderr, "usage: bench_pointcloud [DATA_ROOT] [--only NAME[,NAME...]] [--sizes N[,N...]] [--variants abcd]\n");
+        std::fprintf(stderr, "usage: bench_pointcloud [DATA_ROOT] [--only NAME[,NAME...]] [--sizes N[,N...]] [--variants abcdo]\n");
         return 2;
     }
     std::vector<std::string> meshes, clouds;
@@ -340,7 +349,7 @@ int main(int argc, char** argv) {
             const size_t n = key.first;
             const char variant = key.second;
             if (r.status == CA_OK) times[n].push_back(r.seconds), cpu_times[n].push_back(r.cpu_seconds);
-            if (variant != 'd') clean += 1, covered += r.status == CA_OK && r.uncovered == 0;
+            if (variant != 'd' && variant != 'o') clean += 1, covered += r.status == CA_OK && r.uncovered == 0;
             auto a = sr.runs.find({n, 'a'});
             const bool a_ok = a != sr.runs.end() && a->second.status == CA_OK && a->second.evaluated;
             const bool r_ok = r.status == CA_OK && r.evaluated;
