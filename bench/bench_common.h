@@ -29,6 +29,18 @@ inline std::vector<std::string> list_files(const std::string& dir, const std::st
     return out;
 }
 
+// --only NAME[,NAME...]: true when `only` is empty or `name` starts with one of the names.
+inline bool selected(const std::string& only, const std::string& name) {
+    if (only.empty()) return true;
+    size_t b = 0;
+    while (b <= only.size()) {
+        const size_t e = std::min(only.find(',', b), only.size());
+        if (name.rfind(only.substr(b, e - b), 0) == 0) return true;
+        b = e + 1;
+    }
+    return false;
+}
+
 inline std::string stem(const std::string& path) {
     std::string n = path.substr(path.find_last_of('/') + 1);
     return n.substr(0, n.find_last_of('.'));

@@ -76,17 +76,6 @@ void run_cloud(const std::string& name, const shapes::Cloud& c) {
     }
 }
 
-bool selected(const std::string& only, const std::string& name) {
-    if (only.empty()) return true;
-    size_t b = 0;
-    while (b <= only.size()) {
-        const size_t e = std::min(only.find(',', b), only.size());
-        if (name.rfind(only.substr(b, e - b), 0) == 0) return true;
-        b = e + 1;
-    }
-    return false;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -100,7 +89,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> files = {std::string(CA_TEST_DATA) + "/fish_points.xyz"};
     for (const std::string& f : bench::list_files(root + "/pointclouds", ".xyz")) files.push_back(f);
     for (const std::string& f : files) {
-        if (!selected(only, bench::stem(f))) continue;
+        if (!bench::selected(only, bench::stem(f))) continue;
         caio::MeshData m;
         std::string err;
         if (!caio::read_mesh(f, m, err) || m.normals.empty()) continue;
@@ -112,7 +101,7 @@ int main(int argc, char** argv) {
         run_cloud(bench::stem(f), c);
     }
     for (const std::string& f : bench::list_files(root + "/meshes/paper", ".obj")) {
-        if (!selected(only, bench::stem(f))) continue;
+        if (!bench::selected(only, bench::stem(f))) continue;
         ca::Mesh mesh;
         std::string err;
         if (!read_core_mesh(f, mesh, err)) continue;

@@ -6,7 +6,8 @@
 // fit, and evaluated) and the smallest ball count of each sweep that reaches HD <= 2 %. Summary,
 // without and with the fit: how many closed models reach 2 %, and on how many the search needs
 // fewer, as many or more balls than its sweep's best.
-// usage: bench_target_error [DATA_ROOT]   (default ../shared/data; skipped when missing)
+// usage: bench_target_error [DATA_ROOT] [--only NAME[,NAME...]]   (default ../shared/data; skipped when
+// missing; --only keeps the meshes whose file stem starts with one of the names)
 #include "bench_common.h"
 #include "connect.h"
 #include "support/mesh_convert.h"
@@ -124,7 +125,12 @@ void print_best(bool found, const Probe& best) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    const std::string root = argc > 1 ? argv[1] : "../shared/data";
+    std::string root = "../shared/data", only;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--only" && i + 1 < argc) only = argv[++i];
+        else root = a;
+    }
     const auto models = bench::list_files(root + "/meshes/paper", ".obj");
     if (models.empty()) {
         std::printf("bench_target_error: no models under %s/meshes/paper, skipped\n", root.c_str());
@@ -144,6 +150,7 @@ int main(int argc, char** argv) {
     std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     Tally plain, fitted;
     for (const std::string& path : models) {
+        if (!bench::selected(only, bench::stem(path))) continue;
         caio::MeshData mesh;
         std::string err;
         if (!caio::read_mesh(path, mesh, err)) {

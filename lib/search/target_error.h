@@ -3,12 +3,11 @@
 // most E % of the bounding-box diagonal, found by a search over the offset delta on one
 // candidate set: each probe selects at one delta, connects and evaluates.
 //
-// The search: the first probe is at the given delta. While the probes pass (HD <= E) delta is
-// doubled, while they fail it is halved (not below kFallbackReach, where a cover still exists),
-// until a passing delta and a larger failing one bracket the largest passing delta; then that
-// bracket is bisected. At most max_probes probes in all, and bisection stops when the bracket is
-// narrower than the tolerance. The result is the best passing probe (fewest balls, then lowest
-// HD, then larger delta), or, when none passes, the probe of lowest HD with `reached` false.
+// The search (delta_search.h): bracket the largest passing delta (HD <= E) by doubling or
+// halving from the given delta, bisect it, then probe the neighbourhood of the best probe (the HD
+// is not monotone in delta), at most max_probes probes in all. The result is the best passing probe
+// (fewest balls, then lowest HD, then larger delta), or, when none passes, the probe of lowest HD
+// with `reached` false.
 //
 // What this guarantees: the returned selection's HD, measured with the given evaluation
 // options, is the HD reported (it is not re-sampled), and is <= E when `reached`. The HD is not
