@@ -45,6 +45,7 @@ ca_status ca_candidates(ca_context* ctx, const ca_surface_view* surface, const c
         ca::PointNormals trust = ca::PointNormals::trusted;
         st = read_surface(surface, true, raw, normals, &trust);
         if (!st.ok()) return st;
+        if (monitor.stopped()) return monitor.stop_status("surface");
         ca::Surface surf;
         st = ca::prepare_surface(std::move(raw), std::move(normals), surf, true, trust, monitor,
                                  ca::resolve_threads(ctx->desc.threads));

@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cstdint>
@@ -81,5 +82,19 @@ struct Monitor {
         return fail(Code::cancelled, std::string(stage) + ": cancelled");
     }
 };
+
+// Sizes `v` to n copies of `value`, kCheckEvery * 64 items at a time with a stop test before each
+// chunk (false when stopped). Filling a fresh allocation touches each of its pages, and the page
+// faults of a buffer of tens of megabytes take longer than a cancel may wait.
+template <class T>
+bool fill_checked(std::vector<T>& v, size_t n, const T& value, const Monitor& monitor) {
+    v.clear();
+    v.reserve(n);
+    while (v.size() < n) {
+        if (monitor.stopped()) return false;
+        v.resize(std::min(n, v.size() + Monitor::kCheckEvery * 64), value);
+    }
+    return true;
+}
 
 }  // namespace ca

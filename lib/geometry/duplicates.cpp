@@ -11,11 +11,11 @@ namespace ca {
 // position. Keys hash the coordinates' bits with -0 folded onto +0, which == treats as equal.
 std::vector<uint32_t> weld_map(const std::vector<Vec3>& vertices, const Monitor& monitor) {
     const size_t nv = vertices.size();
-    std::vector<uint32_t> weld(nv);
     size_t size = 16;
     while (size < 2 * nv) size *= 2;
     constexpr uint32_t kEmpty = UINT32_MAX;
-    std::vector<uint32_t> table(size, kEmpty);
+    std::vector<uint32_t> weld, table;
+    if (!fill_checked(weld, nv, 0u, monitor) || !fill_checked(table, size, kEmpty, monitor)) return {};
     auto bits = [](double x) {
         x += 0.0;   // -0 -> +0
         uint64_t b;
@@ -47,7 +47,9 @@ MergeCounts merge_duplicate_geometry(Mesh& mesh, const Monitor& monitor) {
     // welded corners; triangles with a repeated corner are dropped here
     std::vector<Tri> tris;
     tris.reserve(nt);
-    for (const Tri& t : mesh.triangles) {
+    for (size_t k = 0; k < nt; ++k) {
+        if (monitor.stopped_at(k)) return stopped;
+        const Tri& t = mesh.triangles[k];
         const Tri w = {weld[t[0]], weld[t[1]], weld[t[2]]};
         if (w[0] == w[1] || w[1] == w[2] || w[0] == w[2]) ++counts.degenerate;
         else tris.push_back(w);
@@ -68,8 +70,10 @@ MergeCounts merge_duplicate_geometry(Mesh& mesh, const Monitor& monitor) {
     size_t size = 16;
     while (size < 2 * n) size *= 2;
     constexpr uint32_t kEmpty = UINT32_MAX;
-    std::vector<uint32_t> table(size, kEmpty), group(n);
-    std::vector<uint32_t> same_way(n, 0), other_way(n, 0);   // per group (its first member)
+    std::vector<uint32_t> table, group, same_way, other_way;   // same_way, other_way: per group (its first member)
+    if (!fill_checked(table, size, kEmpty, monitor) || !fill_checked(group, n, 0u, monitor) ||
+        !fill_checked(same_way, n, 0u, monitor) || !fill_checked(other_way, n, 0u, monitor))
+        return stopped;
     for (size_t i = 0; i < n; ++i) {
         if (monitor.stopped_at(i)) return stopped;
         const Tri s = sorted(tris[i]);
@@ -84,7 +88,8 @@ MergeCounts merge_duplicate_geometry(Mesh& mesh, const Monitor& monitor) {
         (even(tris[i]) == even(tris[g]) ? same_way : other_way)[g]++;
     }
     // keep the first member in each orientation that is kept
-    std::vector<uint8_t> kept_same(n, 0), kept_other(n, 0);
+    std::vector<uint8_t> kept_same, kept_other;
+    if (!fill_checked(kept_same, n, uint8_t(0), monitor) || !fill_checked(kept_other, n, uint8_t(0), monitor)) return stopped;
     std::vector<Tri> out;
     out.reserve(n);
     for (size_t i = 0; i < n; ++i) {

@@ -55,14 +55,21 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
     out = Surface{};
     const size_t nv = raw.vertices.size();
     if (nv == 0) return fail(Code::degenerate_input, "the input has no vertices");
-    for (size_t i = 0; i < nv; ++i)
+    // Each pass below over the vertices or triangles tests the stop request every few thousand
+    // items or right after it: on a mesh of millions of triangles every pass takes tens of
+    // milliseconds, and a cancel must take effect within 0.1 s.
+    for (size_t i = 0; i < nv; ++i) {
+        if (monitor.stopped_at(i)) return monitor.stop_status("surface");
         if (!raw.vertices[i].allFinite())
             return fail(Code::invalid_input, "vertex " + std::to_string(i) + " has a NaN or infinite coordinate");
-    for (size_t t = 0; t < raw.triangles.size(); ++t)
+    }
+    for (size_t t = 0; t < raw.triangles.size(); ++t) {
+        if (monitor.stopped_at(t)) return monitor.stop_status("surface");
         for (uint32_t v : raw.triangles[t])
             if (v >= nv)
                 return fail(Code::invalid_input, "triangle " + std::to_string(t) + " references vertex " +
                                                      std::to_string(v) + " of " + std::to_string(nv));
+    }
     const bool cloud = raw.triangles.empty();
     if (!cloud) {
         // repeated geometry would only repeat work (duplicates.h)
@@ -91,13 +98,17 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
         used = raw.vertices;
     } else {
         std::vector<uint8_t> referenced(nv, 0);
-        for (const Tri& t : raw.triangles)
-            for (uint32_t v : t) referenced[v] = 1;
+        for (size_t t = 0; t < raw.triangles.size(); ++t) {
+            if (monitor.stopped_at(t)) return monitor.stop_status("surface");
+            for (uint32_t v : raw.triangles[t]) referenced[v] = 1;
+        }
         for (size_t i = 0; i < nv; ++i)
             if (referenced[i]) used.push_back(raw.vertices[i]);
+        if (monitor.stopped()) return monitor.stop_status("surface");
         if (used.empty()) return fail(Code::degenerate_input, "the mesh has no triangles");
     }
     auto [lo, hi] = bounding_box(used);
+    if (monitor.stopped()) return monitor.stop_status("surface");
     const double longest = (hi - lo).maxCoeff();
     if (!(longest > 0)) return fail(Code::degenerate_input, "all input points coincide");
     if (!std::isfinite(longest))
@@ -108,13 +119,18 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
     if (monitor.stopped()) return monitor.stop_status("surface");
     out.norm.origin = lo;
     out.norm.scale = longest;
-    for (Vec3& p : raw.vertices) p = out.norm.to_internal(p);
+    for (size_t i = 0; i < raw.vertices.size(); ++i) {
+        if (monitor.stopped_at(i)) return monitor.stop_status("surface");
+        raw.vertices[i] = out.norm.to_internal(raw.vertices[i]);
+    }
 
     if (!cloud) {
         // drop zero-area triangles (they carry no surface and no winding number)
         std::vector<Tri> kept;
         kept.reserve(raw.triangles.size());
-        for (const Tri& t : raw.triangles) {
+        for (size_t k = 0; k < raw.triangles.size(); ++k) {
+            if (monitor.stopped_at(k)) return monitor.stop_status("surface");
+            const Tri& t = raw.triangles[k];
             const Vec3& a = raw.vertices[t[0]];
             const double area2 = (raw.vertices[t[1]] - a).cross(raw.vertices[t[2]] - a).norm();
             if (area2 > 1e-14) kept.push_back(t);
@@ -128,10 +144,13 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
         // mesh; closed meshes have no caps)
         const Mesh caps = hole_caps(raw, monitor);
         if (monitor.stopped()) return monitor.stop_status("surface");
-        if (signed_volume(raw) + signed_volume(caps) < 0) {
+        const double volume = signed_volume(raw) + signed_volume(caps);
+        if (monitor.stopped()) return monitor.stop_status("surface");
+        if (volume < 0) {
             for (Tri& t : raw.triangles) std::swap(t[1], t[2]);
             out.flipped = true;
         }
+        if (monitor.stopped()) return monitor.stop_status("surface");
     }
     if (cloud && require_normals) {
         // missing normals are estimated, unoriented ones oriented (normals.h), trusted ones
