@@ -66,11 +66,13 @@ inline Bvh build_bvh(const Mesh& mesh, std::vector<uint32_t> ids, uint32_t leaf_
         if (stop && stop()) stopped.store(true, std::memory_order_relaxed);
         return stopped.load(std::memory_order_relaxed);
     };
-    std::vector<Item> items(ids.size());
+    // reserved, then appended: a zero-filled vector would touch every page before the first stop test
+    std::vector<Item> items;
+    items.reserve(ids.size());
     for (size_t i = 0; i < ids.size(); ++i) {
         if (i % kStopCheckItems == 0 && stop_now()) return Bvh{};
         const Tri& f = T[ids[i]];
-        items[i] = {Vec3((V[f[0]] + V[f[1]] + V[f[2]]) / 3.0), ids[i]};
+        items.push_back({Vec3((V[f[0]] + V[f[1]] + V[f[2]]) / 3.0), ids[i]});
     }
     ids = std::vector<uint32_t>();
     const uint32_t leaf = std::max<uint32_t>(leaf_size, 1);

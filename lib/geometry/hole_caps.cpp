@@ -18,7 +18,8 @@ Mesh hole_caps(const Mesh& mesh, const Monitor& monitor) {
     // edges used by one triangle only, ascending: in the half-edge buckets, runs of one larger
     // vertex of length 1, kept with their direction
     const size_t nv = mesh.vertices.size();
-    const HalfEdgeBuckets edges = half_edge_buckets(mesh, weld);
+    const HalfEdgeBuckets edges = half_edge_buckets(mesh, weld, monitor);
+    if (edges.start.size() != nv + 1) return {};   // stopped
     std::vector<std::array<uint32_t, 2>> boundary;   // directed as in its triangle
     for (uint32_t u = 0; u < nv; ++u) {
         const auto b = edges.key.begin() + edges.start[u], e = edges.key.begin() + edges.start[u + 1];

@@ -72,24 +72,31 @@ MeshTopology mesh_topology(const Mesh& mesh) {
     return out;
 }
 
-HalfEdgeBuckets half_edge_buckets(const Mesh& mesh, const std::vector<uint32_t>& vertex) {
+HalfEdgeBuckets half_edge_buckets(const Mesh& mesh, const std::vector<uint32_t>& vertex, const Monitor& monitor) {
     const size_t nv = mesh.vertices.size();
-    HalfEdgeBuckets out;
-    out.start.assign(nv + 1, 0);
+    HalfEdgeBuckets out, stopped;
+    if (!fill_checked(out.start, nv + 1, 0u, monitor)) return stopped;
     auto for_each = [&](auto&& f) {
-        for (const Tri& t : mesh.triangles)
+        for (size_t k = 0; k < mesh.triangles.size(); ++k) {
+            if (monitor.stopped_at(k)) return false;
+            const Tri& t = mesh.triangles[k];
             for (int i = 0; i < 3; ++i) {
                 uint32_t a = t[size_t(i)], b = t[size_t((i + 1) % 3)];
                 if (!vertex.empty()) a = vertex[a], b = vertex[b];
                 if (a != b) f(std::min(a, b), uint64_t(std::max(a, b)) * 2 + (b < a));
             }
+        }
+        return true;
     };
-    for_each([&](uint32_t u, uint64_t) { ++out.start[u + 1]; });
+    if (!for_each([&](uint32_t u, uint64_t) { ++out.start[u + 1]; })) return stopped;
     for (size_t v = 0; v < nv; ++v) out.start[v + 1] += out.start[v];
-    out.key.resize(out.start[nv]);
+    if (!fill_checked(out.key, size_t(out.start[nv]), uint64_t(0), monitor)) return stopped;
     std::vector<uint32_t> fill(out.start.begin(), out.start.end() - 1);
-    for_each([&](uint32_t u, uint64_t key) { out.key[fill[u]++] = key; });
-    for (size_t u = 0; u < nv; ++u) std::sort(out.key.begin() + out.start[u], out.key.begin() + out.start[u + 1]);
+    if (!for_each([&](uint32_t u, uint64_t key) { out.key[fill[u]++] = key; })) return stopped;
+    for (size_t u = 0; u < nv; ++u) {
+        if (monitor.stopped_at(u)) return stopped;
+        std::sort(out.key.begin() + out.start[u], out.key.begin() + out.start[u + 1]);
+    }
     return out;
 }
 

@@ -28,6 +28,8 @@ struct HalfEdgeBuckets {
     std::vector<uint32_t> start;   // vertex count + 1 offsets
     std::vector<uint64_t> key;
 };
-HalfEdgeBuckets half_edge_buckets(const Mesh& mesh, const std::vector<uint32_t>& vertex = {});
+// Stopped by `monitor` (tested every few thousand triangles and vertices): empty buckets.
+HalfEdgeBuckets half_edge_buckets(const Mesh& mesh, const std::vector<uint32_t>& vertex = {},
+                                  const Monitor& monitor = Monitor{});
 
 }  // namespace ca

@@ -7,6 +7,7 @@
 #include "support/mesh_convert.h"
 #include "support/shapes.h"
 
+#include <atomic>
 #include <string>
 
 namespace {
@@ -71,4 +72,21 @@ TEST_CASE("mesh_topology: vertices at equal positions are welded") {
     const ca::MeshTopology t = ca::mesh_topology(soup);
     CHECK(t.part_genus.size() == 1);
     CHECK(t.genus == 0);
+}
+
+TEST_CASE("half-edge buckets: a stop request gives empty buckets, none gives the same buckets as no monitor") {
+    const ca::Mesh m = shapes::torus(1.0, 0.3, 200, 100);   // 40 000 triangles
+    const ca::HalfEdgeBuckets plain = ca::half_edge_buckets(m);
+    REQUIRE(plain.start.size() == m.vertices.size() + 1);
+    CHECK(plain.key.size() == 3 * m.triangles.size());
+    std::atomic<int> flag{0};
+    ca::Monitor monitor;
+    monitor.cancel_flag = &flag;
+    const ca::HalfEdgeBuckets unasked = ca::half_edge_buckets(m, {}, monitor);
+    CHECK(unasked.start == plain.start);
+    CHECK(unasked.key == plain.key);
+    flag = 1;
+    const ca::HalfEdgeBuckets stopped = ca::half_edge_buckets(m, {}, monitor);
+    CHECK(stopped.start.empty());
+    CHECK(stopped.key.empty());
 }
