@@ -10,6 +10,7 @@
 // missing; --only keeps the meshes whose file stem starts with one of the names)
 #include "bench_common.h"
 #include "connect.h"
+#include "mesh_topology.h"
 #include "support/mesh_convert.h"
 
 #include <cmath>
@@ -157,7 +158,8 @@ int main(int argc, char** argv) {
             std::printf("| %s | read failed: %s |\n", bench::stem(path).c_str(), err.c_str());
             continue;
         }
-        const bool closed = ca::closed_mesh(to_core_mesh(mesh));
+        const ca::Mesh core = to_core_mesh(mesh);
+        const bool closed = ca::mesh_topology(core, {}, ca::half_edge_buckets(core)).closed;   // unwelded
         ca_context* ctx = nullptr;
         ca_context_create(nullptr, &ctx);
         const ca_surface_view v = bench::surface_view(mesh);

@@ -33,7 +33,7 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
         out.time_sampling_s = seconds_since(t0);
         st = point_cloud_candidates(opt, monitor, threads, out);
     } else {
-        // The surface trees are built on a second thread while this one finds the hole caps,
+        // The surface trees are built on a second thread while this one builds the hole caps' tree,
         // samples and runs the Delaunay step (the same structures either way); they only read the mesh.
         SurfaceStructures built;
         const Mesh& mesh = out.surface.mesh;
@@ -52,12 +52,9 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
                 if (stop()) built.stopped = true;
             },
             threads > 1);
-        // open meshes: no ball reaches out through a hole (hole_caps.cpp); found on this thread
-        // while the trees are built (its own member of `built`)
-        {
-            const Mesh caps = hole_caps(mesh, monitor);   // stopped: the sampling below stops too
-            if (!caps.triangles.empty()) built.cap_distance = std::make_shared<const MeshDistance>(caps);
-        }
+        // open meshes: no ball reaches out through a hole (hole_caps.cpp); the caps' tree is built
+        // on this thread while the surface's are built (its own member of `built`)
+        if (!out.surface.caps.triangles.empty()) built.cap_distance = std::make_shared<const MeshDistance>(out.surface.caps);
         if (!sample_surface(mesh, opt.cover_samples, stream_seed(opt.seed, 1), out.cover_samples, monitor))
             st = monitor.stop_status("sampling");
         out.time_sampling_s = seconds_since(t0);

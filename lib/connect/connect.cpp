@@ -51,7 +51,7 @@ Status connect_balls(const CandidateSet& set, const Selection& sel, const Connec
     canonicalize(out);
     if (!monitor.report("connect", 0.5)) return monitor.stop_status("connect");
     const bool mesh = !set.surface.mesh.triangles.empty();
-    const MeshTopology shape = mesh ? mesh_topology(set.surface.mesh) : MeshTopology{};
+    const MeshTopology& shape = set.surface.topology;   // genus -1 for point clouds
     if (report) report->genus = shape.genus;
     if ((opt.remove_outside || opt.fill_holes || opt.reconnect || opt.repair_loops) && out.balls.size() > 1) {
         const InsideTest test(set);

@@ -97,10 +97,6 @@ struct ConnectReport {
 Status connect_balls(const CandidateSet& set, const Selection& sel, const ConnectOptions& opt,
                      const Monitor& monitor, Skeleton& out, ConnectReport* report = nullptr);
 
-// Whether the boundary of the mesh (as a 2-chain) vanishes: for every undirected edge, as many
-// half-edges a->b as b->a, and every triangle valid. Then the winding number is integer-valued.
-bool closed_mesh(const Mesh& mesh);
-
 // Whether the point p of a skeleton element counts as inside the shape under the rule above
 // (`balls` = the element's own vertices' undilated balls). Exposed for tests and benchmarks.
 class InsideTest {

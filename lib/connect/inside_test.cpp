@@ -15,7 +15,6 @@
 
 #include "bvh.h"
 #include "distance.h"
-#include "hole_caps.h"
 #include "kdtree.h"
 #include "mesh_topology.h"
 #include "point_winding.h"
@@ -42,24 +41,6 @@ constexpr double kProbeMargin = 1e-9;
 constexpr size_t kProbeWindow = 48;
 
 }  // namespace
-
-bool closed_mesh(const Mesh& mesh) {
-    // in the half-edge buckets every larger vertex must have as many upward as downward entries
-    const size_t nv = mesh.vertices.size();
-    for (const Tri& f : mesh.triangles)
-        if (!detail::triangle_ok(mesh, f)) return false;
-    const HalfEdgeBuckets edges = half_edge_buckets(mesh);
-    for (size_t u = 0; u < nv; ++u) {
-        const auto b = edges.key.begin() + edges.start[u], e = edges.key.begin() + edges.start[u + 1];
-        for (auto k = b; k != e;) {
-            const uint64_t w = *k >> 1;
-            long balance = 0;
-            for (; k != e && (*k >> 1) == w; ++k) balance += (*k & 1) ? -1 : 1;
-            if (balance != 0) return false;
-        }
-    }
-    return true;
-}
 
 struct InsideTest::Impl {
     std::shared_ptr<const WindingNumber> winding;   // meshes only (the candidate set's, if it has them)
@@ -146,14 +127,10 @@ InsideTest::InsideTest(const CandidateSet& set) : impl_(std::make_unique<Impl>()
     if (!set.surface.mesh.triangles.empty()) {
         impl_->winding = set.winding ? set.winding : std::make_shared<const WindingNumber>(set.surface.mesh);
         impl_->distance = set.distance ? set.distance : std::make_shared<const MeshDistance>(set.surface.mesh);
-        impl_->closed = closed_mesh(set.surface.mesh);
-        // the candidate step's caps when it built the structures, else the mesh's own
-        if (set.distance) {
-            impl_->caps = set.cap_distance;
-        } else if (!impl_->closed) {
-            const Mesh caps = hole_caps(set.surface.mesh);
-            if (!caps.triangles.empty()) impl_->caps = std::make_shared<const MeshDistance>(caps);
-        }
+        impl_->closed = set.surface.topology.closed;
+        // the candidate step's caps when it built the structures, else the surface's own
+        if (set.distance) impl_->caps = set.cap_distance;
+        else if (!set.surface.caps.triangles.empty()) impl_->caps = std::make_shared<const MeshDistance>(set.surface.caps);
         return;
     }
     impl_->cloud_winding = set.cloud_winding;

@@ -2,7 +2,6 @@
 #include "hole_caps.h"
 
 #include "duplicates.h"
-#include "mesh_topology.h"
 #include "union_find.h"
 
 #include <algorithm>
@@ -15,10 +14,13 @@ Mesh hole_caps(const Mesh& mesh, const Monitor& monitor) {
     // vertices with identical coordinates are one vertex (split seams are not holes)
     const std::vector<uint32_t> weld = weld_map(mesh.vertices, monitor);
     if (weld.size() != mesh.vertices.size()) return {};
+    return hole_caps(mesh, half_edge_buckets(mesh, weld, monitor));
+}
+
+Mesh hole_caps(const Mesh& mesh, const HalfEdgeBuckets& edges) {
     // edges used by one triangle only, ascending: in the half-edge buckets, runs of one larger
     // vertex of length 1, kept with their direction
     const size_t nv = mesh.vertices.size();
-    const HalfEdgeBuckets edges = half_edge_buckets(mesh, weld, monitor);
     if (edges.start.size() != nv + 1) return {};   // stopped
     std::vector<std::array<uint32_t, 2>> boundary;   // directed as in its triangle
     for (uint32_t u = 0; u < nv; ++u) {

@@ -4,6 +4,7 @@
 // out through a hole (candidates/hole_caps.cpp).
 #pragma once
 #include "common.h"
+#include "mesh_topology.h"
 
 namespace ca {
 
@@ -14,5 +15,8 @@ namespace ca {
 // where the mesh is. Closed meshes give no caps; open boundary curves that are not loops get none.
 // No caps when `monitor` stopped the welding: the caller tests monitor.stopped().
 Mesh hole_caps(const Mesh& mesh, const Monitor& monitor = Monitor{});
+// The same from the half-edge buckets of the mesh's welded corners (mesh_topology.h; built with
+// no vertex map when the triangles already refer to welded vertices). No caps for empty buckets.
+Mesh hole_caps(const Mesh& mesh, const HalfEdgeBuckets& edges);
 
 }  // namespace ca

@@ -1,7 +1,8 @@
-// mesh_topology.cpp: genus per connected part of a mesh by the Euler characteristic (rule in
-// mesh_topology.h).
+// mesh_topology.cpp: half-edge buckets, closedness and the genus per connected part of a mesh
+// by the Euler characteristic (rules in mesh_topology.h).
 #include "mesh_topology.h"
 
+#include "bvh.h"
 #include "duplicates.h"
 #include "union_find.h"
 
@@ -9,58 +10,62 @@
 
 namespace ca {
 
-MeshTopology mesh_topology(const Mesh& mesh) {
-    MeshTopology out;
-    const std::vector<uint32_t> weld = weld_map(mesh.vertices);
-    std::vector<Tri> tris;
-    std::vector<uint32_t> kept;   // input index of each welded triangle
+MeshTopology mesh_topology(const Mesh& mesh, const std::vector<uint32_t>& weld, const HalfEdgeBuckets& edges,
+                           const Monitor& monitor) {
+    MeshTopology out, stopped;
+    const size_t nv = mesh.vertices.size();
+    if (edges.start.size() != nv + 1 || (!weld.empty() && weld.size() != nv)) return stopped;
+    auto corner = [&](uint32_t v) { return weld.empty() ? v : weld[v]; };
+    UnionFind uf(nv);
     for (size_t t = 0; t < mesh.triangles.size(); ++t) {
-        Tri f = mesh.triangles[t];
-        bool valid = true;
-        for (uint32_t& v : f) {
-            if (v >= weld.size()) valid = false;
-            else v = weld[v];
-        }
-        if (!valid || f[0] == f[1] || f[1] == f[2] || f[0] == f[2]) continue;
-        tris.push_back(f);
-        kept.push_back(uint32_t(t));
+        if (monitor.stopped_at(t)) return stopped;
+        const Tri& f = mesh.triangles[t];
+        if (f[0] < nv && f[1] < nv && f[2] < nv) uf.unite(corner(f[0]), corner(f[1])), uf.unite(corner(f[0]), corner(f[2]));
     }
-    UnionFind uf(mesh.vertices.size());
-    for (const Tri& f : tris) uf.unite(f[0], f[1]), uf.unite(f[0], f[2]);
-    // parts numbered in order of their first triangle
-    std::vector<int64_t> part_of_root(mesh.vertices.size(), -1);
-    std::vector<uint32_t> part(tris.size());
-    size_t parts = 0;
-    for (size_t t = 0; t < tris.size(); ++t) {
-        const uint32_t r = uf.find(tris[t][0]);
-        if (part_of_root[r] < 0) part_of_root[r] = int64_t(parts++);
-        part[t] = uint32_t(part_of_root[r]);
-    }
+    // parts numbered in order of their first (non-degenerate) triangle
+    std::vector<int64_t> part_of_root(nv, -1);
+    std::vector<long> V, E, F;
+    std::vector<uint8_t> used(nv, 0);
     out.triangle_part.assign(mesh.triangles.size(), 0);
-    for (size_t t = 0; t < tris.size(); ++t) out.triangle_part[kept[t]] = part[t];
-
-    std::vector<long> V(parts, 0), E(parts, 0), F(parts, 0);
+    bool valid = true;
+    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+        if (monitor.stopped_at(t)) return stopped;
+        const Tri& f = mesh.triangles[t];
+        valid = valid && detail::triangle_ok(mesh, f);
+        if (!(f[0] < nv && f[1] < nv && f[2] < nv)) continue;
+        const Tri w = {corner(f[0]), corner(f[1]), corner(f[2])};
+        if (w[0] == w[1] || w[1] == w[2] || w[0] == w[2]) continue;
+        const uint32_t r = uf.find(w[0]);
+        if (part_of_root[r] < 0) {
+            part_of_root[r] = int64_t(F.size());
+            V.push_back(0), E.push_back(0), F.push_back(0);
+        }
+        const uint32_t p = uint32_t(part_of_root[r]);
+        out.triangle_part[t] = p;
+        ++F[p];
+        for (uint32_t v : w)
+            if (!used[v]) used[v] = 1, ++V[p];
+    }
+    // each run of one larger vertex in a bucket is one edge; its length is the number of
+    // triangles on it, its balance the half-edges up minus down
+    const size_t parts = F.size();
     std::vector<uint8_t> manifold(parts, 1);
-    std::vector<uint8_t> used(mesh.vertices.size(), 0);
-    std::vector<std::array<uint32_t, 3>> edges;   // (a, b, part) with a < b
-    edges.reserve(3 * tris.size());
-    for (size_t t = 0; t < tris.size(); ++t) {
-        const Tri& f = tris[t];
-        ++F[part[t]];
-        for (int i = 0; i < 3; ++i) {
-            const uint32_t a = f[size_t(i)], b = f[size_t((i + 1) % 3)];
-            if (!used[a]) used[a] = 1, ++V[part[t]];
-            edges.push_back({std::min(a, b), std::max(a, b), part[t]});
+    bool balanced = true;
+    for (uint32_t u = 0; u < nv; ++u) {
+        if (monitor.stopped_at(u)) return stopped;
+        const auto b = edges.key.begin() + edges.start[u], e = edges.key.begin() + edges.start[u + 1];
+        if (b == e) continue;
+        const uint32_t p = uint32_t(part_of_root[uf.find(u)]);
+        for (auto k = b; k != e;) {
+            const uint64_t w = *k >> 1;
+            long count = 0, balance = 0;
+            for (; k != e && (*k >> 1) == w; ++k) ++count, balance += (*k & 1) ? -1 : 1;
+            ++E[p];
+            if (count != 2) manifold[p] = 0;   // open (1) or non-manifold (> 2) edge
+            if (balance != 0) balanced = false;
         }
     }
-    std::sort(edges.begin(), edges.end());
-    for (size_t i = 0; i < edges.size();) {
-        size_t j = i;
-        while (j < edges.size() && edges[j][0] == edges[i][0] && edges[j][1] == edges[i][1]) ++j;
-        ++E[edges[i][2]];
-        if (j - i != 2) manifold[edges[i][2]] = 0;   // open (1) or non-manifold (> 2) edge
-        i = j;
-    }
+    out.closed = valid && balanced && parts > 0;
     out.part_genus.assign(parts, -1);
     out.genus = parts > 0 ? 0 : -1;
     for (size_t p = 0; p < parts; ++p) {
@@ -72,18 +77,26 @@ MeshTopology mesh_topology(const Mesh& mesh) {
     return out;
 }
 
+MeshTopology mesh_topology(const Mesh& mesh) {
+    const std::vector<uint32_t> weld = weld_map(mesh.vertices);
+    return mesh_topology(mesh, weld, half_edge_buckets(mesh, weld));
+}
+
 HalfEdgeBuckets half_edge_buckets(const Mesh& mesh, const std::vector<uint32_t>& vertex, const Monitor& monitor) {
     const size_t nv = mesh.vertices.size();
+    if (!vertex.empty() && vertex.size() != nv) return {};
     HalfEdgeBuckets out, stopped;
     if (!fill_checked(out.start, nv + 1, 0u, monitor)) return stopped;
     auto for_each = [&](auto&& f) {
         for (size_t k = 0; k < mesh.triangles.size(); ++k) {
             if (monitor.stopped_at(k)) return false;
-            const Tri& t = mesh.triangles[k];
+            Tri t = mesh.triangles[k];
+            if (t[0] >= nv || t[1] >= nv || t[2] >= nv) continue;
+            if (!vertex.empty()) t = {vertex[t[0]], vertex[t[1]], vertex[t[2]]};
+            if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) continue;
             for (int i = 0; i < 3; ++i) {
-                uint32_t a = t[size_t(i)], b = t[size_t((i + 1) % 3)];
-                if (!vertex.empty()) a = vertex[a], b = vertex[b];
-                if (a != b) f(std::min(a, b), uint64_t(std::max(a, b)) * 2 + (b < a));
+                const uint32_t a = t[size_t(i)], b = t[size_t((i + 1) % 3)];
+                f(std::min(a, b), uint64_t(std::max(a, b)) * 2 + (b < a));
             }
         }
         return true;

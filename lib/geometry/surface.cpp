@@ -141,13 +141,18 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
         // an inward-facing mesh has negative signed volume: flip it so inside means w > 1/2. An
         // open mesh's signed volume depends on the origin (a large hole facing away from it can
         // turn its sign), so it is taken with the holes capped (hole_caps.h: oriented like the
-        // mesh; closed meshes have no caps)
-        const Mesh caps = hole_caps(raw, monitor);
+        // mesh; closed meshes have no caps). One pass over the half-edges finds the caps and the
+        // topology (the merge left the triangles on welded vertices: the buckets need no map)
+        const HalfEdgeBuckets edges = half_edge_buckets(raw, {}, monitor);
         if (monitor.stopped()) return monitor.stop_status("surface");
-        const double volume = signed_volume(raw) + signed_volume(caps);
+        out.caps = hole_caps(raw, edges);
+        out.topology = mesh_topology(raw, {}, edges, monitor);
+        if (monitor.stopped()) return monitor.stop_status("surface");
+        const double volume = signed_volume(raw) + signed_volume(out.caps);
         if (monitor.stopped()) return monitor.stop_status("surface");
         if (volume < 0) {
             for (Tri& t : raw.triangles) std::swap(t[1], t[2]);
+            for (Tri& t : out.caps.triangles) std::swap(t[1], t[2]);
             out.flipped = true;
         }
         if (monitor.stopped()) return monitor.stop_status("surface");

@@ -3,6 +3,7 @@
 // default delta = 0.02 is defined); every result is mapped back with `Normalization`.
 #pragma once
 #include "common.h"
+#include "mesh_topology.h"
 
 namespace ca {
 
@@ -35,6 +36,11 @@ struct Surface {
     bool flipped = false;         // the mesh faced inward and was flipped
     size_t dropped_triangles = 0; // zero-area triangles ignored
     size_t duplicate_triangles = 0; // repeats of a kept triangle merged into it (duplicates.h)
+    // Meshes, found once from the half-edges for the later steps: the caps of the holes
+    // (hole_caps.h, oriented like the mesh; empty when closed) and the topology (mesh_topology.h:
+    // closedness, genus per part, indexed by mesh.triangles).
+    Mesh caps;
+    MeshTopology topology;
     Normalization norm;
 };
 

@@ -11,6 +11,7 @@ namespace {
 
 ca::CandidateSet shape(ca::Mesh mesh) {
     ca::CandidateSet set;
+    set.surface.topology = ca::mesh_topology(mesh);
     set.surface.mesh = std::move(mesh);
     return set;
 }
