@@ -126,7 +126,7 @@ TEST_CASE("point cloud: a sampled sphere gives one ball at its centre") {
     CHECK(std::abs(r.skeleton.balls[0].radius - R) < 0.05 * R);
 }
 
-TEST_CASE("point cloud: inward normals are flipped; same skeleton size") {
+TEST_CASE("point cloud: inward normals are flipped, same skeleton size") {
     const double R = 2.0;
     shapes::Cloud c = sphere_cloud(R, 5000);
     for (ca::Vec3& n : c.normals) n = -n;
@@ -228,7 +228,7 @@ std::pair<double, double> reach(const Run& r) {
 }
 }  // namespace
 
-TEST_CASE("point cloud: noise and far outliers make no ball outside the sphere; outliers are counted") {
+TEST_CASE("point cloud: noise and far outliers make no ball outside the sphere, outliers are counted") {
     const Run clean = run(sphere_cloud(kNoisyR, 5000));
     CHECK(clean.set.outliers == 0);
     CHECK(clean.set.outside_local_plane == 0);   // a clean cloud is not noisy: nothing dropped or projected

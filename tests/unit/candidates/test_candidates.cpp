@@ -121,7 +121,7 @@ TEST_CASE("open mesh: oriented by the signed volume with its holes capped (a hor
     }
 }
 
-TEST_CASE("open mesh: no candidate ball reaches out through a hole; closed meshes are unchanged") {
+TEST_CASE("open mesh: no candidate ball reaches out through a hole, closed meshes are unchanged") {
     // A sphere (axis x) without its cap beyond x = 0.6 R: Voronoi balls under the hole would reach
     // R - 0.6 R = 0.2 of the diameter beyond the hole's plane (the fallback balls too).
     const ca::Mesh closed = shapes::sphere(1.0, 24, 48);

@@ -207,7 +207,7 @@ TEST_CASE("test_connect: a thin plate gives a connected sheet of triangles") {
     }
 }
 
-TEST_CASE("test_connect: the medial route refuses point clouds; both routes can be cancelled") {
+TEST_CASE("test_connect: the medial route needs a surface, both routes take a point cloud and can be cancelled") {
     const ca::Mesh sphere = shapes::sphere(1.0, 24, 48);
     ca::Surface cloud;
     std::vector<ca::Vec3> normals;
@@ -219,13 +219,23 @@ TEST_CASE("test_connect: the medial route refuses point clouds; both routes can 
     ca::Selection sel;
     REQUIRE(ca::select_balls(set, {}, monitor, sel).ok());
     ca::ConnectOptions opt;
-    opt.method = ca::ConnectMethod::medial;
     ca::Skeleton sk;
-    const ca::Status st = ca::connect_balls(set, sel, opt, monitor, sk);
+    for (ca::ConnectMethod m : kRoutes) {   // a cloud has its winding number: both routes connect it
+        opt.method = m;
+        CHECK(ca::connect_balls(set, sel, opt, monitor, sk).ok());
+        CHECK(sk.balls.size() == sel.indices.size());
+    }
+    // the same balls without the surface (a set from caller arrays): only the power route
+    ca::CandidateSet bare;
+    bare.balls = set.balls;
+    bare.cover_samples = set.cover_samples;
+    bare.dense_samples = set.dense_samples;
+    opt.method = ca::ConnectMethod::medial;
+    const ca::Status st = ca::connect_balls(bare, sel, opt, monitor, sk);
     CHECK(st.code == ca::Code::invalid_argument);
     CHECK(st.message.find("mesh") != std::string::npos);
     opt.method = ca::ConnectMethod::power;
-    CHECK(ca::connect_balls(set, sel, opt, monitor, sk).ok());
+    CHECK(ca::connect_balls(bare, sel, opt, monitor, sk).ok());
 
     const Prepared p = prepare(shapes::capsule(2.0, 0.5, 48, 32));
     std::atomic<int> cancel{1};

@@ -21,7 +21,7 @@ TEST_CASE("monitor: the earlier of two deadlines, unlimited when both are") {
     CHECK(far.earliest(none).limited());
 }
 
-TEST_CASE("monitor: a spent budget stops the work and names the stage; a cancel wins over it") {
+TEST_CASE("monitor: a spent budget stops the work and names the stage, a cancel wins over it") {
     Monitor m;
     int calls = 0;
     m.progress = [&](const char*, double) { ++calls; return true; };

@@ -36,7 +36,7 @@ double two_sided(const ca::CandidateSet& set, const ca::Skeleton& sk) {
 
 }  // namespace
 
-TEST_CASE("test_fit: one misplaced ball in a sphere moves to the sphere's centre and radius; bad options refused") {
+TEST_CASE("test_fit: one misplaced ball in a sphere moves to the sphere's centre and radius, bad options refused") {
     const ca::CandidateSet set = candidates(shapes::sphere(1.0, 32, 64));
     // internal units: the sphere is centred at (0.5, 0.5, 0.5) with radius 0.5
     ca::Selection sel;

@@ -116,7 +116,7 @@ TEST_CASE("binary and ASCII STL give the same mesh, with fox.obj's triangles") {
               .find("more than 3 vertices") != std::string::npos);
 }
 
-TEST_CASE("assimp: Collada fox reads with fox.obj's triangles; referenced files are not opened") {
+TEST_CASE("assimp: Collada fox reads with fox.obj's triangles, referenced files are not opened") {
     const caio::MeshData m = must_read(kFormats + "fox.dae");
     const auto a = triangle_set(m), b = triangle_set(fox_float());
     REQUIRE(a.size() == b.size());
@@ -253,7 +253,7 @@ TEST_CASE("size limits: polygons and triangles per input byte") {
     CHECK(must_read(td.write("okpoly.obj", ok + "\n")).triangles.size() == 3 * 65534);
 }
 
-TEST_CASE("point clouds: xyz, ply, obj with and without normals; pts variants") {
+TEST_CASE("point clouds: xyz, ply, obj with and without normals, pts variants") {
     const caio::MeshData ref = must_read(kFormats + "fish500.xyz");
     REQUIRE(ref.positions.size() == 3 * 500);
     REQUIRE(ref.normals.size() == 3 * 500);

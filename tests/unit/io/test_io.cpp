@@ -76,7 +76,7 @@ TEST_CASE("obj: quads, slash forms, negative indices, normals, ignored records")
     CHECK(m.normals.empty());
 }
 
-TEST_CASE("obj: vn count equal to v count keeps per-vertex normals; forward references") {
+TEST_CASE("obj: vn count equal to v count keeps per-vertex normals, forward references") {
     TempDir td;
     const std::string p = td.write("n.obj", "vn 0 0 1\nvn 0 1 0\nvn 1 0 0\nf 1 2 3\nv 0 0 0\nv 1 0 0\nv 0 1 0\n");
     caio::MeshData m;
@@ -275,7 +275,7 @@ TEST_CASE("xyz point clouds") {
     CHECK(m.normals.empty());
 }
 
-TEST_CASE("ply point clouds: ascii without faces; normals only when nx, ny and nz are all there") {
+TEST_CASE("ply point clouds: ascii without faces, normals only when nx, ny and nz are all there") {
     TempDir td;
     caio::MeshData m;
     std::string err;
@@ -291,7 +291,7 @@ TEST_CASE("ply point clouds: ascii without faces; normals only when nx, ny and n
     CHECK(m.normals.empty());
 }
 
-TEST_CASE("write_ma / read_ma round trip; face edges are added") {
+TEST_CASE("write_ma / read_ma round trip, face edges are added") {
     TempDir td;
     caio::SkeletonData s;
     s.centers = {0.1, 0.2, 0.3, 1.0 / 3.0, -2.5e-7, 1e6, 7, 8, 9, 1, 1, 1};
@@ -350,7 +350,7 @@ TEST_CASE("write_obj and write_ply produce files read_mesh accepts") {
     CHECK(m.triangles == s.faces);
 }
 
-TEST_CASE("write_points / read_points round trip; read_points variants") {
+TEST_CASE("write_points / read_points round trip, read_points variants") {
     TempDir td;
     std::string err;
     const std::vector<double> xyz = {0.1, 0.2, 0.3, -1e-300, 123456.789, 3};
