@@ -29,10 +29,11 @@ Status read_points(const double* base, size_t count, size_t stride, const char* 
     size_t s;
     Status st = check_stride(stride, 3 * sizeof(double), name, s);
     if (!st.ok()) return st;
-    out.resize(count);
+    out.clear();
+    ca::reserve_large(out, count);
     for (size_t i = 0; i < count; ++i) {
         const std::array<double, 3> p = read_element<double, 3>(base, s, i);
-        out[i] = Vec3(p[0], p[1], p[2]);
+        out.emplace_back(p[0], p[1], p[2]);
     }
     return Status::success();
 }
@@ -56,8 +57,9 @@ Status read_surface(const ca_surface_view* in, bool want_normals, ca::Mesh& raw,
     size_t ts;
     st = check_stride(surface.triangle_stride, 3 * sizeof(uint32_t), "surface->triangle_stride", ts);
     if (!st.ok()) return st;
-    raw.triangles.resize(surface.triangle_count);
-    for (size_t t = 0; t < surface.triangle_count; ++t) raw.triangles[t] = read_element<uint32_t, 3>(surface.triangles, ts, t);
+    raw.triangles.clear();
+    ca::reserve_large(raw.triangles, surface.triangle_count);
+    for (size_t t = 0; t < surface.triangle_count; ++t) raw.triangles.push_back(read_element<uint32_t, 3>(surface.triangles, ts, t));
     if (want_normals && surface.triangle_count == 0 && surface.normals)
         return read_points(surface.normals, surface.vertex_count, surface.normal_stride, "surface->normal_stride", normals);
     return Status::success();

@@ -2,6 +2,7 @@
 // status a step returns (the core never throws and never prints), and cancellation/progress.
 #pragma once
 #include "timing.h"
+#include "large_pages.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -85,11 +86,11 @@ struct Monitor {
 
 // Sizes `v` to n copies of `value`, kCheckEvery * 64 items at a time with a stop test before each
 // chunk (false when stopped). Filling a fresh allocation touches each of its pages, and the page
-// faults of a buffer of tens of megabytes take longer than a cancel may wait.
+// faults of a buffer of tens of megabytes take longer than a cancel may wait (large_pages.h).
 template <class T>
 bool fill_checked(std::vector<T>& v, size_t n, const T& value, const Monitor& monitor) {
     v.clear();
-    v.reserve(n);
+    reserve_large(v, n);
     while (v.size() < n) {
         if (monitor.stopped()) return false;
         v.resize(std::min(n, v.size() + Monitor::kCheckEvery * 64), value);

@@ -36,7 +36,7 @@ inline bool triangle_ok(const Mesh& mesh, const Tri& f) {
 
 inline std::vector<uint32_t> valid_triangles(const Mesh& mesh) {
     std::vector<uint32_t> ids;
-    ids.reserve(mesh.triangles.size());
+    reserve_large(ids, mesh.triangles.size());
     for (size_t t = 0; t < mesh.triangles.size(); ++t)
         if (triangle_ok(mesh, mesh.triangles[t])) ids.push_back(uint32_t(t));
     return ids;
@@ -68,7 +68,7 @@ inline Bvh build_bvh(const Mesh& mesh, std::vector<uint32_t> ids, uint32_t leaf_
     };
     // reserved, then appended: a zero-filled vector would touch every page before the first stop test
     std::vector<Item> items;
-    items.reserve(ids.size());
+    reserve_large(items, ids.size());
     for (size_t i = 0; i < ids.size(); ++i) {
         if (i % kStopCheckItems == 0 && stop_now()) return Bvh{};
         const Tri& f = T[ids[i]];
@@ -76,7 +76,10 @@ inline Bvh build_bvh(const Mesh& mesh, std::vector<uint32_t> ids, uint32_t leaf_
     }
     ids = std::vector<uint32_t>();
     const uint32_t leaf = std::max<uint32_t>(leaf_size, 1);
-    bvh.nodes.reserve(2 * (items.size() / leaf) + 1);
+    // a split node has more than `leaf` items, so each half, and every leaf, at least
+    // (leaf + 1) / 2: a tree over m items has at most 2 m / that - 1 nodes
+    const uint32_t least = std::max<uint32_t>((leaf + 1) / 2, 1);
+    reserve_large(bvh.nodes, 2 * (items.size() / least) + 1);
     const double inf = std::numeric_limits<double>::infinity();
 
     // The median split of items[begin, end) along the longest axis of its centroid box.
@@ -129,7 +132,7 @@ inline Bvh build_bvh(const Mesh& mesh, std::vector<uint32_t> ids, uint32_t leaf_
         const uint32_t mid = split(0, n);
         bvh.nodes.emplace_back();
         std::vector<BvhNode> right;
-        right.reserve(2 * ((n - mid) / leaf) + 1);
+        reserve_large(right, 2 * ((n - mid) / least) + 1);
         run_workers(2, [&](size_t w) {
             if (w == 0) build(build, bvh.nodes, 0, mid);
             else build(build, right, mid, n);
@@ -147,8 +150,8 @@ inline Bvh build_bvh(const Mesh& mesh, std::vector<uint32_t> ids, uint32_t leaf_
         build(build, bvh.nodes, 0, n);
     }
     if (stopped) return Bvh{};
-    bvh.order.resize(items.size());
-    for (size_t i = 0; i < items.size(); ++i) bvh.order[i] = items[i].id;
+    reserve_large(bvh.order, items.size());
+    for (const Item& item : items) bvh.order.push_back(item.id);
     return bvh;
 }
 
@@ -165,7 +168,7 @@ inline std::shared_ptr<const TriangleTree> build_triangle_tree(const Mesh& mesh,
                                                              const std::function<bool()>& stop = {}) {
     auto tree = std::make_shared<TriangleTree>();
     tree->bvh = build_bvh(mesh, valid_triangles(mesh), 8, threads, stop);
-    tree->tris.reserve(tree->bvh.order.size());
+    reserve_large(tree->tris, tree->bvh.order.size());
     for (uint32_t t : tree->bvh.order) {
         if (stop && tree->tris.size() % kStopCheckItems == 0 && stop()) return std::make_shared<TriangleTree>();
         const Tri& f = mesh.triangles[t];

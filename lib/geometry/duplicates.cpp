@@ -46,7 +46,7 @@ MergeCounts merge_duplicate_geometry(Mesh& mesh, const Monitor& monitor) {
     const size_t nt = mesh.triangles.size();
     // welded corners; triangles with a repeated corner are dropped here
     std::vector<Tri> tris;
-    tris.reserve(nt);
+    reserve_large(tris, nt);
     for (size_t k = 0; k < nt; ++k) {
         if (monitor.stopped_at(k)) return stopped;
         const Tri& t = mesh.triangles[k];
@@ -71,8 +71,10 @@ MergeCounts merge_duplicate_geometry(Mesh& mesh, const Monitor& monitor) {
     while (size < 2 * n) size *= 2;
     constexpr uint32_t kEmpty = UINT32_MAX;
     std::vector<uint32_t> table, group, same_way, other_way;   // same_way, other_way: per group (its first member)
+    std::vector<uint8_t> same;   // per triangle: oriented as its group's first member
     if (!fill_checked(table, size, kEmpty, monitor) || !fill_checked(group, n, 0u, monitor) ||
-        !fill_checked(same_way, n, 0u, monitor) || !fill_checked(other_way, n, 0u, monitor))
+        !fill_checked(same_way, n, 0u, monitor) || !fill_checked(other_way, n, 0u, monitor) ||
+        !fill_checked(same, n, uint8_t(0), monitor))
         return stopped;
     for (size_t i = 0; i < n; ++i) {
         if (monitor.stopped_at(i)) return stopped;
@@ -85,27 +87,28 @@ MergeCounts merge_duplicate_geometry(Mesh& mesh, const Monitor& monitor) {
         if (table[slot] == kEmpty) table[slot] = uint32_t(i);
         const uint32_t g = table[slot];
         group[i] = g;
-        (even(tris[i]) == even(tris[g]) ? same_way : other_way)[g]++;
+        same[i] = even(tris[i]) == even(tris[g]);
+        (same[i] ? same_way : other_way)[g]++;
     }
-    // keep the first member in each orientation that is kept
+    // keep the first member in each orientation that is kept, compacting `tris` in place (the
+    // pass reads only its own triangle, at or after the write position)
     std::vector<uint8_t> kept_same, kept_other;
     if (!fill_checked(kept_same, n, uint8_t(0), monitor) || !fill_checked(kept_other, n, uint8_t(0), monitor)) return stopped;
-    std::vector<Tri> out;
-    out.reserve(n);
+    size_t kept = 0;
     for (size_t i = 0; i < n; ++i) {
         if (monitor.stopped_at(i)) return stopped;
         const uint32_t g = group[i];
-        const bool same = even(tris[i]) == even(tris[g]);
         const bool keep_same = same_way[g] >= other_way[g], keep_other = other_way[g] >= same_way[g];
-        uint8_t& done = same ? kept_same[g] : kept_other[g];
-        if ((same ? keep_same : keep_other) && !done) {
+        uint8_t& done = same[i] ? kept_same[g] : kept_other[g];
+        if ((same[i] ? keep_same : keep_other) && !done) {
             done = 1;
-            out.push_back(tris[i]);
+            tris[kept++] = tris[i];
         } else {
             ++counts.duplicate;
         }
     }
-    mesh.triangles = std::move(out);
+    tris.resize(kept);
+    mesh.triangles = std::move(tris);
     return counts;
 }
 

@@ -23,10 +23,11 @@ MeshTopology mesh_topology(const Mesh& mesh, const std::vector<uint32_t>& weld, 
         if (f[0] < nv && f[1] < nv && f[2] < nv) uf.unite(corner(f[0]), corner(f[1])), uf.unite(corner(f[0]), corner(f[2]));
     }
     // parts numbered in order of their first (non-degenerate) triangle
-    std::vector<int64_t> part_of_root(nv, -1);
+    std::vector<int64_t> part_of_root;
+    if (!fill_checked(part_of_root, nv, int64_t(-1), monitor)) return stopped;
     std::vector<long> V, E, F;
     std::vector<uint8_t> used(nv, 0);
-    out.triangle_part.assign(mesh.triangles.size(), 0);
+    if (!fill_checked(out.triangle_part, mesh.triangles.size(), 0u, monitor)) return stopped;
     bool valid = true;
     for (size_t t = 0; t < mesh.triangles.size(); ++t) {
         if (monitor.stopped_at(t)) return stopped;

@@ -23,14 +23,15 @@ bool sample_surface(const Mesh& mesh, size_t n, uint64_t seed, std::vector<Vec3>
     if (triangle_of_sample) triangle_of_sample->clear();
     const size_t nt = mesh.triangles.size();
     if (nt == 0 || n == 0) return true;
-    std::vector<double> cumulative(nt);
+    std::vector<double> cumulative;
+    reserve_large(cumulative, nt);
     double total = 0;
     for (size_t t = 0; t < nt; ++t) {
         if (monitor.stopped_at(t)) return false;
         const Tri& f = mesh.triangles[t];
         const Vec3& a = mesh.vertices[f[0]];
         total += 0.5 * (mesh.vertices[f[1]] - a).cross(mesh.vertices[f[2]] - a).norm();
-        cumulative[t] = total;
+        cumulative.push_back(total);
     }
     if (!(total > 0)) return true;
     Rng rng(seed);

@@ -102,6 +102,7 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
             if (monitor.stopped_at(t)) return monitor.stop_status("surface");
             for (uint32_t v : raw.triangles[t]) referenced[v] = 1;
         }
+        reserve_large(used, nv);
         for (size_t i = 0; i < nv; ++i)
             if (referenced[i]) used.push_back(raw.vertices[i]);
         if (monitor.stopped()) return monitor.stop_status("surface");
@@ -125,19 +126,18 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
     }
 
     if (!cloud) {
-        // drop zero-area triangles (they carry no surface and no winding number)
-        std::vector<Tri> kept;
-        kept.reserve(raw.triangles.size());
+        // drop zero-area triangles (they carry no surface and no winding number), in place
+        size_t kept = 0;
         for (size_t k = 0; k < raw.triangles.size(); ++k) {
             if (monitor.stopped_at(k)) return monitor.stop_status("surface");
-            const Tri& t = raw.triangles[k];
+            const Tri t = raw.triangles[k];
             const Vec3& a = raw.vertices[t[0]];
             const double area2 = (raw.vertices[t[1]] - a).cross(raw.vertices[t[2]] - a).norm();
-            if (area2 > 1e-14) kept.push_back(t);
+            if (area2 > 1e-14) raw.triangles[kept++] = t;
         }
-        out.dropped_triangles += raw.triangles.size() - kept.size();
-        if (kept.empty()) return fail(Code::degenerate_input, "every triangle has zero area");
-        raw.triangles = std::move(kept);
+        out.dropped_triangles += raw.triangles.size() - kept;
+        if (kept == 0) return fail(Code::degenerate_input, "every triangle has zero area");
+        raw.triangles.resize(kept);
         // an inward-facing mesh has negative signed volume: flip it so inside means w > 1/2. An
         // open mesh's signed volume depends on the origin (a large hole facing away from it can
         // turn its sign), so it is taken with the holes capped (hole_caps.h: oriented like the

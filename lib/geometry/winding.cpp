@@ -114,23 +114,18 @@ WindingNumber::WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, d
     : impl_(std::make_unique<Impl>(std::move(tree))) {
     Impl& m = *impl_;
     m.beta = (beta >= 0 && std::isfinite(beta)) ? beta : 2.0;
-    // Bottom-up (children follow their parent in bvh.nodes): a leaf sums its triangles' moments
-    // about its centre, a parent shifts its children's moments to its own centre, so the build
-    // is O(F) apart from the radius (the farthest corner from the centre, over the node's triangles:
-    // farthest_corner prunes that walk by the node boxes). The root's two subtrees are separate
-    // id ranges, [1, right) and [right, end), done at once with threads > 1.
+    // Bottom-up: a leaf sums its triangles' moments about its centre, a parent shifts its
+    // children's moments to its own centre, so the build is O(F) apart from the radius (the
+    // farthest corner from the centre, over the node's triangles: farthest_corner prunes that walk
+    // by the node boxes). A node's moments are returned to its parent through the recursion
+    // (its depth is the tree's, about log2(F / 8)), so only the queries' far fields are stored.
+    // The root's two subtrees are done at once with threads > 1.
     const size_t count = m.bvh.nodes.size();
     if (count == 0) return;
-    std::vector<double> weight;              // total area per node
-    std::vector<Vec3> weighted;              // area-weighted centroid sum per node
-    std::vector<detail::Moments> moments;    // for the parents' shifts
-    // The per-node arrays are reserved (address space only) and then zero-filled kStopCheckItems
+    // The far fields are reserved (address space only) and then zero-filled kStopCheckItems
     // nodes at a time with a stop test before each chunk: filling them touches every page, which
     // a stop request should not have to wait for (nor free afterwards).
-    m.exp.reserve(count);
-    weight.reserve(count);
-    weighted.reserve(count);
-    moments.reserve(count);
+    reserve_large(m.exp, count);
     for (size_t filled = 0; filled < count;) {
         if (stop && stop()) {
             impl_.reset();
@@ -138,73 +133,89 @@ WindingNumber::WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, d
         }
         filled = std::min<size_t>(count, filled + detail::kStopCheckItems);
         m.exp.resize(filled);
-        weight.resize(filled, 0.0);
-        weighted.resize(filled, Vec3::Zero());
-        moments.resize(filled);
     }
+    struct Sums {
+        double weight = 0;               // total area
+        Vec3 weighted = Vec3::Zero();    // area-weighted centroid sum
+        detail::Moments moments;
+    };
     std::atomic<bool> halted{false};
-    auto expand = [&](size_t n) {
-        // a node's radius pass reads all its triangles: near the root a test every node, below
-        // every kStopCheckItems nodes
-        if (halted.load(std::memory_order_relaxed)) return;
-        if (stop && (n % detail::kStopCheckItems == 0 || m.bvh.nodes[n].end - m.bvh.nodes[n].begin > detail::kStopCheckItems) &&
-            stop()) {
-            halted.store(true, std::memory_order_relaxed);
-            return;
-        }
-        const detail::BvhNode& node = m.bvh.nodes[n];
-        Expansion e;
-        if (node.leaf()) {
-            weighted[n].setZero();
-            for (uint32_t i = node.begin; i < node.end; ++i) {
-                const auto& v = m.tris[i];
-                const Vec3 a = 0.5 * (v[1] - v[0]).cross(v[2] - v[0]);
-                const Vec3 c = (v[0] + v[1] + v[2]) / 3.0;
-                weight[n] += a.norm();
-                weighted[n] += a.norm() * c;
-            }
-            e.centre = weight[n] > 0 ? Vec3(weighted[n] / weight[n]) : Vec3(0.5 * (node.lo + node.hi));
-            for (uint32_t i = node.begin; i < node.end; ++i) {
-                const auto& v = m.tris[i];
-                const Vec3 a = 0.5 * (v[1] - v[0]).cross(v[2] - v[0]);
-                const Vec3 c = (v[0] + v[1] + v[2]) / 3.0;
-                Eigen::Matrix3d S = Eigen::Matrix3d::Zero();   // E[(x - centre)(x - centre)^T] over the triangle
-                for (const Vec3& p : v) S += (p - c) * (p - c).transpose();
-                const Vec3 d = c - e.centre;
-                S = S / 12.0 + d * d.transpose();
-                e.N += a;
-                e.M += a * d.transpose();
-                for (int k = 0; k < 3; ++k) e.Q[k] += a[k] * S;
-            }
-        } else {
-            weight[n] = weight[node.left] + weight[node.right];
-            weighted[n] = weighted[node.left] + weighted[node.right];
-            e.centre = weight[n] > 0 ? Vec3(weighted[n] / weight[n]) : Vec3(0.5 * (node.lo + node.hi));
-            for (uint32_t c : {node.left, node.right}) {
-                const Expansion ch = moments[c].full();
-                const Vec3 s = ch.centre - e.centre;   // d about the parent = d about the child + s
-                e.N += ch.N;
-                e.M += ch.M + ch.N * s.transpose();
-                for (int k = 0; k < 3; ++k) {
-                    const Vec3 row = ch.M.row(k).transpose();
-                    e.Q[k] += ch.Q[k] + row * s.transpose() + s * row.transpose() + ch.N[k] * (s * s.transpose());
-                }
-            }
-        }
-        e.radius = std::sqrt(farthest_corner(m.bvh.nodes, m.tris, uint32_t(n), e.centre));
-        moments[n] = detail::Moments(e);
+    // the node's radius and far field from its expansion about its centre
+    auto finish = [&](uint32_t n, Expansion& e, Sums& out) {
+        e.radius = std::sqrt(farthest_corner(m.bvh.nodes, m.tris, n, e.centre));
+        out.moments = detail::Moments(e);
         m.exp[n] = detail::FarField(e, m.beta);
     };
+    auto leaf = [&](uint32_t n) {
+        const detail::BvhNode& node = m.bvh.nodes[n];
+        Sums out;
+        for (uint32_t i = node.begin; i < node.end; ++i) {
+            const auto& v = m.tris[i];
+            const Vec3 a = 0.5 * (v[1] - v[0]).cross(v[2] - v[0]);
+            const Vec3 c = (v[0] + v[1] + v[2]) / 3.0;
+            out.weight += a.norm();
+            out.weighted += a.norm() * c;
+        }
+        Expansion e;
+        e.centre = out.weight > 0 ? Vec3(out.weighted / out.weight) : Vec3(0.5 * (node.lo + node.hi));
+        for (uint32_t i = node.begin; i < node.end; ++i) {
+            const auto& v = m.tris[i];
+            const Vec3 a = 0.5 * (v[1] - v[0]).cross(v[2] - v[0]);
+            const Vec3 c = (v[0] + v[1] + v[2]) / 3.0;
+            Eigen::Matrix3d S = Eigen::Matrix3d::Zero();   // E[(x - centre)(x - centre)^T] over the triangle
+            for (const Vec3& p : v) S += (p - c) * (p - c).transpose();
+            const Vec3 d = c - e.centre;
+            S = S / 12.0 + d * d.transpose();
+            e.N += a;
+            e.M += a * d.transpose();
+            for (int k = 0; k < 3; ++k) e.Q[k] += a[k] * S;
+        }
+        finish(n, e, out);
+        return out;
+    };
+    auto parent = [&](uint32_t n, const Sums& left, const Sums& right) {
+        const detail::BvhNode& node = m.bvh.nodes[n];
+        Sums out;
+        out.weight = left.weight + right.weight;
+        out.weighted = left.weighted + right.weighted;
+        Expansion e;
+        e.centre = out.weight > 0 ? Vec3(out.weighted / out.weight) : Vec3(0.5 * (node.lo + node.hi));
+        for (const Sums* child : {&left, &right}) {
+            const Expansion ch = child->moments.full();
+            const Vec3 s = ch.centre - e.centre;   // d about the parent = d about the child + s
+            e.N += ch.N;
+            e.M += ch.M + ch.N * s.transpose();
+            for (int k = 0; k < 3; ++k) {
+                const Vec3 row = ch.M.row(k).transpose();
+                e.Q[k] += ch.Q[k] + row * s.transpose() + s * row.transpose() + ch.N[k] * (s * s.transpose());
+            }
+        }
+        finish(n, e, out);
+        return out;
+    };
+    auto expand = [&](auto&& self, uint32_t n) -> Sums {
+        // a node's radius pass reads all its triangles: near the root a test every node, below
+        // every kStopCheckItems nodes (the recursion visits the ids in order: parents first)
+        if (halted.load(std::memory_order_relaxed)) return Sums{};
+        const detail::BvhNode& node = m.bvh.nodes[n];
+        if (stop && (n % detail::kStopCheckItems == 0 || node.end - node.begin > detail::kStopCheckItems) &&
+            stop()) {
+            halted.store(true, std::memory_order_relaxed);
+            return Sums{};
+        }
+        if (node.leaf()) return leaf(n);
+        const Sums left = self(self, node.left), right = self(self, node.right);
+        if (halted.load(std::memory_order_relaxed)) return Sums{};
+        return parent(n, left, right);
+    };
     const detail::BvhNode& root = m.bvh.nodes[0];
-    const size_t right = root.leaf() ? 1 : root.right;
     if (threads > 1 && !root.leaf()) {
-        run_workers(2, [&](size_t w) {
-            for (size_t n = w == 1 ? count : right, last = w == 1 ? right : 1; n-- > last;) expand(n);
-        });
+        Sums sub[2];   // the root's children, each on its own thread
+        run_workers(2, [&](size_t w) { sub[w] = expand(expand, w == 0 ? root.left : root.right); });
+        if (!halted.load(std::memory_order_relaxed)) parent(0, sub[0], sub[1]);
     } else {
-        for (size_t n = count; n-- > 1;) expand(n);
+        expand(expand, 0);
     }
-    expand(0);
     if (halted.load(std::memory_order_relaxed)) impl_.reset();
 }
 
