@@ -20,6 +20,7 @@
 #include <string>
 
 #include "readers.h"
+#include "large_pages.h"
 
 namespace caio {
 namespace detail {
@@ -91,8 +92,8 @@ bool read_assimp(const std::string& name, const std::string& buf, const std::str
     }
     if (!check_budget(name, buf.size(), nv, nt, error)) return false;
     if (nv > std::numeric_limits<uint32_t>::max()) return fail(error, name, 0, "too many vertices");
-    out.positions.reserve(3 * nv);
-    out.triangles.reserve(3 * nt);
+    ca::reserve_large(out.positions, 3 * nv);
+    ca::reserve_large(out.triangles, 3 * nt);
     for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
         const aiMesh* mesh = scene->mMeshes[m];
         const uint32_t base = static_cast<uint32_t>(out.positions.size() / 3);

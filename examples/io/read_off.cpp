@@ -1,6 +1,7 @@
 // read_off.cpp: OFF meshes ([ST][C][N]OFF headers, comments, counts on the header line or the
 // next one, polygons fan-triangulated, face colours ignored). NOFF gives per-vertex normals.
 #include "readers.h"
+#include "large_pages.h"
 
 #include <algorithm>
 #include <cmath>
@@ -63,8 +64,8 @@ bool read_off(const std::string& path, const std::string& buf, MeshData& out, st
                         " faces exceed what the file size allows (file truncated?)");
     if (nv > static_cast<long long>(std::numeric_limits<uint32_t>::max()))
         return fail(error, path, lr.line, "too many vertices");
-    out.positions.reserve(static_cast<size_t>(nv) * 3);
-    if (has_normals) out.normals.reserve(static_cast<size_t>(nv) * 3);
+    ca::reserve_large(out.positions, static_cast<size_t>(nv) * 3);
+    if (has_normals) ca::reserve_large(out.normals, static_cast<size_t>(nv) * 3);
     for (long long i = 0; i < nv; ++i) {
         if (!next_content(t))
             return fail(error, path, 0,

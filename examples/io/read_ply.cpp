@@ -2,6 +2,7 @@
 // any scalar types; vertex x y z [nx ny nz]; face vertex_indices / vertex_index lists; other
 // elements and properties skipped). Every element count is checked against the bytes left.
 #include "readers.h"
+#include "large_pages.h"
 
 #include <algorithm>
 #include <charconv>
@@ -279,11 +280,11 @@ bool read_ply(const std::string& path, const std::string& buf, MeshData& out, st
         const bool is_vertex = static_cast<int>(ei) == vi;
         const bool is_face = static_cast<int>(ei) == fi;
         if (is_vertex) {
-            out.positions.reserve(static_cast<size_t>(el.count) * 3);
-            if (want_normals) out.normals.reserve(static_cast<size_t>(el.count) * 3);
+            ca::reserve_large(out.positions, static_cast<size_t>(el.count) * 3);
+            if (want_normals) ca::reserve_large(out.normals, static_cast<size_t>(el.count) * 3);
             row.assign(el.props.size(), 0.0);
         } else if (is_face) {
-            out.triangles.reserve(static_cast<size_t>(el.count) * 3);
+            ca::reserve_large(out.triangles, static_cast<size_t>(el.count) * 3);
         }
         for (unsigned long long n = 0; n < el.count; ++n) {
             for (size_t k = 0; k < el.props.size(); ++k) {

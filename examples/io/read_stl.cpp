@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "readers.h"
+#include "large_pages.h"
 
 namespace caio {
 namespace detail {
@@ -58,7 +59,7 @@ bool read_binary_stl(const std::string& path, const std::string& buf, MeshData& 
     const size_t n = (buf.size() - 84) / 50;
     if (n == 0) return fail(error, path, 0, "binary STL with no triangles");
     VertexMerger merge(out);
-    out.triangles.reserve(n * 3);
+    ca::reserve_large(out.triangles, n * 3);
     for (size_t t = 0; t < n; ++t) {
         const char* rec = buf.data() + 84 + 50 * t + 12;  // skip the facet normal
         for (int v = 0; v < 3; ++v) {

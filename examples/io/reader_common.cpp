@@ -1,6 +1,7 @@
 // reader_common.cpp: the shared reader helpers declared in reader_common.h (messages, loading,
 // number parsing, size limits, fan triangulation).
 #include "reader_common.h"
+#include "large_pages.h"
 
 #include <algorithm>
 #include <cctype>
@@ -50,7 +51,10 @@ bool load_file(const std::string& path, std::string& buf, std::string& error) {
     if (!f) return fail(error, path, 0, std::string("cannot open: ") + std::strerror(errno));
     buf.clear();
     const auto size = std::filesystem::file_size(path, ec);
-    if (!ec && size > 0 && size < (uint64_t(1) << 40)) buf.reserve(static_cast<size_t>(size));
+    if (!ec && size > 0 && size < (uint64_t(1) << 40)) {
+        buf.reserve(static_cast<size_t>(size));
+        ca::advise_huge_pages(buf.data(), static_cast<size_t>(size));
+    }
     const bool ok = read_stream(f, buf);
     std::fclose(f);
     if (!ok) return fail(error, path, 0, "read error");
