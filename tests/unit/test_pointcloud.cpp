@@ -361,7 +361,7 @@ TEST_CASE("point cloud: a thin sheet without normals gives about the skeleton of
 // for noisy, its cover samples were moved onto the local planes, up to half the top's thickness
 // into it, and without trusted normals some were reached by no ball (CA_ERROR_UNCOVERABLE: the
 // run below fails). Every sample stays on the surface and is covered.
-TEST_CASE("point cloud: exactly flat faces are not noise; a desk's thin top is covered without trusted normals") {
+TEST_CASE("point cloud: exactly flat faces are not noise, and a desk's thin top is covered without trusted normals") {
     ca::Mesh desk = shapes::box(1.0, 0.03125, 0.5);
     for (double x : {0.03125, 0.90625})
         for (double z : {0.03125, 0.40625})
