@@ -3,7 +3,11 @@
 // noise out), oriented by the point's normal. The cloud counts as noisy when the median distance
 // of a point to its own plane exceeds kNoisy x the median 16th-neighbour distance: on a clean
 // cloud that distance is the curvature sag (about d16^2 / 4R on a sphere of radius R, a few
-// percent of d16), on a scan it is the noise. Only noisy clouds are changed, in two ways:
+// percent of d16), on a scan it is the noise; and when that distance grows by less than
+// kMaxGrowth from the planes of 8 neighbours to those of 16 (curvature sag grows about 2x, noise
+// does not). Exactly flat 8-neighbourhoods (a CAD model's faces: median distance 0) count as
+// unbounded growth: noise never fits a plane exactly, and the 16 nearest of a slab thinner than
+// their spread reach its far side. Only noisy clouds are changed, in two ways:
 // - the winding number fluctuates within the noise band, so Voronoi vertices between points flung
 //   outward can pass the inside test (w > 1/2) while lying outside the sampled surface: a ball is
 //   dropped when its centre is on the outer side of the plane at its nearest cloud point;
@@ -18,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace ca {
 namespace cand {
@@ -52,7 +57,8 @@ LocalPlanes::LocalPlanes(const std::vector<Vec3>& pts, const std::vector<Vec3>& 
     const double d16 = median_of(spacing), r16 = median_of(residual), r8 = median_of(small);
     noise_ = kMedianToSigma * r16;
     noise_ratio_ = d16 > 0 ? r16 / d16 : 0;
-    scale_growth_ = r8 > 0 ? r16 / r8 : 0;
+    // r8 = 0 (exactly flat): unbounded growth, not noise
+    scale_growth_ = r8 > 0 ? r16 / r8 : r16 > 0 ? std::numeric_limits<double>::infinity() : 0;
 }
 
 bool LocalPlanes::noisy() const { return noise_ratio_ > kNoisy && scale_growth_ < kMaxGrowth; }
