@@ -44,37 +44,6 @@ struct Expansion {
     }
 };
 
-// An Expansion's moments kept while a tree is built bottom-up (a parent shifts its children's):
-// Q[i] is symmetric (a sum of area-scaled symmetric second moments, shifted by symmetric terms),
-// so six of its nine entries are kept and the other three copied back exactly.
-struct Moments {
-    Vec3 centre = Vec3::Zero();
-    Vec3 N = Vec3::Zero();
-    Eigen::Matrix3d M = Eigen::Matrix3d::Zero();
-    double Q[3][6] = {};   // (0,0) (0,1) (0,2) (1,1) (1,2) (2,2)
-
-    Moments() = default;
-    explicit Moments(const Expansion& e) : centre(e.centre), N(e.N), M(e.M) {
-        for (int k = 0; k < 3; ++k) {
-            const Eigen::Matrix3d& q = e.Q[k];
-            const double v[6] = {q(0, 0), q(0, 1), q(0, 2), q(1, 1), q(1, 2), q(2, 2)};
-            std::copy(v, v + 6, Q[k]);
-        }
-    }
-    // The expansion (radius 0: only eval and the parent shift read it).
-    Expansion full() const {
-        Expansion e;
-        e.centre = centre;
-        e.N = N;
-        e.M = M;
-        for (int k = 0; k < 3; ++k) {
-            const double* v = Q[k];
-            e.Q[k] << v[0], v[1], v[2], v[1], v[3], v[4], v[2], v[4], v[5];
-        }
-        return e;
-    }
-};
-
 // An Expansion as a tree stores it for queries: the three terms collected into one polynomial in
 // r = centre - q, omega = inv3 (N.r + tr M) + inv5 (A(r) + b.r) + inv7 C(r) with inv = 1 / |r|:
 // A the quadratic form -3 r^T M r (6 coefficients), b the linear part -3/2 (2 diag Q + tr Q) of

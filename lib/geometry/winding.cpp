@@ -137,13 +137,13 @@ WindingNumber::WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, d
     struct Sums {
         double weight = 0;               // total area
         Vec3 weighted = Vec3::Zero();    // area-weighted centroid sum
-        detail::Moments moments;
+        Expansion expansion;             // about the node's centre (its radius unused by the parent)
     };
     std::atomic<bool> halted{false};
     // the node's radius and far field from its expansion about its centre
     auto finish = [&](uint32_t n, Expansion& e, Sums& out) {
         e.radius = std::sqrt(farthest_corner(m.bvh.nodes, m.tris, n, e.centre));
-        out.moments = detail::Moments(e);
+        out.expansion = e;
         m.exp[n] = detail::FarField(e, m.beta);
     };
     auto leaf = [&](uint32_t n) {
@@ -181,7 +181,7 @@ WindingNumber::WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, d
         Expansion e;
         e.centre = out.weight > 0 ? Vec3(out.weighted / out.weight) : Vec3(0.5 * (node.lo + node.hi));
         for (const Sums* child : {&left, &right}) {
-            const Expansion ch = child->moments.full();
+            const Expansion& ch = child->expansion;
             const Vec3 s = ch.centre - e.centre;   // d about the parent = d about the child + s
             e.N += ch.N;
             e.M += ch.M + ch.N * s.transpose();
