@@ -1,8 +1,9 @@
 // bench_scale.cpp: a 2 000 000-triangle torus (generated, written as binary PLY) at the defaults:
 // the whole run (read + pipeline) in its own process with its peak RSS and its phases (read,
 // candidates, select, connect), then where the candidate step's time goes, each step timed alone
-// on the same input: reading, validation and merging, the winding-number tree, the distance
-// tree, hole caps, surface sampling, the Delaunay step and the inside decisions.
+// on the same input: reading, the surface preparation (validation, merging, the half-edges'
+// caps and topology), the triangle tree the winding number and the distances share, the
+// winding number's far fields, surface sampling, the Delaunay step and the inside decisions.
 // usage: bench_scale [DATA_ROOT]   (the data root is not used: the input is generated)
 #include "bench_common.h"
 #include "bench_inputs.h"
@@ -10,7 +11,8 @@
 #include "bvh.h"
 #include "candidates.h"
 #include "delaunay.h"
-#include "distance.h"
+#include "hole_caps.h"
+#include "mesh_topology.h"
 #include "sampling.h"
 #include "surface.h"
 #include "winding.h"
@@ -67,15 +69,20 @@ int main() {
             m.triangles.push_back({md.triangles[i], md.triangles[i + 1], md.triangles[i + 2]});
         ca::prepare_surface(std::move(m), {}, surf);
     });
-    std::printf("| copy in, validate, weld and merge, normalise, orient | %.3f |\n", t_prepare);
+    std::printf("| copy in, validate, weld and merge, normalise, half-edges (caps, topology), orient | %.3f |\n", t_prepare);
     const ca::Mesh& mesh = surf.mesh;
+    std::printf("| of which the half-edges, caps and topology | %.3f |\n", timed([&] {
+        const ca::HalfEdgeBuckets edges = ca::half_edge_buckets(mesh);
+        ca::hole_caps(mesh, edges);
+        ca::mesh_topology(mesh, {}, edges);
+    }));
     std::unique_ptr<ca::WindingNumber> winding;
     const int threads = ca::resolve_threads(0);   // all cores, as the pipeline builds it by default
-    std::printf("| winding-number tree (BVH + expansions, %d threads) | %.3f |\n", threads, timed([&] {
-        winding = std::make_unique<ca::WindingNumber>(ca::detail::build_triangle_tree(mesh, threads), 2.0, threads);
-    }));
-    std::printf("| distance tree (BVH) | %.3f |\n", timed([&] { ca::MeshDistance distance(mesh); }));
-    std::printf("| hole caps (boundary loops) | %.3f |\n", timed([&] { ca::hole_caps(mesh); }));
+    std::shared_ptr<const ca::detail::TriangleTree> tree;
+    std::printf("| triangle tree (BVH + corners, shared by the winding number and the distances, %d threads) | %.3f |\n",
+                threads, timed([&] { tree = ca::detail::build_triangle_tree(mesh, threads); }));
+    std::printf("| winding-number far fields (%d threads) | %.3f |\n", threads,
+                timed([&] { winding = std::make_unique<ca::WindingNumber>(tree, 2.0, threads); }));
     std::vector<ca::Vec3> samples;
     std::printf("| surface sampling (1 500 + 4 000 + 4 000) | %.3f |\n", timed([&] {
         ca::sample_surface(mesh, co.cover_samples, 1);
