@@ -20,7 +20,9 @@ MeshTopology mesh_topology(const Mesh& mesh, const std::vector<uint32_t>& weld, 
     for (size_t t = 0; t < mesh.triangles.size(); ++t) {
         if (monitor.stopped_at(t)) return stopped;
         const Tri& f = mesh.triangles[t];
-        if (f[0] < nv && f[1] < nv && f[2] < nv) uf.unite(corner(f[0]), corner(f[1])), uf.unite(corner(f[0]), corner(f[2]));
+        if (!(f[0] < nv && f[1] < nv && f[2] < nv)) continue;
+        const Tri w = {corner(f[0]), corner(f[1]), corner(f[2])};
+        if (w[0] != w[1] && w[1] != w[2] && w[0] != w[2]) uf.unite(w[0], w[1]), uf.unite(w[0], w[2]);
     }
     // parts numbered in order of their first (non-degenerate) triangle
     std::vector<int64_t> part_of_root;
