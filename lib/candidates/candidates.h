@@ -87,10 +87,15 @@ size_t add_fallback_balls(CandidateSet& set, const WindingNumber& winding, const
 // (`normals[j]` for cover_samples[j]), inside by the cloud's winding number, radius = distance
 // to the nearest point of dense_samples. `noise` (noisy clouds; default: clean): where no point
 // just below a sample is inside, points down to noise.depth are tried, and a centre must also pass
-// noise.below_surface. Stops as add_fallback_balls does.
+// noise.below_surface. With noise.untrusted_signs (normals estimated or re-oriented) the side of
+// each ball is the one rays through the cloud find enclosed (fallback_balls.cpp). Stops as
+// add_fallback_balls does.
 struct CloudNoise {
     double depth = 0;                                  // the inside test is unreliable above this depth
     std::function<bool(const Vec3&)> below_surface;    // null: no further test
+    // The normals were estimated or re-oriented (not given and trusted): some signs are wrong, so
+    // the side of each ball is chosen by rays through the cloud, not by the normal's sign alone.
+    bool untrusted_signs = false;
 };
 size_t add_cloud_fallback_balls(CandidateSet& set, const PointCloudWinding& winding, const std::vector<Vec3>& normals,
                                 const CloudNoise& noise = {}, int threads = 0, const Monitor& monitor = Monitor{});

@@ -17,16 +17,28 @@
 // CloudNoise::depth (such a ball reaches the sample for offsets delta >= its depth), and a centre
 // must also lie below the local plane at its nearest point, as the candidates' (a ball grown
 // along a sample's normal can otherwise end up outside, where w fluctuates above 1/2).
+// On a cloud whose normals were estimated or re-oriented, scattered wrong signs remain, and a wrong
+// sign at a sample both points its normal outward and (with its wrongly signed neighbours) lifts w
+// above 1/2 just outside it, so the ball would be grown outside. There the side is chosen by rays
+// instead, which need no signs: from a sample on a closed surface, rays into the inside end on the
+// surface's far side, rays into the outside mostly leave the bounding box. The ball is grown on
+// the side whose rays escape less (ties: the normal's side) while w > 1/2; where w is nowhere
+// above 1/2 on that side but the rays find it clearly enclosed and the other side open, it is
+// grown there by the distances alone (the touching rule above); otherwise on the other side while
+// w > 1/2. Clouds with trusted given normals keep the normal's side.
 #include "candidates.h"
 
 #include "coverage.h"
 #include "distance.h"
 #include "kdtree.h"
 #include "point_winding.h"
+#include "surface.h"
 #include "winding.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
+#include <memory>
 
 namespace ca {
 namespace {
@@ -105,6 +117,65 @@ bool grow_ball(const Vec3& s, const Vec3& n, const std::function<bool(const Vec3
     return true;
 }
 
+// Untrusted signs: how open each side of a cloud sample is, by rays through the cloud. A ray
+// hits the surface where it comes within `tol_` of a cloud point (kRayTolerance x the median 8th-
+// neighbour distance: closer than the gaps between points, so rays do not slip through the
+// sampled surface, and far enough that a grazing ray does not stop at once); it escapes where it
+// leaves the points' bounding box grown by kRayMargin. It is marched by the distance to the
+// nearest point (less half the tolerance, at least half of it: no point lies nearer the path).
+class SideRays {
+public:
+    SideRays(const std::vector<Vec3>& pts, const PointTree& tree, int threads) : tree_(tree) {
+        std::vector<double> d8(pts.size(), 0);
+        for_each_neighbourhood(pts, 8, [&](size_t i, const size_t*, const double* d2, size_t found) {
+            d8[i] = std::sqrt(d2[found - 1]);
+        }, threads);
+        std::nth_element(d8.begin(), d8.begin() + long(d8.size() / 2), d8.end());
+        tol_ = kRayTolerance * d8[d8.size() / 2];
+        const auto [lo, hi] = bounding_box(pts);
+        lo_ = lo - Vec3::Constant(kRayMargin), hi_ = hi + Vec3::Constant(kRayMargin);
+    }
+    // The fraction of kRays rays from s, spread over a cone of half-angle kRayCone around the unit
+    // vector `axis`, that escape. They start kRayStart tolerances out along the axis, past the
+    // sampled surface around s, so that only the far side of the part or another part stops them.
+    double escaping(const Vec3& s, const Vec3& axis) const {
+        const Vec3 u = axis.unitOrthogonal(), v = axis.cross(u);
+        const double lowest = std::cos(kRayCone);
+        size_t escaped = 0;
+        for (size_t k = 0; k < kRays; ++k) {
+            // Fibonacci points on the spherical cap: evenly spread directions
+            const double z = 1 - (1 - lowest) * (double(k) + 0.5) / double(kRays), rho = std::sqrt(1 - z * z);
+            const double phi = 2.399963229728653 * double(k);
+            const Vec3 d = z * axis + rho * std::cos(phi) * u + rho * std::sin(phi) * v;
+            Vec3 x = s + (kRayStart * tol_ / z) * d;
+            bool hit = false;
+            for (int step = 0; step < kMaxSteps && !hit; ++step) {
+                const double dist = tree_.distance(x);
+                hit = dist < tol_;
+                x += std::max(dist - 0.5 * tol_, 0.5 * tol_) * d;
+                if ((x.array() < lo_.array()).any() || (x.array() > hi_.array()).any()) break;
+            }
+            escaped += !hit;
+        }
+        return double(escaped) / double(kRays);
+    }
+
+private:
+    static constexpr size_t kRays = 16;
+    static constexpr double kRayCone = 50 * 3.14159265358979323846 / 180;
+    static constexpr double kRayTolerance = 0.75, kRayStart = 1.2, kRayMargin = 0.05;
+    static constexpr int kMaxSteps = 300;
+    const PointTree& tree_;
+    double tol_ = 0;
+    Vec3 lo_, hi_;
+};
+
+// A ball is grown by the distances alone, on the side the winding number calls inside nowhere,
+// only where that side is clearly enclosed: at most this fraction of its rays escape, and at least
+// this fraction more on the other side. Where both sides are open the part is thinner than the
+// rays' start (they begin beyond its far side) and they tell nothing.
+constexpr double kEnclosed = 0.25;
+
 }  // namespace
 
 size_t add_fallback_balls(CandidateSet& set, const WindingNumber& winding, const MeshDistance& distance,
@@ -144,13 +215,30 @@ size_t add_cloud_fallback_balls(CandidateSet& set, const PointCloudWinding& wind
     const PointTree tree(set.dense_samples);
     auto radius_at = [&](const Vec3& c) { return tree.distance(c); };
     auto inside = [&](const Vec3& c) { return winding.inside(c) && (!noise.below_surface || noise.below_surface(c)); };
+    auto anywhere = [&](const Vec3& c) { return !noise.below_surface || noise.below_surface(c); };
     size_t added = 0;
     const std::vector<size_t> unreached = unreached_samples(set, threads, monitor);
+    std::unique_ptr<SideRays> rays;
+    if (noise.untrusted_signs && !unreached.empty()) rays = std::make_unique<SideRays>(set.dense_samples, tree, resolve_threads(threads));
     for (size_t k = 0; k < unreached.size(); ++k) {
         if (monitor.stopped_at(k)) break;
         const size_t j = unreached[k];
+        const Vec3& s = set.cover_samples[j];
+        Vec3 n = normals[j];
         Ball best;
-        if (!grow_ball(set.cover_samples[j], normals[j], inside, radius_at, best, noise.depth)) continue;
+        bool grown = false;
+        if (rays) {
+            // n: towards the more open side
+            const double front = rays->escaping(s, n), behind = rays->escaping(s, -n);
+            if (behind > front) n = -n;
+            grown = grow_ball(s, n, inside, radius_at, best, noise.depth);
+            const bool clear = std::min(front, behind) <= kEnclosed && std::abs(front - behind) >= kEnclosed;
+            if (!grown && clear) grown = grow_ball(s, n, anywhere, radius_at, best);
+            if (!grown) grown = grow_ball(s, -n, inside, radius_at, best, noise.depth);
+        } else {
+            grown = grow_ball(s, n, inside, radius_at, best, noise.depth);
+        }
+        if (!grown) continue;
         set.balls.push_back(best);
         ++added;
     }

@@ -211,6 +211,7 @@ Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monito
         noise.depth = kNoiseBand * planes.noise();
         noise.below_surface = [&planes](const Vec3& c) { return planes.height(c) <= 0; };
     }
+    noise.untrusted_signs = out.surface.normals_source != NormalSource::given;
     out.fallback_balls = add_cloud_fallback_balls(out, *winding, sample_normals, noise, threads, monitor);
     if (monitor.stopped()) return monitor.stop_status("fallback balls");
     out.cloud_winding = std::move(winding);
