@@ -221,7 +221,8 @@ size_t add_cloud_fallback_balls(CandidateSet& set, const PointCloudWinding& wind
     std::unique_ptr<SideRays> rays;
     if (noise.untrusted_signs && !unreached.empty()) rays = std::make_unique<SideRays>(set.dense_samples, tree, resolve_threads(threads));
     for (size_t k = 0; k < unreached.size(); ++k) {
-        if (monitor.stopped_at(k)) break;
+        // a sample's rays march up to thousands of steps: tested every sample then
+        if (rays ? monitor.stopped() : monitor.stopped_at(k)) break;
         const size_t j = unreached[k];
         const Vec3& s = set.cover_samples[j];
         Vec3 n = normals[j];
