@@ -356,22 +356,41 @@ TEST_CASE("point cloud: a thin sheet without normals gives about the skeleton of
     }
 }
 
-// A clean cloud of a model with exactly flat faces (a desk: a top 1/32 thick on four legs, every
-// coordinate exact in binary, as CAD models give) is not noisy: the planes of 8 neighbours fit
+namespace {
+
+// A desk with exactly flat faces: a top 1/32 thick on four legs, every coordinate exact in binary
+// (as CAD models give), and 5000 points sampled from it with exact normals, with PCA normals of
+// random signs, and with none.
+struct DeskClouds {
+    ca::Mesh mesh;
+    shapes::Cloud exact, pca, bare;
+};
+DeskClouds desk_clouds() {
+    DeskClouds d;
+    d.mesh = shapes::box(1.0, 0.03125, 0.5);
+    for (double x : {0.03125, 0.90625})
+        for (double z : {0.03125, 0.40625})
+            d.mesh = shapes::merged(d.mesh, shapes::box(0.0625, 0.375, 0.0625), ca::Vec3(x, -0.375, z));
+    d.exact = shapes::sample_cloud(d.mesh, 5000, 3);
+    d.pca = d.exact;
+    d.pca.normals = ca::estimate_normals(d.exact.points);
+    d.pca = with_random_signs(d.pca, 5);
+    d.bare = d.exact;
+    d.bare.normals.clear();
+    return d;
+}
+
+}  // namespace
+
+// A clean cloud of a model with exactly flat faces (the desk above) is not noisy: the planes of 8 neighbours fit
 // exactly (median off-plane distance 0) while the 16 nearest on the top reach its underside. Taken
 // for noisy, its cover samples were moved onto the local planes, up to half the top's thickness
 // into it, and without trusted normals some were reached by no ball (CA_ERROR_UNCOVERABLE: the
 // run below fails). Every sample stays on the surface and is covered.
 TEST_CASE("point cloud: exactly flat faces are not noise, and a desk's thin top is covered without trusted normals") {
-    ca::Mesh desk = shapes::box(1.0, 0.03125, 0.5);
-    for (double x : {0.03125, 0.90625})
-        for (double z : {0.03125, 0.40625})
-            desk = shapes::merged(desk, shapes::box(0.0625, 0.375, 0.0625), ca::Vec3(x, -0.375, z));
-    const shapes::Cloud exact = shapes::sample_cloud(desk, 5000, 3);
-    shapes::Cloud pca = exact, bare = exact;
-    pca.normals = ca::estimate_normals(exact.points);
-    pca = with_random_signs(pca, 5);
-    bare.normals.clear();
+    const DeskClouds d = desk_clouds();
+    const ca::Mesh& desk = d.mesh;
+    const shapes::Cloud &exact = d.exact, &pca = d.pca, &bare = d.bare;
     const ca::MeshDistance distance(desk);
     const struct {
         const char* name;
@@ -403,16 +422,10 @@ TEST_CASE("point cloud: exactly flat faces are not noise, and a desk's thin top 
 // each ball is chosen by rays through the cloud instead. A few centres stay outside, near the
 // surface, where both sides look open to the rays; every sample is still covered.
 TEST_CASE("point cloud: fallback balls of estimated or re-oriented normals are grown on the inner side") {
-    const double top = 0.03125;
-    ca::Mesh desk = shapes::box(1.0, top, 0.5);
-    for (double x : {0.03125, 0.90625})
-        for (double z : {0.03125, 0.40625})
-            desk = shapes::merged(desk, shapes::box(0.0625, 0.375, 0.0625), ca::Vec3(x, -0.375, z));
-    const shapes::Cloud exact = shapes::sample_cloud(desk, 5000, 3);
-    shapes::Cloud pca = exact, bare = exact;
-    pca.normals = ca::estimate_normals(exact.points);
-    pca = with_random_signs(pca, 5);
-    bare.normals.clear();
+    const double top = 0.03125;   // the desk's top thickness
+    const DeskClouds d = desk_clouds();
+    const ca::Mesh& desk = d.mesh;
+    const shapes::Cloud &pca = d.pca, &bare = d.bare;
     const ca::WindingNumber inside(desk);
     const ca::MeshDistance distance(desk);
     const struct {
