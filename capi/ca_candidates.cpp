@@ -1,14 +1,11 @@
-// ca_candidates.cpp: step 1 at the C boundary: candidates from a surface view or from the
-// caller's arrays, and the candidate set's getters.
+// ca_candidates.cpp: step 1 at the C boundary: the caller's surface view or arrays converted for
+// the core's step (lib/steps/candidates_step.cpp), the candidate set's arrays in the caller's
+// units, and its getters.
 #include "conversions.h"
-#include "parallel.h"
 #include "results.h"
-#include "struct_size.h"
 
-#include <cmath>
 #include <cstring>
 
-using ca::Code;
 using ca::Status;
 using ca::Vec3;
 using namespace capi;
@@ -38,43 +35,13 @@ ca_status ca_candidates(ca_context* ctx, const ca_surface_view* surface, const c
         ca_candidate_options o;
         Status st = read_arguments({{out, "out"}, {surface, "surface"}}, options, o);
         if (!st.ok()) return st;
-        if (o.generator != CA_CANDIDATES_VORONOI && o.generator != CA_CANDIDATES_RANDOM)
-            return ca::fail(Code::invalid_argument, "unknown candidate generator " + std::to_string(o.generator));
-        ca::Mesh raw;
-        std::vector<Vec3> normals;
-        ca::PointNormals trust = ca::PointNormals::trusted;
-        st = read_surface(surface, true, raw, normals, &trust);
+        ca::SurfaceInput input;
+        st = read_surface(surface, true, input);
         if (!st.ok()) return st;
-        if (monitor.stopped()) return monitor.stop_status("surface");
-        ca::Surface surf;
-        st = ca::prepare_surface(std::move(raw), std::move(normals), surf, true, trust, monitor,
-                                 ca::resolve_threads(ctx->desc.threads));
-        if (!st.ok()) return st;
-        if (trust == ca::PointNormals::trusted && surf.normals_source == ca::NormalSource::oriented)
-            ctx->log(2, "the point normals point against each other at " +
-                            std::to_string(int(std::lround(100 * surf.disagreement_given))) +
-                            "% of neighbouring pairs; they were re-oriented");
-        if (monitor.stopped()) return monitor.stop_status("surface");
-        if (surf.flipped) ctx->log(2, "the mesh faces inward (negative signed volume); it was flipped");
-        if (surf.dropped_triangles)
-            ctx->log(1, std::to_string(surf.dropped_triangles) + " zero-area triangles were ignored");
-        if (surf.duplicate_triangles)
-            ctx->log(1, std::to_string(surf.duplicate_triangles) + " repeated triangles were merged");
-
-        ca::CandidateOptions co;
-        co.generator = static_cast<ca::Generator>(o.generator);
-        co.cover_samples = o.cover_samples;
-        co.voronoi_samples = o.voronoi_samples;
-        co.random_candidates = o.random_candidates;
-        co.seed = o.seed;
-        co.connect_samples = o.connect_samples;
-        co.threads = ctx->desc.threads;
         capi::Pending<ca_candidate_set> res(capi::make_result<ca_candidate_set>(ctx));
-        st = ca::generate_candidates(std::move(surf), co, monitor, res.obj->core);
+        st = ca::candidates_step(std::move(input), to_core(o, ctx->desc.threads), monitor, res.obj->core);
         if (!st.ok()) return st;
         publish(res.obj);
-        ctx->log(1, std::to_string(res.obj->core.cover_samples.size()) + " surface samples, " +
-                        std::to_string(res.obj->core.balls.size()) + " candidate balls");
         *out = res.release();
         return Status::success();
     });
@@ -88,12 +55,8 @@ ca_status ca_candidates_from_arrays(ca_context* ctx, const double* samples, size
     return capi::guarded(ctx, [&]() -> Status {
         Status st = check_pointers({{out, "out"}, {samples, "samples"}, {centers, "centers"}, {radii, "radii"}});
         if (!st.ok()) return st;
-        if (sample_count == 0) return ca::fail(Code::degenerate_input, "no surface samples");
-        if (ball_count == 0) return ca::fail(Code::no_candidates, "no candidate balls");
         if (sample_count > UINT32_MAX || ball_count > UINT32_MAX)
-            return ca::fail(Code::invalid_argument, "more than 2^32 - 1 samples or balls");
-        if (!(std::isfinite(reference_length) && reference_length >= 0))
-            return ca::fail(Code::invalid_argument, "reference_length must be finite and >= 0");
+            return ca::fail(ca::Code::invalid_argument, "more than 2^32 - 1 samples or balls");
         std::vector<Vec3> s, c;
         st = read_points(samples, sample_count, sample_stride, "sample_stride", s);
         if (!st.ok()) return st;
@@ -102,24 +65,11 @@ ca_status ca_candidates_from_arrays(ca_context* ctx, const double* samples, size
         size_t rs;
         st = check_stride(radius_stride, sizeof(double), "radius_stride", rs);
         if (!st.ok()) return st;
-        for (size_t i = 0; i < s.size(); ++i)
-            if (!s[i].allFinite()) return ca::fail(Code::invalid_input, "sample " + std::to_string(i) + " has a NaN or infinite coordinate");
-        for (size_t i = 0; i < c.size(); ++i)
-            if (!c[i].allFinite()) return ca::fail(Code::invalid_input, "ball " + std::to_string(i) + " has a NaN or infinite centre");
+        std::vector<double> r(ball_count);
+        for (size_t i = 0; i < ball_count; ++i) r[i] = read_element<double, 1>(radii, rs, i)[0];
         capi::Pending<ca_candidate_set> res(capi::make_result<ca_candidate_set>(ctx));
-        ca::CandidateSet& core = res.obj->core;
-        auto [lo, hi] = ca::bounding_box(s);
-        double length = reference_length > 0 ? reference_length : (hi - lo).maxCoeff();
-        if (!(length > 0)) return ca::fail(Code::degenerate_input, "all samples coincide; give reference_length");
-        core.surface.norm.origin = lo;
-        core.surface.norm.scale = length;
-        for (const Vec3& p : s) core.cover_samples.push_back(core.surface.norm.to_internal(p));
-        for (size_t i = 0; i < c.size(); ++i) {
-            const double r = read_element<double, 1>(radii, rs, i)[0];
-            if (!(std::isfinite(r) && r >= 0))
-                return ca::fail(Code::invalid_input, "ball " + std::to_string(i) + " has a negative, NaN or infinite radius");
-            core.balls.push_back({core.surface.norm.to_internal(c[i]), r / length});
-        }
+        st = ca::candidates_from_arrays(s, c, r, reference_length, res.obj->core);
+        if (!st.ok()) return st;
         publish(res.obj);
         *out = res.release();
         return Status::success();

@@ -1,19 +1,48 @@
-// ca_connect.cpp: step 3 at the C boundary: edges and triangles between the selected balls, and
-// the skeleton's getters. A skeleton copies what it needs: it outlives its set and selection.
+// ca_connect.cpp: step 3 at the C boundary: the options converted for the core's step
+// (lib/steps/connect_step.cpp), the skeleton's arrays and stats in the caller's units, and its
+// getters. A skeleton copies what it needs: it outlives its set and selection.
 #include "conversions.h"
 #include "results.h"
-#include "struct_size.h"
 
-#include "connect.h"
-#include "fit.h"
-#include "skeleton.h"
-
-#include <chrono>
-
-using ca::Code;
 using ca::Status;
 using ca::Vec3;
 using namespace capi;
+
+namespace {
+
+// The skeleton's arrays and stats in the caller's units.
+void publish(ca_skeleton& r, const ca::ConnectResult& c, const ca::Normalization& n) {
+    const ca::Skeleton& sk = c.skeleton;
+    std::vector<Vec3> centers(sk.balls.size());
+    for (size_t i = 0; i < centers.size(); ++i) centers[i] = sk.balls[i].center;
+    fill(r.centers, r.allocator, centers, n);
+    r.radii.assign(r.allocator, centers.size());
+    for (size_t i = 0; i < centers.size(); ++i) r.radii.data[i] = sk.balls[i].radius * n.scale;
+    r.edges.assign(r.allocator, 2 * sk.edges.size());
+    for (size_t i = 0; i < sk.edges.size(); ++i) { r.edges.data[2 * i] = sk.edges[i][0]; r.edges.data[2 * i + 1] = sk.edges[i][1]; }
+    r.faces.assign(r.allocator, 3 * sk.faces.size());
+    for (size_t i = 0; i < sk.faces.size(); ++i)
+        for (int k = 0; k < 3; ++k) r.faces.data[3 * i + size_t(k)] = sk.faces[i][size_t(k)];
+    ca_skeleton_stats& s = r.stats;
+    s.struct_size = sizeof s;
+    s.vertices = sk.balls.size();
+    s.edges = sk.edges.size();
+    s.faces = sk.faces.size();
+    s.components = c.topology.components;
+    s.isolated = c.topology.isolated;
+    s.betti1 = c.topology.betti1;
+    s.time_s = c.time_s;
+    s.method = static_cast<int32_t>(c.report.method);
+    s.fitted = c.fitted ? 1 : 0;
+    s.fit_time_s = c.fit.time_s;
+    s.fit_error_before = 100 * c.fit.error_before;
+    s.fit_error_after = 100 * c.fit.error_after;
+    s.fit_uncovered = c.fit.uncovered;
+    s.genus = c.report.genus;
+    s.thin_handles = c.report.thin_handles;
+}
+
+}  // namespace
 
 extern "C" {
 
@@ -21,63 +50,16 @@ ca_status ca_connect(ca_context* ctx, const ca_candidate_set* set, const ca_sele
                      const ca_connect_options* options, ca_skeleton** out) {
     if (out) *out = nullptr;
     return capi::guarded(ctx, [&]() -> Status {
-        Status st = check_pointers({{out, "out"}, {set, "set"}, {selection, "selection"}});
+        ca_connect_options o;
+        Status st = read_arguments({{out, "out"}, {set, "set"}, {selection, "selection"}}, options, o);
         if (!st.ok()) return st;
         if (selection->set != set)
-            return ca::fail(Code::invalid_argument, "the selection was made from another candidate set");
-        ca_connect_options o;
-        st = read_input(options, o);
+            return ca::fail(ca::Code::invalid_argument, "the selection was made from another candidate set");
+        ca::ConnectResult result;
+        st = ca::connect_step(set->core, selection->core, to_core(o, ctx->desc.threads), ctx->monitor(), result);
         if (!st.ok()) return st;
-        if (o.method != CA_CONNECT_POWER && o.method != CA_CONNECT_MEDIAL && o.method != CA_CONNECT_AUTO)
-            return ca::fail(Code::invalid_argument, "unknown connection method " + std::to_string(o.method));
-        const ca::Monitor monitor = ctx->monitor();  // one budget for connection and fit
-        const auto t0 = std::chrono::steady_clock::now();
-        const ca::ConnectOptions co = connect_options(o, set->core, ctx->desc.threads);
-        ca::Skeleton sk;
-        ca::ConnectReport report;
-        st = ca::connect_balls(set->core, selection->core, co, monitor, sk, &report);
-        if (!st.ok()) return st;
-        if (o.fit < 0 || o.fit > 2)
-            return ca::fail(Code::invalid_argument, "fit must be 0, 1 or 2, not " + std::to_string(o.fit));
-        if (o.fit_iterations < 0) return ca::fail(Code::invalid_argument, "fit_iterations must be >= 0");
-        ca::FitStats fs;
-        const std::optional<ca::FitOptions> fo = fit_options(o, set->core, ctx->desc.threads);
-        const bool fitted = fo.has_value();
-        if (fitted) {
-            st = ca::fit_skeleton(set->core, selection->core, *fo, monitor, sk, fs);
-            if (!st.ok()) return st;
-        }
-        const ca::TopologyStats topo = ca::topology(sk);
         capi::Pending<ca_skeleton> res(capi::make_result<ca_skeleton>(ctx));
-        ca_skeleton& r = *res.obj;
-        const ca::Normalization& n = set->core.surface.norm;
-        std::vector<Vec3> c(sk.balls.size());
-        for (size_t i = 0; i < c.size(); ++i) c[i] = sk.balls[i].center;
-        fill(r.centers, r.allocator, c, n);
-        r.radii.assign(r.allocator, c.size());
-        for (size_t i = 0; i < c.size(); ++i) r.radii.data[i] = sk.balls[i].radius * n.scale;
-        r.edges.assign(r.allocator, 2 * sk.edges.size());
-        for (size_t i = 0; i < sk.edges.size(); ++i) { r.edges.data[2 * i] = sk.edges[i][0]; r.edges.data[2 * i + 1] = sk.edges[i][1]; }
-        r.faces.assign(r.allocator, 3 * sk.faces.size());
-        for (size_t i = 0; i < sk.faces.size(); ++i)
-            for (int k = 0; k < 3; ++k) r.faces.data[3 * i + size_t(k)] = sk.faces[i][size_t(k)];
-        ca_skeleton_stats& s = r.stats;
-        s.struct_size = sizeof s;
-        s.vertices = sk.balls.size();
-        s.edges = sk.edges.size();
-        s.faces = sk.faces.size();
-        s.components = topo.components;
-        s.isolated = topo.isolated;
-        s.betti1 = topo.betti1;
-        s.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        s.method = static_cast<int32_t>(co.method);
-        s.fitted = fitted ? 1 : 0;
-        s.fit_time_s = fs.time_s;
-        s.fit_error_before = 100 * fs.error_before;
-        s.fit_error_after = 100 * fs.error_after;
-        s.fit_uncovered = fs.uncovered;
-        s.genus = report.genus;
-        s.thin_handles = report.thin_handles;
+        publish(*res.obj, result, set->core.surface.norm);
         *out = res.release();
         return Status::success();
     });

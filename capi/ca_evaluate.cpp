@@ -1,101 +1,69 @@
-// ca_evaluate.cpp: the evaluation at the C boundary: a skeleton view (from ca_skeleton_get_view
-// or the caller's own arrays) measured against the input surface.
+// ca_evaluate.cpp: the evaluation at the C boundary: the surface view and a skeleton view (from
+// ca_skeleton_get_view or the caller's own arrays) converted for the core's step
+// (lib/steps/evaluate_step.cpp), and its result written to the caller's struct.
 #include "conversions.h"
-#include "results.h"
-#include "struct_size.h"
 
-#include "evaluate.h"
-
-#include <algorithm>
-#include <chrono>
-#include <cmath>
-
-using ca::Code;
 using ca::Status;
 using ca::Vec3;
 using namespace capi;
 
+namespace {
+
+// The skeleton view's arrays in the caller's units (pointers and counts checked; values are
+// checked by the core's step).
+Status read_skeleton(const ca_skeleton_view* in, ca::Skeleton& out) {
+    ca_skeleton_view v;
+    Status st = read_input(in, v);
+    if (!st.ok()) return st;
+    if (v.vertex_count && !v.centers) return null_pointer("skeleton->centers");
+    if (v.vertex_count && !v.radii) return null_pointer("skeleton->radii");
+    if (v.edge_count && !v.edges) return null_pointer("skeleton->edges");
+    if (v.face_count && !v.faces) return null_pointer("skeleton->faces");
+    if (v.vertex_count > UINT32_MAX || v.edge_count > UINT32_MAX || v.face_count > UINT32_MAX)
+        return ca::fail(ca::Code::invalid_argument, "skeleton: more than 2^32 - 1 vertices, edges or faces");
+    out.balls.resize(v.vertex_count);
+    for (size_t i = 0; i < v.vertex_count; ++i)
+        out.balls[i] = {Vec3(v.centers[3 * i], v.centers[3 * i + 1], v.centers[3 * i + 2]), v.radii[i]};
+    out.edges.resize(v.edge_count);
+    for (size_t e = 0; e < v.edge_count; ++e) out.edges[e] = {v.edges[2 * e], v.edges[2 * e + 1]};
+    out.faces.resize(v.face_count);
+    for (size_t f = 0; f < v.face_count; ++f) out.faces[f] = {v.faces[3 * f], v.faces[3 * f + 1], v.faces[3 * f + 2]};
+    return Status::success();
+}
+
+}  // namespace
+
 extern "C" {
 
-ca_status ca_evaluate(ca_context* ctx, const ca_surface_view* surface, const ca_skeleton_view* skeleton_in,
+ca_status ca_evaluate(ca_context* ctx, const ca_surface_view* surface, const ca_skeleton_view* skeleton,
                       const ca_evaluate_options* options, ca_evaluation* result) {
     return capi::guarded(ctx, [&]() -> Status {
-        Status st = check_pointers({{surface, "surface"}, {skeleton_in, "skeleton"}, {result, "result"}});
+        ca_evaluate_options o;
+        Status st = read_arguments({{surface, "surface"}, {skeleton, "skeleton"}, {result, "result"}}, options, o);
         if (!st.ok()) return st;
         st = check_struct_size<ca_evaluation>(result->struct_size);
         if (!st.ok()) return st;
-        ca_skeleton_view view;
-        st = read_input(skeleton_in, view);
-        if (!st.ok()) return st;
-        const ca_skeleton_view* skeleton = &view;
-        ca_evaluate_options o;
-        st = read_input(options, o);
-        if (!st.ok()) return st;
-        if (o.surface_samples == 0 || o.envelope_samples == 0)
-            return ca::fail(Code::invalid_argument, "surface_samples and envelope_samples must be at least 1");
         const ca::Monitor monitor = ctx->monitor();  // one budget for the whole call
-        ca::Mesh raw;
-        std::vector<Vec3> normals;
-        st = read_surface(surface, false, raw, normals);
+        ca::SurfaceInput input;
+        st = read_surface(surface, false, input);
         if (!st.ok()) return st;
-        ca::Surface surf;
-        st = ca::prepare_surface(std::move(raw), {}, surf, false);
-        if (!st.ok()) return st;
-        if (monitor.stopped()) return monitor.stop_status("surface");
-
-        const size_t nv = skeleton->vertex_count;
-        if (nv == 0) return ca::fail(Code::degenerate_input, "the skeleton has no vertices");
-        if (!skeleton->centers) return null_pointer("skeleton->centers");
-        if (!skeleton->radii) return null_pointer("skeleton->radii");
-        if (skeleton->edge_count && !skeleton->edges) return null_pointer("skeleton->edges");
-        if (skeleton->face_count && !skeleton->faces) return null_pointer("skeleton->faces");
-        if (nv > UINT32_MAX || skeleton->edge_count > UINT32_MAX || skeleton->face_count > UINT32_MAX)
-            return ca::fail(Code::invalid_argument, "skeleton: more than 2^32 - 1 vertices, edges or faces");
         ca::Skeleton sk;
-        const ca::Normalization& n = surf.norm;
-        for (size_t i = 0; i < nv; ++i) {
-            const Vec3 c(skeleton->centers[3 * i], skeleton->centers[3 * i + 1], skeleton->centers[3 * i + 2]);
-            const double r = skeleton->radii[i];
-            if (!c.allFinite() || !(std::isfinite(r) && r >= 0))
-                return ca::fail(Code::invalid_input, "skeleton ball " + std::to_string(i) + " has a NaN, infinite or negative value");
-            sk.balls.push_back({n.to_internal(c), r / n.scale});
-        }
-        for (size_t e = 0; e < skeleton->edge_count; ++e) {
-            const uint32_t a = skeleton->edges[2 * e], b = skeleton->edges[2 * e + 1];
-            if (a >= nv || b >= nv)
-                return ca::fail(Code::invalid_input, "skeleton edge " + std::to_string(e) + " references vertex " +
-                                                         std::to_string(std::max(a, b)) + " of " + std::to_string(nv));
-            sk.edges.push_back({a, b});
-        }
-        for (size_t f = 0; f < skeleton->face_count; ++f) {
-            ca::Tri t{skeleton->faces[3 * f], skeleton->faces[3 * f + 1], skeleton->faces[3 * f + 2]};
-            for (uint32_t v : t)
-                if (v >= nv)
-                    return ca::fail(Code::invalid_input, "skeleton face " + std::to_string(f) + " references vertex " +
-                                                             std::to_string(v) + " of " + std::to_string(nv));
-            sk.faces.push_back(t);
-        }
-        ca::EvaluateOptions eo;
-        eo.surface_samples = o.surface_samples;
-        eo.envelope_samples = o.envelope_samples;
-        eo.seed = o.seed;
-        eo.threads = ctx->desc.threads;
-        const auto t0 = std::chrono::steady_clock::now();
-        ca::EvaluateResult er;
-        st = ca::evaluate(surf.mesh, sk, eo, monitor, er);
+        st = read_skeleton(skeleton, sk);
         if (!st.ok()) return st;
-        ca_evaluation out{};
-        out.struct_size = sizeof out;
-        out.hd_surface_to_recon = er.hd_surface_to_recon;
-        out.mean_surface_to_recon = er.mean_surface_to_recon;
-        out.hd_recon_to_surface = er.hd_recon_to_surface;
-        out.mean_recon_to_surface = er.mean_recon_to_surface;
-        out.hd_two_sided = er.hd_two_sided;
-        out.diagonal = er.diagonal * n.scale;
-        out.surface_samples_used = er.surface_samples_used;
-        out.envelope_samples_used = er.envelope_samples_used;
-        out.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        return write_output(out, result);
+        ca::EvaluateResult er;
+        st = ca::evaluate_step(std::move(input), sk, to_core(o, ctx->desc.threads), monitor, er);
+        if (!st.ok()) return st;
+        ca_evaluation e = zeroed<ca_evaluation>();
+        e.hd_surface_to_recon = er.hd_surface_to_recon;
+        e.mean_surface_to_recon = er.mean_surface_to_recon;
+        e.hd_recon_to_surface = er.hd_recon_to_surface;
+        e.mean_recon_to_surface = er.mean_recon_to_surface;
+        e.hd_two_sided = er.hd_two_sided;
+        e.diagonal = er.diagonal;
+        e.surface_samples_used = er.surface_samples_used;
+        e.envelope_samples_used = er.envelope_samples_used;
+        e.time_s = er.time_s;
+        return write_output(e, result);
     });
 }
 

@@ -49,6 +49,11 @@ ca::Monitor ca_context::monitor() const {
     ca::Monitor m;
     m.cancel_flag = &cancel;
     m.deadline = ca::Deadline::after(desc.time_limit_s);  // the budget of this call, from now
+    if (desc.log) {
+        ca_log_fn fn = desc.log;
+        void* user = desc.log_user;
+        m.log = [fn, user](int32_t level, const std::string& message) { fn(user, level, message.c_str()); };
+    }
     if (desc.progress) {
         using Clock = std::chrono::steady_clock;
         ca_progress_fn fn = desc.progress;

@@ -18,10 +18,8 @@ struct ca_context {
     std::atomic<int> cancel{0};
     std::string last_error;
 
-    void log(int32_t level, const std::string& msg) const {
-        if (desc.log) desc.log(desc.log_user, level, msg.c_str());
-    }
-    // Cancel flag plus the caller's progress callback, throttled to desc.progress_interval_s.
+    // Cancel flag, the caller's progress callback (throttled to desc.progress_interval_s) and log,
+    // and the budget of one call (desc.time_limit_s from now).
     ca::Monitor monitor() const;
 };
 

@@ -1,7 +1,6 @@
 // conversions.cpp: reading the caller's strided arrays and surface view, writing points back in
-// the caller's units.
+// the caller's units, and the option structs to and from the core's.
 #include "conversions.h"
-#include "struct_size.h"
 
 namespace capi {
 
@@ -38,19 +37,16 @@ Status read_points(const double* base, size_t count, size_t stride, const char* 
     return Status::success();
 }
 
-Status read_surface(const ca_surface_view* in, bool want_normals, ca::Mesh& raw, std::vector<Vec3>& normals,
-                    ca::PointNormals* trust) {
+Status read_surface(const ca_surface_view* in, bool want_normals, ca::SurfaceInput& out) {
     ca_surface_view surface;
     Status st = read_input(in, surface);
     if (!st.ok()) return st;
-    if (surface.point_normals < CA_POINT_NORMALS_TRUSTED || surface.point_normals > CA_POINT_NORMALS_ESTIMATE)
-        return ca::fail(Code::invalid_argument, "surface->point_normals is " + std::to_string(surface.point_normals) +
-                                                    "; expected CA_POINT_NORMALS_TRUSTED (0), UNORIENTED (1) or ESTIMATE (2)");
-    if (trust) *trust = static_cast<ca::PointNormals>(surface.point_normals);
+    out.point_normals = static_cast<ca::PointNormals>(surface.point_normals);
     if (surface.vertex_count > 0 && !surface.positions) return null_pointer("surface->positions");
     if (surface.triangle_count > 0 && !surface.triangles) return null_pointer("surface->triangles");
     if (surface.vertex_count > UINT32_MAX) return ca::fail(Code::invalid_argument, "more than 2^32 - 1 vertices");
     if (surface.triangle_count > UINT32_MAX) return ca::fail(Code::invalid_argument, "more than 2^32 - 1 triangles");
+    ca::Mesh& raw = out.mesh;
     st = read_points(surface.positions, surface.vertex_count, surface.position_stride, "surface->position_stride",
                      raw.vertices);
     if (!st.ok()) return st;
@@ -60,8 +56,10 @@ Status read_surface(const ca_surface_view* in, bool want_normals, ca::Mesh& raw,
     raw.triangles.clear();
     ca::reserve_large(raw.triangles, surface.triangle_count);
     for (size_t t = 0; t < surface.triangle_count; ++t) raw.triangles.push_back(read_element<uint32_t, 3>(surface.triangles, ts, t));
+    out.normals.clear();
     if (want_normals && surface.triangle_count == 0 && surface.normals)
-        return read_points(surface.normals, surface.vertex_count, surface.normal_stride, "surface->normal_stride", normals);
+        return read_points(surface.normals, surface.vertex_count, surface.normal_stride, "surface->normal_stride",
+                           out.normals);
     return Status::success();
 }
 
@@ -73,30 +71,129 @@ void fill(Array<double>& a, const Allocator& al, const std::vector<Vec3>& pts, c
     }
 }
 
-ca::ConnectOptions connect_options(const ca_connect_options& o, const ca::CandidateSet& set, int32_t threads) {
-    ca::ConnectOptions co;
-    // the medial route needs an inside test: a mesh's winding number or a clean point cloud's. On a
-    // noisy cloud the power route stays: the medial route's inner Voronoi balls follow the noise out
-    // of the shape (bench_pointcloud (d): h(recon->surface) up to 4.8x the clean cloud's)
-    const bool has_mesh = !set.surface.point_cloud && !set.surface.mesh.triangles.empty();
-    const bool has_inside = has_mesh || (set.cloud_winding != nullptr && !set.noisy_cloud);
-    if (o.method == CA_CONNECT_AUTO) co.method = has_inside ? ca::ConnectMethod::medial : ca::ConnectMethod::power;
-    else co.method = static_cast<ca::ConnectMethod>(o.method);
-    co.remove_outside = o.remove_outside != 0;
-    co.fill_holes = o.fill_holes != 0;
-    co.reconnect = o.reconnect != 0;
-    co.threads = threads;
-    return co;
+// The C ABI's enumeration values are the core's (the conversions below cast between them).
+static_assert(int32_t(ca::Generator::voronoi) == CA_CANDIDATES_VORONOI && int32_t(ca::Generator::random) == CA_CANDIDATES_RANDOM,
+              "generators");
+static_assert(int32_t(ca::Dilation::offset) == CA_DILATE_OFFSET && int32_t(ca::Dilation::scale) == CA_DILATE_SCALE,
+              "dilations");
+static_assert(int32_t(ca::Solver::exact) == CA_SOLVER_EXACT && int32_t(ca::Solver::greedy) == CA_SOLVER_GREEDY &&
+                  int32_t(ca::Solver::capp) == CA_SOLVER_CAPP,
+              "solvers");
+static_assert(int32_t(ca::Effort::fast) == CA_EFFORT_FAST && int32_t(ca::Effort::prove) == CA_EFFORT_PROVE, "efforts");
+static_assert(int32_t(ca::ConnectMethod::power) == CA_CONNECT_POWER && int32_t(ca::ConnectMethod::medial) == CA_CONNECT_MEDIAL &&
+                  int32_t(ca::ConnectMethod::automatic) == CA_CONNECT_AUTO,
+              "connection routes");
+static_assert(int32_t(ca::PointNormals::trusted) == CA_POINT_NORMALS_TRUSTED &&
+                  int32_t(ca::PointNormals::unoriented) == CA_POINT_NORMALS_UNORIENTED &&
+                  int32_t(ca::PointNormals::estimate) == CA_POINT_NORMALS_ESTIMATE,
+              "point normals");
+static_assert(int32_t(ca::NormalSource::none) == CA_NORMALS_NONE && int32_t(ca::NormalSource::given) == CA_NORMALS_GIVEN &&
+                  int32_t(ca::NormalSource::oriented) == CA_NORMALS_ORIENTED &&
+                  int32_t(ca::NormalSource::estimated) == CA_NORMALS_ESTIMATED,
+              "normal sources");
+
+// ---- options: C -> core ----
+
+ca::CandidateOptions to_core(const ca_candidate_options& o, int32_t threads) {
+    ca::CandidateOptions c;
+    c.generator = static_cast<ca::Generator>(o.generator);
+    c.cover_samples = o.cover_samples;
+    c.voronoi_samples = o.voronoi_samples;
+    c.random_candidates = o.random_candidates;
+    c.seed = o.seed;
+    c.connect_samples = o.connect_samples;
+    c.threads = threads;
+    return c;
 }
 
-std::optional<ca::FitOptions> fit_options(const ca_connect_options& o, const ca::CandidateSet& set, int32_t threads) {
-    const bool has_mesh = !set.surface.point_cloud && !set.surface.mesh.triangles.empty();
-    if (!(o.fit != 0 && has_mesh && o.fit_iterations > 0)) return std::nullopt;
-    ca::FitOptions fo;
-    fo.iterations = uint32_t(o.fit_iterations);
-    fo.thorough = o.fit == 2;
-    fo.threads = threads;
-    return fo;
+ca::SelectRequest to_core(const ca_select_options& o, int32_t threads) {
+    ca::SelectRequest r;
+    ca::SelectOptions& s = r.select;
+    s.dilation = static_cast<ca::Dilation>(o.dilation);
+    s.delta = o.delta;
+    s.scale = o.scale;
+    s.skip_uncoverable = o.skip_uncoverable != 0;
+    s.cover.solver = static_cast<ca::Solver>(o.solver);
+    s.cover.time_limit_s = o.time_limit_s;
+    s.cover.effort = static_cast<ca::Effort>(o.effort);
+    s.target_count = o.target_count;
+    s.target_tolerance = o.target_tolerance;
+    s.dc_threshold = o.divide_threshold;
+    s.threads = threads;
+    r.target_error = o.target_error;
+    r.probe_fit = static_cast<ca::FitMode>(o.probe_fit);
+    return r;
+}
+
+ca::ConnectRequest to_core(const ca_connect_options& o, int32_t threads) {
+    ca::ConnectRequest r;
+    r.connect.method = static_cast<ca::ConnectMethod>(o.method);
+    r.connect.remove_outside = o.remove_outside != 0;
+    r.connect.fill_holes = o.fill_holes != 0;
+    r.connect.reconnect = o.reconnect != 0;
+    r.connect.threads = threads;
+    r.fit = static_cast<ca::FitMode>(o.fit);
+    r.fit_iterations = o.fit_iterations;
+    return r;
+}
+
+ca::EvaluateOptions to_core(const ca_evaluate_options& o, int32_t threads) {
+    ca::EvaluateOptions e;
+    e.surface_samples = o.surface_samples;
+    e.envelope_samples = o.envelope_samples;
+    e.seed = o.seed;
+    e.threads = threads;
+    return e;
+}
+
+// ---- options: core -> C (the defaults) ----
+
+ca_candidate_options to_c(const ca::CandidateOptions& c) {
+    ca_candidate_options o = zeroed<ca_candidate_options>();
+    o.generator = static_cast<int32_t>(c.generator);
+    o.cover_samples = c.cover_samples;
+    o.voronoi_samples = c.voronoi_samples;
+    o.random_candidates = c.random_candidates;
+    o.seed = c.seed;
+    o.connect_samples = c.connect_samples;
+    return o;
+}
+
+ca_select_options to_c(const ca::SelectRequest& r) {
+    const ca::SelectOptions& s = r.select;
+    ca_select_options o = zeroed<ca_select_options>();
+    o.dilation = static_cast<int32_t>(s.dilation);
+    o.delta = s.delta;
+    o.scale = s.scale;
+    o.solver = static_cast<int32_t>(s.cover.solver);
+    o.time_limit_s = s.cover.time_limit_s;
+    o.skip_uncoverable = s.skip_uncoverable ? 1 : 0;
+    o.target_count = s.target_count;
+    o.target_tolerance = s.target_tolerance;
+    o.divide_threshold = s.dc_threshold;
+    o.effort = static_cast<int32_t>(s.cover.effort);
+    o.target_error = r.target_error;
+    o.probe_fit = static_cast<int32_t>(r.probe_fit);
+    return o;
+}
+
+ca_connect_options to_c(const ca::ConnectRequest& r) {
+    ca_connect_options o = zeroed<ca_connect_options>();
+    o.method = static_cast<int32_t>(r.connect.method);
+    o.remove_outside = r.connect.remove_outside ? 1 : 0;
+    o.fill_holes = r.connect.fill_holes ? 1 : 0;
+    o.reconnect = r.connect.reconnect ? 1 : 0;
+    o.fit = static_cast<int32_t>(r.fit);
+    o.fit_iterations = r.fit_iterations;
+    return o;
+}
+
+ca_evaluate_options to_c(const ca::EvaluateOptions& e) {
+    ca_evaluate_options o = zeroed<ca_evaluate_options>();
+    o.surface_samples = e.surface_samples;
+    o.envelope_samples = e.envelope_samples;
+    o.seed = e.seed;
+    return o;
 }
 
 }  // namespace capi

@@ -1,15 +1,13 @@
-// conversions.h: checks and conversions between the caller's C views (strided arrays, the caller's
-// units) and the core's types (Vec3 arrays in unit-cube units).
+// conversions.h: the C boundary's conversions between the caller's C structs and views (strided
+// arrays, the caller's units) and the core's requests and results (lib/steps/steps.h). Only what
+// the C types need is checked here (struct sizes, NULL pointers, strides, counts that could not be
+// read); the values are checked by the core's steps.
 #pragma once
 
 #include "context.h"
 #include "struct_size.h"
 
-#include "connect.h"
-#include "fit.h"
-#include "surface.h"
-
-#include <optional>
+#include "steps.h"
 
 #include <array>
 #include <cstring>
@@ -51,21 +49,23 @@ std::array<T, N> read_element(const T* base, size_t stride, size_t i) {
 // x y z per item from a strided array (values are not checked).
 ca::Status read_points(const double* base, size_t count, size_t stride, const char* name, std::vector<ca::Vec3>& out);
 
-// A surface view into raw arrays (struct size, pointers, strides and point_normals checked; values
-// are checked by prepare_surface). Normals are read for point clouds when want_normals; `trust`
-// (if set) receives point_normals.
-ca::Status read_surface(const ca_surface_view* surface, bool want_normals, ca::Mesh& raw, std::vector<ca::Vec3>& normals,
-                        ca::PointNormals* trust = nullptr);
+// A surface view as the core's input, in the caller's units (struct size, pointers, counts and
+// strides checked). Normals are read for point clouds when want_normals.
+ca::Status read_surface(const ca_surface_view* surface, bool want_normals, ca::SurfaceInput& out);
 
 // Points in the caller's units, x y z per point, in memory from the result's allocator.
 void fill(Array<double>& a, const Allocator& al, const std::vector<ca::Vec3>& pts, const ca::Normalization& n);
 
-// The core's connect options from the caller's (method already checked): AUTO is the medial
-// route for a mesh, the power route for point clouds and caller arrays.
-ca::ConnectOptions connect_options(const ca_connect_options& o, const ca::CandidateSet& set, int32_t threads);
-
-// The core's fit options when ca_connect with `o` fits (fit on, fit_iterations > 0, a triangle
-// mesh: the fit needs one), else none. fit_iterations must already be checked (>= 0).
-std::optional<ca::FitOptions> fit_options(const ca_connect_options& o, const ca::CandidateSet& set, int32_t threads);
+// The C option structs as the core's options and requests (threads: the context's), and the core's
+// defaults as the C structs (defaults.cpp: the C ABI's ca_*_defaults). The select options' masks
+// are read by ca_select (they need the candidate set's sizes).
+ca::CandidateOptions to_core(const ca_candidate_options& o, int32_t threads);
+ca::SelectRequest to_core(const ca_select_options& o, int32_t threads);
+ca::ConnectRequest to_core(const ca_connect_options& o, int32_t threads);
+ca::EvaluateOptions to_core(const ca_evaluate_options& o, int32_t threads);
+ca_candidate_options to_c(const ca::CandidateOptions& o);
+ca_select_options to_c(const ca::SelectRequest& o);
+ca_connect_options to_c(const ca::ConnectRequest& o);
+ca_evaluate_options to_c(const ca::EvaluateOptions& o);
 
 }  // namespace capi

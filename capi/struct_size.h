@@ -171,7 +171,8 @@ ca::Status check_struct_size(uint32_t size) {
     return ca::fail(ca::Code::struct_size, struct_size_message(Published<T>::name, size, Published<T>::sizes, n));
 }
 
-// The defaults of T (full current size); defined in defaults.cpp, the one place they live.
+// The defaults of T (full current size); defined in defaults.cpp, converted from the core's option
+// structs (the one place they live).
 template <class T> T defaults();
 template <> ca_context_desc defaults<ca_context_desc>();
 template <> ca_surface_view defaults<ca_surface_view>();
@@ -180,6 +181,15 @@ template <> ca_select_options defaults<ca_select_options>();
 template <> ca_connect_options defaults<ca_connect_options>();
 template <> ca_skeleton_view defaults<ca_skeleton_view>();
 template <> ca_evaluate_options defaults<ca_evaluate_options>();
+
+// A struct of all zero bytes but its struct_size (sizeof T): the start of every default and result.
+template <class T>
+T zeroed() {
+    T v;
+    std::memset(&v, 0, sizeof v);
+    v.struct_size = sizeof v;
+    return v;
+}
 
 // An input struct: NULL means all defaults; otherwise the caller's fields up to its struct_size,
 // the defaults after.

@@ -29,10 +29,20 @@ std::vector<uint32_t> ball_parts(const CandidateSet& set, const MeshTopology& to
 
 using namespace detail;
 
-Status connect_balls(const CandidateSet& set, const Selection& sel, const ConnectOptions& opt,
+ConnectMethod resolve_method(const CandidateSet& set, ConnectMethod method) {
+    if (method != ConnectMethod::automatic) return method;
+    const bool mesh = !set.surface.point_cloud && !set.surface.mesh.triangles.empty();
+    const bool clean_cloud = set.cloud_winding != nullptr && !set.noisy_cloud;
+    return mesh || clean_cloud ? ConnectMethod::medial : ConnectMethod::power;
+}
+
+Status connect_balls(const CandidateSet& set, const Selection& sel, const ConnectOptions& options,
                      const Monitor& monitor, Skeleton& out, ConnectReport* report) {
     out = Skeleton{};
     if (report) *report = ConnectReport{};
+    ConnectOptions opt = options;
+    opt.method = resolve_method(set, options.method);
+    if (report) report->method = opt.method;
     if (sel.indices.size() != sel.dilated_radii.size()) return fail(Code::internal, "inconsistent selection");
     for (uint32_t i : sel.indices)
         if (i >= set.balls.size()) return fail(Code::invalid_argument, "the selection does not belong to this candidate set");

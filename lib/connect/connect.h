@@ -74,10 +74,11 @@
 
 namespace ca {
 
-enum class ConnectMethod : int32_t { power = 0, medial = 1 };
+// `automatic` (the default) is resolve_method's choice for the candidate set.
+enum class ConnectMethod : int32_t { power = 0, medial = 1, automatic = 2 };
 
 struct ConnectOptions {
-    ConnectMethod method = ConnectMethod::power;
+    ConnectMethod method = ConnectMethod::automatic;
     bool remove_outside = true;   // drop edges/triangles that leave the shape
     bool fill_holes = true;       // fill 3- and 4-edge holes whose triangles stay inside
     bool reconnect = true;        // join components by the shortest inside edges
@@ -85,11 +86,18 @@ struct ConnectOptions {
     int32_t threads = 0;          // 0 = all cores
 };
 
-// What the connection found out about the shape's topology.
+// What the connection did and found out about the shape's topology.
 struct ConnectReport {
+    ConnectMethod method = ConnectMethod::power;  // the route taken (never automatic)
     long genus = -1;           // of the input mesh (mesh_topology.h); -1 unknown or a point cloud
     size_t thin_handles = 0;   // max(0, genus - b1): handles with no loop in the skeleton
 };
+
+// The route `method` stands for on `set`: itself, or for `automatic` the medial route where the set
+// has an inside test it can trust (a triangle mesh's winding number, or a clean point cloud's) and
+// the power route otherwise (noisy clouds, whose inner Voronoi balls follow the noise out of the
+// shape, and sets from caller arrays, which have no inside test).
+ConnectMethod resolve_method(const CandidateSet& set, ConnectMethod method);
 
 // Skeleton in internal units; its balls are the selected balls (undilated radii), in selection order.
 // The medial route needs a mesh or a point cloud's winding number: a set from caller arrays gives

@@ -57,16 +57,22 @@ struct Status {
 };
 inline Status fail(Code c, std::string msg) { return Status{c, std::move(msg)}; }
 
-// Progress, cancellation and the call's time budget. `report` is called on the caller's thread
-// only; it returns false when the work must stop (the caller's progress callback asked for it,
-// another thread requested a cancel, or the deadline passed). Steps check it between chunks of
-// work; loops that run without reporting call `stopped()` every `kCheckEvery` items, which costs
-// an atomic load and a clock read. A step that stopped returns `stop_status(stage)`.
+// Progress, cancellation, the call's time budget and the caller's log. `report` is called on the
+// caller's thread only; it returns false when the work must stop (the caller's progress callback
+// asked for it, another thread requested a cancel, or the deadline passed). Steps check it between
+// chunks of work; loops that run without reporting call `stopped()` every `kCheckEvery` items,
+// which costs an atomic load and a clock read. A step that stopped returns `stop_status(stage)`.
+// `note` hands a message to the caller's log (the library never prints), on the caller's thread.
 struct Monitor {
     static constexpr size_t kCheckEvery = 4096;
     std::function<bool(const char* stage, double fraction)> progress;  // may be empty
     const std::atomic<int>* cancel_flag = nullptr;                        // may be null
     Deadline deadline;                                                    // the whole call's budget
+    // level 0 debug, 1 info, 2 warning; may be empty
+    std::function<void(int32_t level, const std::string& message)> log;
+    void note(int32_t level, const std::string& message) const {
+        if (log) log(level, message);
+    }
     bool report(const char* stage, double fraction) const {
         if (stopped()) return false;
         if (progress) return progress(stage, fraction);

@@ -165,7 +165,10 @@ Status evaluate_impl(const Mesh& surface, const Skeleton& skeleton_in, const Eva
 
 Status evaluate(const Mesh& surface, const Skeleton& skeleton, const EvaluateOptions& opt,
                 const Monitor& monitor, EvaluateResult& out) {
-    return evaluate_impl(surface, skeleton, opt, monitor, out);
+    const auto t0 = Clock::now();
+    const Status st = evaluate_impl(surface, skeleton, opt, monitor, out);
+    out.time_s = seconds_since(t0);
+    return st;
 }
 
 }  // namespace ca

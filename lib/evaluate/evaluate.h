@@ -40,6 +40,7 @@ struct EvaluateResult {
     double hd_two_sided = 0;
     double diagonal = 0;                 // the input bbox diagonal (input units)
     size_t surface_samples_used = 0, envelope_samples_used = 0;
+    double time_s = 0;                   // of evaluate()
 };
 
 // Mesh input (triangles non-empty) or point cloud (triangles empty: distance to nearest point).

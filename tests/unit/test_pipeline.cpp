@@ -31,7 +31,9 @@ Run run(ca::Mesh mesh, ca::CandidateOptions copt = {}, ca::SelectOptions sopt = 
     st = ca::select_balls(r.set, sopt, monitor, r.sel);
     REQUIRE_MESSAGE(st.ok(), st.message);
     if (sopt.cover.solver == ca::Solver::exact) REQUIRE(r.sel.cover.proven_optimal == 1);
-    st = ca::connect_balls(r.set, r.sel, {}, monitor, r.skeleton);
+    ca::ConnectOptions power;   // the route these checks measure (the medial one: connect/test_connect.cpp)
+    power.method = ca::ConnectMethod::power;
+    st = ca::connect_balls(r.set, r.sel, power, monitor, r.skeleton);
     REQUIRE_MESSAGE(st.ok(), st.message);
     for (ca::Ball& b : r.skeleton.balls) {
         b.center = r.set.surface.norm.to_user(b.center);

@@ -20,7 +20,6 @@
 #include "support/clouds.h"
 #include "support/shapes.h"
 #include "winding.h"
-#include "../../capi/conversions.h"
 
 #include <cmath>
 
@@ -32,9 +31,9 @@ struct Run {
     ca::Skeleton skeleton;
 };
 
-// Runs the three steps on a cloud; balls come back in the cloud's own units.
+// Runs the three steps on a cloud, connected on `route`; balls come back in the cloud's own units.
 Run run(shapes::Cloud cloud, ca::CandidateOptions copt = {}, ca::PointNormals trust = ca::PointNormals::trusted,
-        ca::ConnectOptions kopt = {}) {
+        ca::ConnectMethod route = ca::ConnectMethod::power) {
     Run r;
     ca::SelectOptions sopt;
     sopt.cover.time_limit_s = 0;
@@ -46,6 +45,8 @@ Run run(shapes::Cloud cloud, ca::CandidateOptions copt = {}, ca::PointNormals tr
     REQUIRE_MESSAGE(st.ok(), st.message);
     st = ca::select_balls(r.set, sopt, monitor, r.sel);
     REQUIRE_MESSAGE(st.ok(), st.message);
+    ca::ConnectOptions kopt;
+    kopt.method = route;
     st = ca::connect_balls(r.set, r.sel, kopt, monitor, r.skeleton);
     REQUIRE_MESSAGE(st.ok(), st.message);
     for (ca::Ball& b : r.skeleton.balls) {
@@ -115,10 +116,9 @@ TEST_CASE("point cloud: the envelope rule measures the distance to the cloud's p
 
 TEST_CASE("point cloud: the medial route connects a sampled torus into a ring and a dumbbell into one component") {
     const double R = 1.0, tube = 0.3;
-    ca::ConnectOptions kopt;
-    kopt.method = ca::ConnectMethod::medial;
-    check_ring(run(shapes::sample_cloud(shapes::torus(R, tube, 128, 48), 8000), {}, ca::PointNormals::trusted, kopt), R, tube);
-    Run r = run(dumbbell_cloud(8000), {}, ca::PointNormals::trusted, kopt);
+    const ca::ConnectMethod medial = ca::ConnectMethod::medial;
+    check_ring(run(shapes::sample_cloud(shapes::torus(R, tube, 128, 48), 8000), {}, ca::PointNormals::trusted, medial), R, tube);
+    Run r = run(dumbbell_cloud(8000), {}, ca::PointNormals::trusted, medial);
     CHECK(ca::topology(r.skeleton).components == 1);
 }
 
@@ -298,18 +298,21 @@ TEST_CASE("point cloud: a noisy box is covered at the defaults and no ball leave
     CHECK(out <= 3 * sigma);
 }
 
-// CA_CONNECT_AUTO joins a clean cloud's balls along its inner medial axis (the cloud's winding
-// number as the inside test) and a noisy cloud's by the power diagram: inner Voronoi balls follow
-// the noise out of the shape.
+// The automatic route (CA_CONNECT_AUTO) joins a clean cloud's balls along its inner medial axis
+// (the cloud's winding number as the inside test) and a noisy cloud's by the power diagram: inner
+// Voronoi balls follow the noise out of the shape.
 TEST_CASE("point cloud: the automatic route is medial on a clean cloud and power on a noisy one") {
     const shapes::Cloud clean = shapes::sample_cloud(shapes::box(1.0, 0.5, 0.25), 5000, 3);
     const Run c = run(clean), n = run(shapes::noisy_cloud(clean, 0.005, 0.0));
     CHECK(!c.set.noisy_cloud);
     CHECK(n.set.noisy_cloud);
-    ca_connect_options o;
-    ca_connect_options_init(&o);
-    CHECK(capi::connect_options(o, c.set, 1).method == ca::ConnectMethod::medial);
-    CHECK(capi::connect_options(o, n.set, 1).method == ca::ConnectMethod::power);
+    CHECK(ca::resolve_method(c.set, ca::ConnectMethod::automatic) == ca::ConnectMethod::medial);
+    CHECK(ca::resolve_method(n.set, ca::ConnectMethod::automatic) == ca::ConnectMethod::power);
+    // the default options connect on the automatic route and report the route taken
+    ca::ConnectReport report;
+    ca::Skeleton sk;
+    REQUIRE(ca::connect_balls(n.set, n.sel, ca::ConnectOptions{}, ca::Monitor{}, sk, &report).ok());
+    CHECK(report.method == ca::ConnectMethod::power);
 }
 
 // Dense noisy clouds count as noisy: with 40 000 points on a sphere the 16 nearest neighbours lie

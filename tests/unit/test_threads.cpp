@@ -59,6 +59,7 @@ Outcome pipeline(int threads) {
     ca::Selection sel;
     REQUIRE(ca::select_balls(set, so, ca::Monitor{}, sel).ok());
     ca::ConnectOptions cop;
+    cop.method = ca::ConnectMethod::power;
     cop.threads = threads;
     ca::Skeleton sk;
     REQUIRE(ca::connect_balls(set, sel, cop, ca::Monitor{}, sk).ok());

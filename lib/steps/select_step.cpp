@@ -1,0 +1,97 @@
+// select_step.cpp: step 2 as one request: the request checked, then its strategy run: the
+// target_error search, the lowest HD within target_count, or the plain cover (select_balls).
+#include "steps.h"
+
+#include "target_count_hd.h"
+#include "target_error.h"
+
+#include <cmath>
+
+namespace ca {
+
+namespace {
+
+Status check_request(const CandidateSet& set, const SelectRequest& r) {
+    const SelectOptions& o = r.select;
+    if (o.dilation != Dilation::offset && o.dilation != Dilation::scale)
+        return fail(Code::invalid_argument, "unknown dilation " + std::to_string(int32_t(o.dilation)));
+    const int32_t solver = int32_t(o.cover.solver);
+    if (solver < int32_t(Solver::exact) || solver > int32_t(Solver::capp))
+        return fail(Code::invalid_argument, "unknown solver " + std::to_string(solver));
+    if (std::isnan(o.cover.time_limit_s)) return fail(Code::invalid_argument, "time_limit_s is NaN");
+    if (o.cover.effort != Effort::fast && o.cover.effort != Effort::prove)
+        return fail(Code::invalid_argument, "unknown effort " + std::to_string(int32_t(o.cover.effort)));
+    if (o.target_count && !(std::isfinite(o.target_tolerance) && o.target_tolerance > 0))
+        return fail(Code::invalid_argument, "target_tolerance must be a finite number > 0");
+    if (!(std::isfinite(r.target_error) && r.target_error >= 0))
+        return fail(Code::invalid_argument, "target_error must be a finite number >= 0 (percent of the bbox diagonal; 0 = off)");
+    if (r.probe_fit != FitMode::off && r.probe_fit != FitMode::once)
+        return fail(Code::invalid_argument, "probe_fit must be 0 or 1, not " + std::to_string(int32_t(r.probe_fit)));
+    // a mask is one flag per sample or ball, or none
+    const auto count = [](const char* name, size_t given, size_t want, const char* what) {
+        return fail(Code::invalid_input, std::string(name) + " has " + std::to_string(given) + " entries; the candidate set has " +
+                                             std::to_string(want) + " " + what);
+    };
+    const size_t ns = set.cover_samples.size(), nb = set.balls.size();
+    const CoverOptions& c = o.cover;
+    if (!c.ignorable_samples.empty() && c.ignorable_samples.size() != ns)
+        return count("ignorable_samples", c.ignorable_samples.size(), ns, "samples");
+    if (!c.forced_in.empty() && c.forced_in.size() != nb) return count("forced_in", c.forced_in.size(), nb, "balls");
+    if (!c.forced_out.empty() && c.forced_out.size() != nb) return count("forced_out", c.forced_out.size(), nb, "balls");
+    return Status::success();
+}
+
+}  // namespace
+
+Status select_step(const CandidateSet& set, const SelectRequest& request, const Monitor& monitor, SelectResult& out) {
+    out = SelectResult{};
+    Status st = check_request(set, request);
+    if (!st.ok()) return st;
+    const SelectOptions& so = request.select;
+    const bool target_error = request.target_error > 0;  // the rest is checked by select_target_error
+    // target_count with the offset dilation on a set with a surface: the lowest HD within K balls
+    // (the scale dilation and caller arrays keep the plain smallest dilation)
+    const bool lowest_hd =
+        !target_error && so.target_count > 0 && so.dilation == Dilation::offset && !set.surface.mesh.vertices.empty();
+    // the searches judge each probe as connect_step (default request, fit = probe_fit) and
+    // evaluate_step (default options) would
+    ConnectRequest probe;
+    probe.fit = request.probe_fit;
+    probe.connect.threads = so.threads;
+    EvaluateOptions evaluation;
+    evaluation.threads = so.threads;
+    if (target_error) {
+        TargetErrorOptions te;
+        te.target_error = request.target_error;
+        te.connect = probe.connect;
+        te.fit = fit_options(probe, set);
+        te.evaluate = evaluation;
+        TargetErrorResult ter;
+        st = select_target_error(set, so, te, monitor, ter);
+        if (!st.ok()) return st;
+        out.selection = std::move(ter.selection);
+        out.hd_reached = ter.evaluation.hd_two_sided;
+        if (!ter.reached)
+            monitor.note(2, "target_error " + std::to_string(request.target_error) + " % not reached: the lowest HD found is " +
+                                std::to_string(out.hd_reached) + " %");
+    } else if (lowest_hd) {
+        TargetCountHdOptions tc;
+        tc.connect = probe.connect;
+        tc.fit = fit_options(probe, set);
+        tc.evaluate = evaluation;
+        TargetCountHdResult tcr;
+        st = select_target_count_hd(set, so, tc, monitor, tcr);
+        if (!st.ok()) return st;
+        out.selection = std::move(tcr.selection);
+        out.hd_reached = tcr.evaluation.hd_two_sided;
+    } else {
+        st = select_balls(set, so, monitor, out.selection);
+        if (!st.ok()) return st;
+    }
+    if (!out.selection.cover.uncovered.empty())
+        monitor.note(2, std::to_string(out.selection.cover.uncovered.size()) +
+                            " samples are covered by no ball and were skipped");
+    return Status::success();
+}
+
+}  // namespace ca
