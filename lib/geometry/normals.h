@@ -37,7 +37,7 @@ double sign_disagreement(const std::vector<Vec3>& pts, const std::vector<Vec3>& 
                          int threads = 1);
 // Above this sign_disagreement normals given as oriented are not trusted (re-oriented), and
 // oriented or estimated normals are refused: clean sampled clouds stay far below it, clouds with
-// random per-point signs far above (docs/pointclouds.md has the measurements).
+// random per-point signs far above (bench_normals in docs/benchmarks.md).
 constexpr double kMaxSignDisagreement = 0.1;
 // Re-oriented trusted normals replace the caller's only when their disagreement is below this
 // fraction of the given one (random signs: about 0.5 before, near 0 after).

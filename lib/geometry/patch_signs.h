@@ -25,7 +25,7 @@ size_t vote_patch_signs(const std::vector<Vec3>& pts, std::vector<Vec3>& normals
 // moves it little.
 double winding_residual(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, int threads = 1);
 // Below this residual, halfway between consistent (0) and cancelling (1/4) signs, normals are
-// consistent by the winding number (docs/pointclouds.md has the measurements).
+// consistent by the winding number (bench_normals in docs/benchmarks.md).
 constexpr double kMaxWindingResidual = 0.125;
 
 }  // namespace ca
