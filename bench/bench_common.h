@@ -128,6 +128,7 @@ inline ca_surface_view view_of(const std::vector<double>& xyz, const std::vector
     v.triangles = tri.empty() ? nullptr : tri.data();
     v.triangle_count = tri.size() / 3;
     v.normals = nrm.empty() ? nullptr : nrm.data();
+    v.normal_count = nrm.size() / 3;
     return v;
 }
 
@@ -140,6 +141,7 @@ inline ca_surface_view surface_view(const caio::MeshData& mesh) {
     v.triangles = mesh.triangles.data();
     v.triangle_count = mesh.triangles.size() / 3;
     v.normals = mesh.normals.empty() ? nullptr : mesh.normals.data();
+    v.normal_count = mesh.normals.size() / 3;
     return v;
 }
 

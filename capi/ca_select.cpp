@@ -64,10 +64,27 @@ ca_status ca_select(ca_context* ctx, const ca_candidate_set* set, const ca_selec
         if (!st.ok()) return st;
         ca::SelectRequest request = to_core(o, ctx->desc.threads);
         ca::CoverOptions& cover = request.select.cover;
+        // a caller of ABI 1 or 2 has no counts: its masks have one entry per sample or ball
+        const bool counts =
+            options && has_field(options->struct_size, offsetof(ca_select_options, ignorable_samples_count));
         const size_t ns = set->core.cover_samples.size(), nb = set->core.balls.size();
-        if (o.ignorable_samples) cover.ignorable_samples.assign(o.ignorable_samples, o.ignorable_samples + ns);
-        if (o.forced_in) cover.forced_in.assign(o.forced_in, o.forced_in + nb);
-        if (o.forced_out) cover.forced_out.assign(o.forced_out, o.forced_out + nb);
+        const struct Mask {
+            const uint8_t* array;
+            size_t count, implied;
+            const char *name, *count_name;
+            std::vector<uint8_t>& out;
+        } masks[] = {
+            {o.ignorable_samples, o.ignorable_samples_count, ns, "ignorable_samples", "ignorable_samples_count",
+             cover.ignorable_samples},
+            {o.forced_in, o.forced_in_count, nb, "forced_in", "forced_in_count", cover.forced_in},
+            {o.forced_out, o.forced_out_count, nb, "forced_out", "forced_out_count", cover.forced_out},
+        };
+        for (const Mask& m : masks) {
+            size_t n;
+            st = array_count(m.array, m.count, counts, m.implied, m.name, m.count_name, n);
+            if (!st.ok()) return st;
+            m.out.assign(m.array, m.array + n);
+        }
         capi::Pending<ca_selection> res(capi::make_result<ca_selection>(ctx));
         ca_selection& r = *res.obj;
         retain_set(set);

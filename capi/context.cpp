@@ -33,12 +33,12 @@ ca_status record_exception(ca_context* ctx) noexcept {
     }
 }
 
-std::string struct_size_message(const char* name, uint32_t size, const uint32_t* sizes, size_t count) {
+std::string struct_size_message(const char* name, uint32_t size, const PublishedSize* sizes, size_t count) {
     std::string m = std::string(name) + ".struct_size is " + std::to_string(size) + "; this library (ABI " +
                     std::to_string(CA_ABI_VERSION) + ") accepts ";
     for (size_t i = 0; i < count; ++i) {
         if (i) m += i + 1 == count ? " or " : ", ";
-        m += std::to_string(sizes[i]);
+        m += std::to_string(sizes[i].size) + " (ABI " + std::to_string(sizes[i].abi) + ")";
     }
     return m + " (fill it with " + name + "_init, or set sizeof of a published layout)";
 }

@@ -24,6 +24,25 @@ Status check_stride(size_t stride, size_t min, const char* name, size_t& out) {
     return Status::success();
 }
 
+Status array_count(const void* array, size_t count, bool has_count, size_t implied, const char* array_name,
+                   const char* count_name, size_t& out) {
+    out = 0;
+    if (!array) {
+        if (has_count && count > 0)
+            return null_pointer((std::string(array_name) + " (" + count_name + " " + std::to_string(count) + ")").c_str());
+        return Status::success();
+    }
+    if (!has_count) {
+        out = implied;
+        return Status::success();
+    }
+    if (count == 0)
+        return ca::fail(Code::invalid_input, std::string(array_name) + " is set but " + count_name +
+                                                 " is 0; set it to the array's entries (ABI 3)");
+    out = count;
+    return Status::success();
+}
+
 Status read_points(const double* base, size_t count, size_t stride, const char* name, std::vector<Vec3>& out) {
     size_t s;
     Status st = check_stride(stride, 3 * sizeof(double), name, s);
@@ -57,10 +76,13 @@ Status read_surface(const ca_surface_view* in, bool want_normals, ca::SurfaceInp
     ca::reserve_large(raw.triangles, surface.triangle_count);
     for (size_t t = 0; t < surface.triangle_count; ++t) raw.triangles.push_back(read_element<uint32_t, 3>(surface.triangles, ts, t));
     out.normals.clear();
-    if (want_normals && surface.triangle_count == 0 && surface.normals)
-        return read_points(surface.normals, surface.vertex_count, surface.normal_stride, "surface->normal_stride",
-                           out.normals);
-    return Status::success();
+    if (!want_normals || surface.triangle_count > 0) return Status::success();  // normals: point clouds only
+    size_t normals;
+    st = array_count(surface.normals, surface.normal_count,
+                     has_field(in->struct_size, offsetof(ca_surface_view, normal_count)), surface.vertex_count,
+                     "surface->normals", "surface->normal_count", normals);
+    if (!st.ok() || normals == 0) return st;
+    return read_points(surface.normals, normals, surface.normal_stride, "surface->normal_stride", out.normals);
 }
 
 void fill(Array<double>& a, const Allocator& al, const std::vector<Vec3>& pts, const ca::Normalization& n) {

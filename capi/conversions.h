@@ -46,6 +46,13 @@ std::array<T, N> read_element(const T* base, size_t stride, size_t i) {
     return v;
 }
 
+// The entries of a borrowed array that has a count field (ABI 3): `count` as given, or, from a
+// caller whose struct predates the field (has_count false), `implied`, the entries that caller's
+// ABI defined. A set array with a count of 0 is refused (the count was not filled in), and so is a
+// count without its array. Whether the count matches what the step needs is the step's check.
+ca::Status array_count(const void* array, size_t count, bool has_count, size_t implied, const char* array_name,
+                       const char* count_name, size_t& out);
+
 // x y z per item from a strided array (values are not checked).
 ca::Status read_points(const double* base, size_t count, size_t stride, const char* name, std::vector<ca::Vec3>& out);
 

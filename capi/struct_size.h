@@ -96,29 +96,48 @@ struct ca_select_options {
 };
 }  // namespace abi2_first
 
-// Published sizes of each struct, first (ABI 1) to current. A new ABI version appends its size;
-// appended fields must start at or after the previous size (checked below), so a caller's
+// ---- as last published in ABI 2: ca_surface_view and ca_select_options before their ABI 3 counts
+// were appended ----
+namespace abi2 {
+struct ca_surface_view {
+    abi1::ca_surface_view abi1_fields;
+    int32_t point_normals;
+};
+struct ca_select_options {
+    abi2_first::ca_select_options abi2_first_fields;
+    int32_t probe_fit;
+};
+}  // namespace abi2
+
+// Published sizes of each struct, first to current, each with the ABI version that published it
+// (a struct that did not change in a later version keeps its size). A new ABI version appends its
+// size; appended fields must start at or after the previous size (checked below), so a caller's
 // struct_size tells exactly which fields it has.
+struct PublishedSize {
+    uint32_t abi;   // CA_ABI_VERSION that published it
+    uint32_t size;  // sizeof the struct's layout in that version
+};
 template <class T> struct Published;
 #define CA_PUBLISHED(T, ...)                                          \
     template <> struct Published<T> {                                 \
         static constexpr const char* name = #T;                       \
-        static constexpr uint32_t sizes[] = {__VA_ARGS__};            \
+        static constexpr PublishedSize sizes[] = {__VA_ARGS__};       \
     };
-CA_PUBLISHED(ca_context_desc, sizeof(abi1::ca_context_desc), sizeof(abi2_first::ca_context_desc),
-             sizeof(ca_context_desc))
-CA_PUBLISHED(ca_surface_view, sizeof(abi1::ca_surface_view), sizeof(ca_surface_view))
-CA_PUBLISHED(ca_candidate_options, sizeof(ca_candidate_options))
-CA_PUBLISHED(ca_select_options, sizeof(abi1::ca_select_options), sizeof(abi2_first::ca_select_options),
-             sizeof(ca_select_options))
-CA_PUBLISHED(ca_select_stats, sizeof(abi1::ca_select_stats), sizeof(abi2_first::ca_select_stats),
-             sizeof(ca_select_stats))
-CA_PUBLISHED(ca_connect_options, sizeof(abi1::ca_connect_options), sizeof(ca_connect_options))
-CA_PUBLISHED(ca_skeleton_stats, sizeof(abi1::ca_skeleton_stats), sizeof(abi2_first::ca_skeleton_stats),
-             sizeof(ca_skeleton_stats))
-CA_PUBLISHED(ca_skeleton_view, sizeof(ca_skeleton_view))
-CA_PUBLISHED(ca_evaluate_options, sizeof(ca_evaluate_options))
-CA_PUBLISHED(ca_evaluation, sizeof(ca_evaluation))
+CA_PUBLISHED(ca_context_desc, {1, sizeof(abi1::ca_context_desc)}, {2, sizeof(abi2_first::ca_context_desc)},
+             {2, sizeof(ca_context_desc)})
+CA_PUBLISHED(ca_surface_view, {1, sizeof(abi1::ca_surface_view)}, {2, sizeof(abi2::ca_surface_view)},
+             {3, sizeof(ca_surface_view)})
+CA_PUBLISHED(ca_candidate_options, {1, sizeof(ca_candidate_options)})
+CA_PUBLISHED(ca_select_options, {1, sizeof(abi1::ca_select_options)}, {2, sizeof(abi2_first::ca_select_options)},
+             {2, sizeof(abi2::ca_select_options)}, {3, sizeof(ca_select_options)})
+CA_PUBLISHED(ca_select_stats, {1, sizeof(abi1::ca_select_stats)}, {2, sizeof(abi2_first::ca_select_stats)},
+             {2, sizeof(ca_select_stats)})
+CA_PUBLISHED(ca_connect_options, {1, sizeof(abi1::ca_connect_options)}, {2, sizeof(ca_connect_options)})
+CA_PUBLISHED(ca_skeleton_stats, {1, sizeof(abi1::ca_skeleton_stats)}, {2, sizeof(abi2_first::ca_skeleton_stats)},
+             {2, sizeof(ca_skeleton_stats)})
+CA_PUBLISHED(ca_skeleton_view, {1, sizeof(ca_skeleton_view)})
+CA_PUBLISHED(ca_evaluate_options, {1, sizeof(ca_evaluate_options)})
+CA_PUBLISHED(ca_evaluation, {1, sizeof(ca_evaluation)})
 #undef CA_PUBLISHED
 
 static_assert(offsetof(ca_context_desc, threads) == offsetof(abi1::ca_context_desc, threads) &&
@@ -131,6 +150,9 @@ static_assert(offsetof(ca_context_desc, progress_interval_s) ==
 static_assert(offsetof(ca_surface_view, normal_stride) == offsetof(abi1::ca_surface_view, normal_stride) &&
                   offsetof(ca_surface_view, point_normals) >= sizeof(abi1::ca_surface_view),
               "ca_surface_view: ABI 1 is a prefix of ABI 2");
+static_assert(offsetof(ca_surface_view, point_normals) == offsetof(abi2::ca_surface_view, point_normals) &&
+                  offsetof(ca_surface_view, normal_count) >= sizeof(abi2::ca_surface_view),
+              "ca_surface_view: ABI 2 is a prefix of ABI 3");
 static_assert(offsetof(ca_select_stats, scale_used) == offsetof(abi1::ca_select_stats, scale_used) &&
                   offsetof(ca_select_stats, time_coverage_s) >= sizeof(abi1::ca_select_stats),
               "ca_select_stats: ABI 1 is a prefix of ABI 2");
@@ -143,6 +165,9 @@ static_assert(offsetof(ca_select_options, effort) == offsetof(abi1::ca_select_op
 static_assert(offsetof(ca_select_options, target_error) == offsetof(abi2_first::ca_select_options, target_error) &&
                   offsetof(ca_select_options, probe_fit) >= sizeof(abi2_first::ca_select_options),
               "ca_select_options: its first ABI 2 layout is a prefix of the current one");
+static_assert(offsetof(ca_select_options, probe_fit) == offsetof(abi2::ca_select_options, probe_fit) &&
+                  offsetof(ca_select_options, ignorable_samples_count) >= sizeof(abi2::ca_select_options),
+              "ca_select_options: ABI 2 is a prefix of ABI 3");
 
 static_assert(offsetof(ca_connect_options, reconnect) == offsetof(abi1::ca_connect_options, reconnect) &&
                   offsetof(ca_connect_options, fit) >= sizeof(abi1::ca_connect_options),
@@ -156,18 +181,18 @@ static_assert(offsetof(ca_skeleton_stats, fitted) == offsetof(abi2_first::ca_ske
 
 template <class T>
 bool published_size(uint32_t size) {
-    for (uint32_t s : Published<T>::sizes)
-        if (s == size) return true;
+    for (const PublishedSize& s : Published<T>::sizes)
+        if (s.size == size) return true;
     return false;
 }
 
-// "ca_select_stats.struct_size is 12; this library (ABI 2) accepts 136 (ABI 1) or 160 (ABI 2)"
-std::string struct_size_message(const char* name, uint32_t size, const uint32_t* sizes, size_t count);
+// "ca_select_stats.struct_size is 12; this library (ABI 3) accepts 136 (ABI 1), 160 (ABI 2) or 168 (ABI 2)"
+std::string struct_size_message(const char* name, uint32_t size, const PublishedSize* sizes, size_t count);
 
 template <class T>
 ca::Status check_struct_size(uint32_t size) {
     if (published_size<T>(size)) return ca::Status::success();
-    constexpr size_t n = sizeof(Published<T>::sizes) / sizeof(uint32_t);
+    constexpr size_t n = sizeof(Published<T>::sizes) / sizeof(PublishedSize);
     return ca::fail(ca::Code::struct_size, struct_size_message(Published<T>::name, size, Published<T>::sizes, n));
 }
 
@@ -203,6 +228,10 @@ ca::Status read_input(const T* in, T& out) {
     out.struct_size = sizeof(T);
     return ca::Status::success();
 }
+
+// Whether a caller's struct of `struct_size` bytes (a published size) has the field at `offset`:
+// fields appended after the caller's ABI are not in it and take their defaults.
+inline bool has_field(uint32_t struct_size, size_t offset) { return struct_size > offset; }
 
 // An output struct: writes value's first out->struct_size bytes, keeping the caller's size.
 template <class T>

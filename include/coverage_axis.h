@@ -13,8 +13,9 @@
  * - Coordinates are double, in the caller's units; every result is in the caller's units.
  *   Lengths given as options (delta) are fractions of the longest side of the input's bounding
  *   box (the paper's unit-cube convention: delta = 0.02 means 2 % of the longest side).
- * - Inputs are borrowed views: pointer + count + byte stride (0 = tightly packed). They are read
- *   during the call only.
+ * - Inputs are borrowed views: pointer + count + byte stride (0 = tightly packed); every array the
+ *   library reads has its count, and a count that does not match is CA_ERROR_INVALID_INPUT. They
+ *   are read during the call only.
  * - Every fallible call returns a ca_status (pinned values below). On any status other than
  *   CA_OK the output pointer is set to NULL and nothing is allocated: no partial results.
  *   ca_context_last_error() gives a one-line explanation.
@@ -70,8 +71,9 @@ extern "C" {
 #define CA_VERSION_NUMBER (CA_VERSION_MAJOR * 10000 + CA_VERSION_MINOR * 100 + CA_VERSION_PATCH)
 /* ABI 2: structs grow by appending (see struct_size above); *_init became static inline over
    the exported ca_*_defaults; ca_context_desc.progress_interval_s and three ca_select_stats
-   fields were appended. */
-#define CA_ABI_VERSION 2
+   fields were appended. ABI 3: every array the library reads has a count (ca_surface_view.
+   normal_count, the ca_select_options mask counts). */
+#define CA_ABI_VERSION 3
 
 CA_API uint32_t ca_version(void);     /* CA_VERSION_NUMBER of the linked library */
 CA_API uint32_t ca_abi_version(void); /* CA_ABI_VERSION of the linked library */
@@ -169,6 +171,9 @@ typedef struct ca_surface_view {
     const double* normals;      /* point clouds: nx ny nz per point; ignored for meshes */
     size_t normal_stride;       /* 0 = 3 * sizeof(double) */
     int32_t point_normals;      /* ABI 2: CA_POINT_NORMALS_*; default TRUSTED */
+    size_t normal_count;        /* ABI 3. Entries of normals (point clouds): vertex_count when normals
+                                   is set, else CA_ERROR_INVALID_INPUT; 0 with normals NULL. A caller
+                                   of ABI 1 or 2 has no such field: its normals count vertex_count */
 } ca_surface_view;
 
 CA_API ca_status ca_surface_view_defaults(ca_surface_view* view, uint32_t struct_size); /* all zero */
@@ -267,7 +272,8 @@ typedef struct ca_select_options {
                                     the machine's speed); default 60; <= 0: no limit */
     int32_t skip_uncoverable;    /* 0 (default): uncoverable samples fail with CA_ERROR_UNCOVERABLE;
                                     1: they are ignored and listed in the result */
-    /* Optional masks (NULL = none), non-zero = set; borrowed during the call. */
+    /* Optional masks (NULL = none), non-zero = set; borrowed during the call; their entry counts
+       are the *_count fields at the end (ABI 3). */
     const uint8_t* ignorable_samples; /* sample_count entries: need not be covered */
     const uint8_t* forced_in;         /* ball_count entries: must be selected */
     const uint8_t* forced_out;        /* ball_count entries: must not be selected */
@@ -292,6 +298,12 @@ typedef struct ca_select_options {
                                     judged and reported (hd_reached) is that of the fitted skeleton
                                     ca_connect gives with fit = 1 (meshes; docs/fidelity.md). Ignored
                                     by the other selections */
+    /* ABI 3: the entries of the masks above, one per sample (ignorable_samples) or per candidate
+       ball (forced_in, forced_out) when the mask is set, else CA_ERROR_INVALID_INPUT; 0 with the
+       mask NULL. A caller of ABI 1 or 2 has no such fields: its masks count the set's samples or balls */
+    size_t ignorable_samples_count;
+    size_t forced_in_count;
+    size_t forced_out_count;
 } ca_select_options;
 
 CA_API ca_status ca_select_options_defaults(ca_select_options* options, uint32_t struct_size); /* the defaults named above */

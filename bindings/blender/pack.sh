@@ -13,7 +13,7 @@ mkdir -p "$tmp/coverage_axis_blender/coverage_axis"
 cp "$here"/coverage_axis_blender/*.py "$tmp/coverage_axis_blender/"
 cp "$here"/../python/coverage_axis/*.py "$tmp/coverage_axis_blender/coverage_axis/"
 rm -f "$tmp/coverage_axis_blender/coverage_axis/_install_path.py"
-cp "$lib" "$tmp/coverage_axis_blender/coverage_axis/libcoverage_axis.so.2"
+cp "$lib" "$tmp/coverage_axis_blender/coverage_axis/libcoverage_axis.so.3"  # .3: the SOVERSION (ABI)
 rm -f "$out"
 (cd "$tmp" && python3 -m zipfile -c "$out" coverage_axis_blender)
 echo "add-on: $out"

@@ -1,4 +1,4 @@
-// CoverageAxis.cs: the C# binding of the coverage-axis C ABI (include/coverage_axis.h, ABI 2).
+// CoverageAxis.cs: the C# binding of the coverage-axis C ABI (include/coverage_axis.h, ABI 3).
 // Native: P/Invoke declarations and the C structs, field for field (checked against the C layout
 // by tests/TestCoverageAxis.cs). Above it: SafeHandle subclasses that destroy the C objects,
 // CoverageAxisException with the status and message, option classes that start from the
@@ -29,7 +29,7 @@ namespace CoverageAxis
     {
         const string Lib = "coverage_axis";
         /// <summary>The ABI version whose layouts these declarations follow.</summary>
-        public const uint AbiVersion = 2;
+        public const uint AbiVersion = 3;
 
         [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
         public delegate void LogFn(IntPtr user, int level, IntPtr message);
@@ -57,6 +57,7 @@ namespace CoverageAxis
             public IntPtr normals;
             public UIntPtr normal_stride;
             public int point_normals; // ABI 2
+            public UIntPtr normal_count; // ABI 3
         }
 
         [StructLayout(LayoutKind.Sequential)]
@@ -85,6 +86,7 @@ namespace CoverageAxis
             public int effort;
             public double target_error;     // ABI 2
             public int probe_fit;           // ABI 2 (appended after target_error)
+            public UIntPtr ignorable_samples_count, forced_in_count, forced_out_count; // ABI 3
         }
 
         [StructLayout(LayoutKind.Sequential)]
@@ -307,6 +309,7 @@ namespace CoverageAxis
                 view.triangles = Pinning.Address(pins[1]);
                 view.triangle_count = (UIntPtr)(Triangles == null ? 0 : Triangles.Length / 3);
                 view.normals = Pinning.Address(pins[2]);
+                view.normal_count = (UIntPtr)(Normals == null ? 0 : Normals.Length / 3);
                 return f(view);
             }
             finally
@@ -470,6 +473,9 @@ namespace CoverageAxis
                 o.ignorable_samples = Pinning.Address(pins[0]);
                 o.forced_in = Pinning.Address(pins[1]);
                 o.forced_out = Pinning.Address(pins[2]);
+                o.ignorable_samples_count = (UIntPtr)(options.IgnorableSamples == null ? 0 : options.IgnorableSamples.Length);
+                o.forced_in_count = (UIntPtr)(options.ForcedIn == null ? 0 : options.ForcedIn.Length);
+                o.forced_out_count = (UIntPtr)(options.ForcedOut == null ? 0 : options.ForcedOut.Length);
                 SelectionHandle h = null;
                 return Run(token, () => Native.ca_select(handle, set.Handle, ref o, out h), () => new Selection(h));
             }

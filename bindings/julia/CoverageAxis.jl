@@ -1,4 +1,4 @@
-# CoverageAxis.jl: the Julia binding of the coverage-axis C ABI (include/coverage_axis.h, ABI 2).
+# CoverageAxis.jl: the Julia binding of the coverage-axis C ABI (include/coverage_axis.h, ABI 3).
 # ccall wrappers over libcoverage_axis; the C structs are declared field for field (checked
 # against the C compiler's layout by tests/abi_layout/check_julia_layout.py, since Julia is not
 # packaged in Debian 12 and cannot run in this project's CI). Results are mutable objects with
@@ -13,7 +13,7 @@ export Context, candidates, select, connect, skeletonize, evaluate, cancel!, cle
 
 # The library's path: COVERAGE_AXIS_LIBRARY, else the loader's search path.
 const libcoverage_axis = get(ENV, "COVERAGE_AXIS_LIBRARY", "libcoverage_axis")
-const ABI_VERSION = 2  # the ABI whose layouts are declared below
+const ABI_VERSION = 3  # the ABI whose layouts are declared below
 const CA_OK = Int32(0)
 const CA_ERROR_CANCELLED = Int32(9)
 
@@ -43,6 +43,7 @@ struct SurfaceView
     normals::Ptr{Float64}
     normal_stride::Csize_t
     point_normals::Int32  # ABI 2
+    normal_count::Csize_t  # ABI 3
 end
 
 struct CandidateOptions
@@ -72,6 +73,9 @@ struct SelectOptions
     effort::Int32
     target_error::Float64     # ABI 2
     probe_fit::Int32          # ABI 2 (appended after target_error)
+    ignorable_samples_count::Csize_t  # ABI 3
+    forced_in_count::Csize_t
+    forced_out_count::Csize_t
 end
 
 struct SelectStats
@@ -349,7 +353,8 @@ function surface_view(positions::Matrix{Float64}, triangles, normals)
     with(defaults(SurfaceView); positions=pointer(positions), vertex_count=size(positions, 2),
          triangles=triangles === nothing ? Ptr{UInt32}(C_NULL) : pointer(triangles),
          triangle_count=triangles === nothing ? 0 : size(triangles, 2),
-         normals=normals === nothing ? Ptr{Float64}(C_NULL) : pointer(normals))
+         normals=normals === nothing ? Ptr{Float64}(C_NULL) : pointer(normals),
+         normal_count=normals === nothing ? 0 : size(normals, 2))
 end
 
 as_matrix(::Type{T}, a) where {T} = a === nothing ? nothing : a isa Matrix{T} ? a : Matrix{T}(a)
@@ -382,7 +387,9 @@ function select(ctx::Context, set::CandidateSet; ignorable_samples=nothing, forc
                 options...)
     masks = (ignorable_samples, forced_in, forced_out)
     ptrs = map(m -> m === nothing ? Ptr{UInt8}(C_NULL) : pointer(m::Vector{UInt8}), masks)
-    o = with(defaults(SelectOptions); ignorable_samples=ptrs[1], forced_in=ptrs[2], forced_out=ptrs[3], options...)
+    counts = map(m -> m === nothing ? 0 : length(m), masks)
+    o = with(defaults(SelectOptions); ignorable_samples=ptrs[1], forced_in=ptrs[2], forced_out=ptrs[3],
+             ignorable_samples_count=counts[1], forced_in_count=counts[2], forced_out_count=counts[3], options...)
     out = Ref{Ptr{Cvoid}}(C_NULL)
     GC.@preserve ctx set masks begin
         check(ctx, ccall((:ca_select, libcoverage_axis), Int32,

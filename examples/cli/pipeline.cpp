@@ -20,6 +20,7 @@ ca_surface_view surface_view(const caio::MeshData& mesh, int32_t point_normals) 
     view.triangles = mesh.triangles.data();
     view.triangle_count = mesh.triangles.size() / 3;
     view.normals = mesh.normals.empty() ? nullptr : mesh.normals.data();
+    view.normal_count = mesh.normals.size() / 3;
     view.point_normals = point_normals;
     return view;
 }
@@ -197,11 +198,13 @@ bool make_selection(Owned& owned, const RunOptions& o, Failure& failure) {
         size_t size;
         std::vector<uint8_t>& mask;
         const uint8_t** field;
+        size_t* count;
         const char* what;
     };
-    for (MaskFile m : {MaskFile{o.ignore_samples_file, n_samples, ignorable, &so.ignorable_samples, "sample"},
-                       MaskFile{o.force_in_file, n_candidates, forced_in, &so.forced_in, "candidate"},
-                       MaskFile{o.force_out_file, n_candidates, forced_out, &so.forced_out, "candidate"}}) {
+    for (MaskFile m :
+         {MaskFile{o.ignore_samples_file, n_samples, ignorable, &so.ignorable_samples, &so.ignorable_samples_count, "sample"},
+          MaskFile{o.force_in_file, n_candidates, forced_in, &so.forced_in, &so.forced_in_count, "candidate"},
+          MaskFile{o.force_out_file, n_candidates, forced_out, &so.forced_out, &so.forced_out_count, "candidate"}}) {
         if (m.path.empty()) continue;
         std::vector<uint32_t> idx;
         std::string err;
@@ -215,6 +218,7 @@ bool make_selection(Owned& owned, const RunOptions& o, Failure& failure) {
             m.mask[i] = 1;
         }
         *m.field = m.mask.data();
+        *m.count = m.mask.size();
     }
     const ca_status st = ca_select(owned.ctx, owned.set, &so, &owned.sel);
     if (st != CA_OK) return failure = library_failure(owned.ctx, st, "selection"), false;

@@ -13,6 +13,11 @@ Status check_surface_input(const SurfaceInput& surface) {
     if (p != PointNormals::trusted && p != PointNormals::unoriented && p != PointNormals::estimate)
         return fail(Code::invalid_argument, "surface->point_normals is " + std::to_string(int32_t(p)) +
                                                 "; expected CA_POINT_NORMALS_TRUSTED (0), UNORIENTED (1) or ESTIMATE (2)");
+    // checked even where they are not used (estimate): a count that does not match is the caller's error
+    const size_t nn = surface.normals.size(), nv = surface.mesh.vertices.size();
+    if (surface.mesh.triangles.empty() && nn > 0 && nn != nv)
+        return fail(Code::invalid_input, "surface->normals has " + std::to_string(nn) + " entries for " +
+                                             std::to_string(nv) + " points; a point cloud needs one normal per point");
     return Status::success();
 }
 

@@ -27,8 +27,8 @@ struct SurfaceInput {
     PointNormals point_normals = PointNormals::trusted;
 };
 
-// The request's own fields in range (point_normals one of PointNormals); the arrays are checked by
-// prepare_surface.
+// The request's own fields in range (point_normals one of PointNormals) and, for a point cloud,
+// one normal per point or none; the arrays' values are checked by prepare_surface.
 Status check_surface_input(const SurfaceInput& surface);
 
 // Validates and prepares the surface (prepare_surface on opt.threads), then generates the

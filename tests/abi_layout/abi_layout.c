@@ -44,6 +44,7 @@ int main(void) {
     FIELD(ca_surface_view, normals);
     FIELD(ca_surface_view, normal_stride);
     FIELD(ca_surface_view, point_normals);
+    FIELD(ca_surface_view, normal_count);
     STRUCT(ca_candidate_options);
     FIELD(ca_candidate_options, struct_size);
     FIELD(ca_candidate_options, generator);
@@ -69,6 +70,9 @@ int main(void) {
     FIELD(ca_select_options, effort);
     FIELD(ca_select_options, target_error);
     FIELD(ca_select_options, probe_fit);
+    FIELD(ca_select_options, ignorable_samples_count);
+    FIELD(ca_select_options, forced_in_count);
+    FIELD(ca_select_options, forced_out_count);
     STRUCT(ca_select_stats);
     FIELD(ca_select_stats, struct_size);
     FIELD(ca_select_stats, proven_optimal);

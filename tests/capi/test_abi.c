@@ -80,6 +80,7 @@ static ca_status run_candidates(ca_context* ctx, const double* pos, size_t nv, c
     v.triangles = tri;
     v.triangle_count = nt;
     v.normals = normals;
+    v.normal_count = normals ? nv : 0;
     return ca_candidates(ctx, &v, &o, out);
 }
 

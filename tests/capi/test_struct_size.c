@@ -6,6 +6,7 @@
  * selection keeps its candidate set alive after the set's handle is destroyed. */
 #include "capi_check.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -68,6 +69,17 @@ typedef struct v2_first_select_stats {
     double time_coverage_s;
     uint64_t cbc_components, rowgen_rounds;
 } v2_first_select_stats;
+
+/* the last ABI 2 layouts of the structs that gained counts in ABI 3 */
+typedef struct v2_surface_view {
+    v1_surface_view v1;
+    int32_t point_normals;
+} v2_surface_view;
+
+typedef struct v2_select_options {
+    v2_first_select_options v2_first;
+    int32_t probe_fit;
+} v2_select_options;
 
 typedef struct v1_connect_options {
     uint32_t struct_size;
@@ -191,6 +203,18 @@ static void test_sizes_refused(void) {
     /* the message names the struct, the size given and the sizes accepted */
     CHECK(strstr(ca_context_last_error(ctx), "ca_candidate_options.struct_size is 8") != NULL);
     CHECK(strstr(ca_context_last_error(ctx), "accepts") != NULL);
+    /* each size with the ABI version that published it */
+    {
+        ca_select_options so;
+        ca_selection* sel = NULL;
+        CHECK(ca_candidates(ctx, &v, NULL, &set) == CA_OK);
+        ca_select_options_init(&so);
+        so.struct_size = 8;
+        CHECK(ca_select(ctx, set, &so, &sel) == CA_ERROR_STRUCT_SIZE && sel == NULL);
+        CHECK(strstr(ca_context_last_error(ctx), " (ABI 1), ") != NULL);
+        CHECK(strstr(ca_context_last_error(ctx), " (ABI 3)") != NULL);
+        ca_candidate_set_destroy(set);
+    }
     ca_context_destroy(ctx);
 }
 
@@ -376,8 +400,120 @@ static void test_select_layouts(void) {
     ca_context_destroy(ctx);
 }
 
+/* n points on the unit sphere (a Fibonacci spiral) with their outward normals */
+#define SPHERE_POINTS 400
+static void sphere_cloud(double* pts, double* nrm) {
+    int i;
+    for (i = 0; i < SPHERE_POINTS; ++i) {
+        const double z = 1 - (2 * i + 1) / (double)SPHERE_POINTS, r = sqrt(1 - z * z), a = 2.399963229728653 * i;
+        pts[3 * i] = nrm[3 * i] = r * cos(a);
+        pts[3 * i + 1] = nrm[3 * i + 1] = r * sin(a);
+        pts[3 * i + 2] = nrm[3 * i + 2] = z;
+    }
+}
+
+/* Whether the selection holds candidate ball i. */
+static int selects(const ca_selection* sel, uint32_t i) {
+    size_t k;
+    for (k = 0; k < ca_selection_count(sel); ++k)
+        if (ca_selection_indices(sel)[k] == i) return 1;
+    return 0;
+}
+
+/* ABI 3 counts: every array the library reads has one. A count that does not match is
+   CA_ERROR_INVALID_INPUT naming the array; a set array with a count of 0, from a struct that has
+   the count, too (it was not filled in); a count without its array is CA_ERROR_NULL_POINTER. A
+   caller of ABI 2 has no counts: its normals and masks have the implied lengths, as before. */
+static void test_counts(void) {
+    static double pts[3 * SPHERE_POINTS], nrm[3 * SPHERE_POINTS];
+    ca_context* ctx = NULL;
+    ca_candidate_set* set = NULL;
+    ca_selection* sel = NULL;
+    ca_surface_view v;
+    ca_candidate_options co;
+    struct { v2_surface_view v; unsigned char tail[16]; } old;
+    struct { v2_select_options o; unsigned char tail[32]; } old_select;
+    ca_select_options so;
+    uint8_t mask[4096];
+    size_t balls, balls_old;
+    sphere_cloud(pts, nrm);
+    CHECK(ca_context_create(NULL, &ctx) == CA_OK);
+    ca_candidate_options_init(&co);
+    co.cover_samples = 100;
+    co.voronoi_samples = 400;
+    ca_surface_view_init(&v);
+    CHECK(v.normal_count == 0 && sizeof(v2_surface_view) < sizeof v);
+    v.positions = pts;
+    v.vertex_count = SPHERE_POINTS;
+    v.normals = nrm;
+    /* the count not filled in, too short, too long */
+    CHECK(ca_candidates(ctx, &v, &co, &set) == CA_ERROR_INVALID_INPUT && set == NULL);
+    CHECK(strstr(ca_context_last_error(ctx), "normal_count") != NULL);
+    v.normal_count = SPHERE_POINTS - 1;
+    CHECK(ca_candidates(ctx, &v, &co, &set) == CA_ERROR_INVALID_INPUT && set == NULL);
+    CHECK(strstr(ca_context_last_error(ctx), "normals") != NULL);
+    v.normal_count = SPHERE_POINTS + 1;
+    CHECK(ca_candidates(ctx, &v, &co, &set) == CA_ERROR_INVALID_INPUT && set == NULL);
+    v.point_normals = CA_POINT_NORMALS_ESTIMATE; /* refused even where the normals are not used */
+    CHECK(ca_candidates(ctx, &v, &co, &set) == CA_ERROR_INVALID_INPUT && set == NULL);
+    v.point_normals = CA_POINT_NORMALS_TRUSTED;
+    v.normals = NULL;
+    CHECK(ca_candidates(ctx, &v, &co, &set) == CA_ERROR_NULL_POINTER && set == NULL);
+    /* the right count; then an ABI 2 view, whose normals count vertex_count */
+    v.normals = nrm;
+    v.normal_count = SPHERE_POINTS;
+    CHECK(ca_candidates(ctx, &v, &co, &set) == CA_OK && ca_candidate_set_normals(set) == CA_NORMALS_GIVEN);
+    balls = ca_candidate_set_count(set);
+    ca_candidate_set_destroy(set);
+    set = NULL;
+    memset(&old, 0xFF, sizeof old); /* a normal_count read past the size would be huge */
+    memcpy(&old.v, &v, sizeof old.v);
+    old.v.v1.struct_size = (uint32_t)sizeof old.v;
+    CHECK(ca_candidates(ctx, (const ca_surface_view*)(void*)&old, &co, &set) == CA_OK);
+    balls_old = ca_candidate_set_count(set);
+    CHECK(balls_old == balls && balls > 0 && ca_candidate_set_normals(set) == CA_NORMALS_GIVEN);
+
+    /* masks: one entry per candidate ball (forced_in, forced_out) or per sample */
+    memset(mask, 0, sizeof mask);
+    CHECK(balls + 1 <= sizeof mask && ca_candidate_set_sample_count(set) + 1 <= sizeof mask);
+    ca_select_options_init(&so);
+    CHECK(so.forced_in_count == 0 && so.forced_out_count == 0 && so.ignorable_samples_count == 0);
+    so.forced_out = mask;
+    CHECK(ca_select(ctx, set, &so, &sel) == CA_ERROR_INVALID_INPUT && sel == NULL);
+    CHECK(strstr(ca_context_last_error(ctx), "forced_out_count") != NULL);
+    so.forced_out_count = balls - 1;
+    CHECK(ca_select(ctx, set, &so, &sel) == CA_ERROR_INVALID_INPUT && sel == NULL);
+    CHECK(strstr(ca_context_last_error(ctx), "forced_out") != NULL);
+    so.forced_out_count = balls + 1;
+    CHECK(ca_select(ctx, set, &so, &sel) == CA_ERROR_INVALID_INPUT && sel == NULL);
+    so.forced_out = NULL;
+    CHECK(ca_select(ctx, set, &so, &sel) == CA_ERROR_NULL_POINTER && sel == NULL);
+    so.forced_out_count = 0;
+    so.ignorable_samples = mask;
+    so.ignorable_samples_count = ca_candidate_set_sample_count(set) + 1;
+    CHECK(ca_select(ctx, set, &so, &sel) == CA_ERROR_INVALID_INPUT && sel == NULL);
+    CHECK(strstr(ca_context_last_error(ctx), "ignorable_samples") != NULL);
+    so.ignorable_samples_count = ca_candidate_set_sample_count(set);
+    so.forced_in = mask;
+    so.forced_in_count = balls;
+    mask[0] = 1; /* ball 0 forced in; sample 0 ignorable */
+    CHECK(ca_select(ctx, set, &so, &sel) == CA_OK && sel != NULL);
+    CHECK(selects(sel, 0));
+    ca_selection_destroy(sel);
+    sel = NULL;
+    /* an ABI 2 caller's masks have the set's lengths */
+    memset(&old_select, 0xFF, sizeof old_select); /* counts read past the size would be huge */
+    memcpy(&old_select.o, &so, sizeof old_select.o);
+    old_select.o.v2_first.v1.struct_size = (uint32_t)sizeof old_select.o;
+    CHECK(ca_select(ctx, set, (const ca_select_options*)(void*)&old_select, &sel) == CA_OK && sel != NULL);
+    CHECK(selects(sel, 0));
+    ca_selection_destroy(sel);
+    ca_candidate_set_destroy(set);
+    ca_context_destroy(ctx);
+}
+
 int main(void) {
-    CHECK(ca_abi_version() == 2 && CA_ABI_VERSION == 2);
+    CHECK(ca_abi_version() == 3 && CA_ABI_VERSION == 3);
     test_old_input_struct();
     test_defaults_write_only_the_callers_size();
     test_sizes_refused();
@@ -385,6 +521,7 @@ int main(void) {
     test_connect_layouts();
     test_select_layouts();
     test_old_surface_view();
+    test_counts();
     printf("test_struct_size: %d checks, %d failed\n", checks, failures);
     return failures ? 1 : 0;
 }

@@ -72,6 +72,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     v.triangle_count = nt;
     v.triangle_stride = tw * sizeof(uint32_t);
     v.normals = cloud ? nrm.data() : nullptr;
+    v.normal_count = cloud ? nv : 0;
     ca_candidate_options co;
     ca_candidate_options_init(&co);
     co.generator = opt[0] & 1 ? CA_CANDIDATES_RANDOM : CA_CANDIDATES_VORONOI;

@@ -30,7 +30,8 @@ _STEPS = {
     "connect": ("ca_connect_options_defaults", _ConnectOptions),
     "evaluate": ("ca_evaluate_options_defaults", _EvaluateOptions),
 }
-_NOT_OPTIONS = {"struct_size", "alloc", "free", "alloc_user", "log", "log_user", "progress", "progress_user"}
+_NOT_OPTIONS = {"struct_size", "alloc", "free", "alloc_user", "log", "log_user", "progress", "progress_user",
+                "ignorable_samples_count", "forced_in_count", "forced_out_count"}  # the masks' lengths
 
 
 def _option_names(step):
@@ -101,7 +102,7 @@ def _surface(vertices, triangles, normals, point_normals=None):
     keep = [pos, tri]
     if normals is not None:
         nrm = _arrays.points(normals, "normals")
-        view.normals, view.normal_stride = nrm.address, nrm.stride
+        view.normals, view.normal_stride, view.normal_count = nrm.address, nrm.stride, nrm.count
         keep.append(nrm)
     return view, keep
 
@@ -217,6 +218,7 @@ def select(candidate_set, *, context=None, ignorable_samples=None, forced_in=Non
              _arrays.mask(forced_out, "forced_out", candidate_set.count)]
     for name, m in zip(_MASKS, masks):
         setattr(opts, name, ctypes.addressof(m) if m is not None and len(m) else None)
+        setattr(opts, name + "_count", len(m) if m is not None else 0)
     out = ctypes.c_void_p()
     _run(context, lib().ca_select, candidate_set._handle._ptr, ctypes.byref(opts), ctypes.byref(out))
     del masks

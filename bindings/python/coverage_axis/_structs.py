@@ -1,4 +1,4 @@
-"""_structs.py: the ctypes mirrors of the C ABI's structs (include/coverage_axis.h, ABI 2 layouts).
+"""_structs.py: the ctypes mirrors of the C ABI's structs (include/coverage_axis.h, ABI 3 layouts).
 Each class is named after its C struct (_SurfaceView = ca_surface_view); the abi_layout test
 compares every one, field by field, with the offsets and sizes the C compiler prints."""
 from ctypes import Structure, c_double, c_int32, c_int64, c_size_t, c_uint32, c_uint64, c_void_p
@@ -17,7 +17,7 @@ class _SurfaceView(Structure):
     _fields_ = [("struct_size", c_uint32), ("positions", c_void_p), ("vertex_count", c_size_t),
                 ("position_stride", c_size_t), ("triangles", c_void_p), ("triangle_count", c_size_t),
                 ("triangle_stride", c_size_t), ("normals", c_void_p), ("normal_stride", c_size_t),
-                ("point_normals", c_int32)]
+                ("point_normals", c_int32), ("normal_count", c_size_t)]
 
 
 class _CandidateOptions(Structure):
@@ -32,7 +32,8 @@ class _SelectOptions(Structure):
                 ("ignorable_samples", c_void_p), ("forced_in", c_void_p), ("forced_out", c_void_p),
                 ("target_count", c_uint32), ("target_tolerance", c_double), ("divide_threshold", c_uint32),
                 ("effort", c_int32), ("target_error", c_double),
-                ("probe_fit", c_int32)]
+                ("probe_fit", c_int32), ("ignorable_samples_count", c_size_t), ("forced_in_count", c_size_t),
+                ("forced_out_count", c_size_t)]
 
 
 class _SelectStats(Structure):

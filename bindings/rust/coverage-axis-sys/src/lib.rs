@@ -1,5 +1,5 @@
 //! coverage-axis-sys: raw declarations of the coverage-axis C ABI (`include/coverage_axis.h`,
-//! ABI 2). Names, field order and types follow the header exactly; docs/abi.md gives the rules
+//! ABI 3). Names, field order and types follow the header exactly; docs/abi.md gives the rules
 //! (struct_size, defaults, ownership). Every struct is declared through `ca_struct!`, which also
 //! records its layout (`layouts()`), so the test compares the declarations with the C compiler's
 //! layout printed by tests/abi_layout.
@@ -8,7 +8,7 @@
 use std::os::raw::{c_char, c_void};
 
 /// The ABI version whose struct layouts this crate declares.
-pub const CA_ABI_VERSION: u32 = 2;
+pub const CA_ABI_VERSION: u32 = 3;
 
 pub type ca_status = i32;
 pub const CA_OK: ca_status = 0;
@@ -129,6 +129,8 @@ ca_struct!(ca_surface_view {
     normal_stride: usize,
     /// ABI 2: CA_POINT_NORMALS_*
     point_normals: i32,
+    /// ABI 3: entries of normals (vertex_count when set)
+    normal_count: usize,
 });
 
 ca_struct!(ca_candidate_options {
@@ -160,6 +162,12 @@ ca_struct!(ca_select_options {
     target_error: f64,
     /// ABI 2 (appended after target_error)
     probe_fit: i32,
+    /// ABI 3: entries of ignorable_samples (the set's sample count when set)
+    ignorable_samples_count: usize,
+    /// ABI 3: entries of forced_in (the set's ball count when set)
+    forced_in_count: usize,
+    /// ABI 3: entries of forced_out (the set's ball count when set)
+    forced_out_count: usize,
 });
 
 ca_struct!(#[derive(Debug, Default)] ca_select_stats {

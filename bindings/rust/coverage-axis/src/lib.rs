@@ -132,6 +132,7 @@ impl<'a> Surface<'a> {
         raw.positions = positions.as_ptr() as *const f64;
         raw.vertex_count = positions.len();
         raw.normals = if normals.len() == positions.len() { normals.as_ptr() as *const f64 } else { ptr::null() };
+        raw.normal_count = if raw.normals.is_null() { 0 } else { normals.len() };
         Surface { raw, _data: PhantomData }
     }
 }
@@ -295,16 +296,19 @@ impl<'a> SelectOptions<'a> {
     /// One entry per sample; non-zero: need not be covered. Lengths are checked by the call.
     pub fn ignorable_samples(mut self, m: Option<&'a [u8]>) -> Self {
         self.raw.ignorable_samples = mask(m);
+        self.raw.ignorable_samples_count = m.map_or(0, |m| m.len());
         self
     }
     /// One entry per candidate ball; non-zero: must be selected.
     pub fn forced_in(mut self, m: Option<&'a [u8]>) -> Self {
         self.raw.forced_in = mask(m);
+        self.raw.forced_in_count = m.map_or(0, |m| m.len());
         self
     }
     /// One entry per candidate ball; non-zero: must not be selected.
     pub fn forced_out(mut self, m: Option<&'a [u8]>) -> Self {
         self.raw.forced_out = mask(m);
+        self.raw.forced_out_count = m.map_or(0, |m| m.len());
         self
     }
     pub fn raw(&self) -> &sys::ca_select_options {
