@@ -8,7 +8,7 @@ Outputs: read-only numpy arrays over the library's own memory (no copy), each ke
 object that owns that memory alive; without numpy, lists of tuples (copies)."""
 import ctypes
 
-from ._library import CA_ERROR_INVALID_ARGUMENT, CA_ERROR_INVALID_INPUT, CoverageAxisError
+from ._library import CA_ERROR_INVALID_INPUT, CoverageAxisError
 
 try:
     import numpy as np
@@ -89,12 +89,13 @@ def indices(x, name, width):
 
 
 def mask(x, name, count):
-    """A flag per item (non-zero = set) as uint8, exactly `count` long; None stays None."""
+    """A flag per item (non-zero = set) as uint8, exactly `count` long (else CA_ERROR_INVALID_INPUT, as
+    the library says of a mask whose count does not match); None stays None."""
     if x is None:
         return None
     flags = [1 if f else 0 for f in (x.tolist() if np is not None and isinstance(x, np.ndarray) else x)]
     if len(flags) != count:
-        raise CoverageAxisError(CA_ERROR_INVALID_ARGUMENT, "%s: %d flags, expected %d" % (name, len(flags), count))
+        raise CoverageAxisError(CA_ERROR_INVALID_INPUT, "%s: %d flags, expected %d" % (name, len(flags), count))
     return (ctypes.c_uint8 * count)(*flags)
 
 

@@ -9,8 +9,8 @@ import ctypes
 
 from . import _arrays
 from ._context import Context
-from ._library import (CA_ERROR_INVALID_ARGUMENT, CoverageAxisError, _CandidateOptions, _ConnectOptions,
-                       _EvaluateOptions, _Evaluation, _SelectOptions, _SelectStats, _SkeletonStats,
+from ._library import (CA_ERROR_INVALID_ARGUMENT, CA_ERROR_INVALID_INPUT, CoverageAxisError, _CandidateOptions,
+                       _ConnectOptions, _EvaluateOptions, _Evaluation, _SelectOptions, _SelectStats, _SkeletonStats,
                        _SkeletonView, _SurfaceView, fill_defaults, lib, output_struct, struct_dict)
 from ._structs import _ContextDesc
 
@@ -102,6 +102,9 @@ def _surface(vertices, triangles, normals, point_normals=None):
     keep = [pos, tri]
     if normals is not None:
         nrm = _arrays.points(normals, "normals")
+        if nrm.count != pos.count:
+            raise CoverageAxisError(CA_ERROR_INVALID_INPUT, "normals: %d rows for %d vertices (one normal per "
+                                    "vertex, or None)" % (nrm.count, pos.count))
         view.normals, view.normal_stride, view.normal_count = nrm.address, nrm.stride, nrm.count
         keep.append(nrm)
     return view, keep

@@ -4,6 +4,7 @@ built library), CA_CLI (the coverage-axis tool) and CA_TEST_DATA (tests/data) se
 It runs once with numpy (which must be installed: scripts/install-deps.sh) and, from
 test_runs_without_numpy, once more in a subprocess with numpy hidden (CA_TEST_HIDE_NUMPY=1 makes
 `import numpy` fail), where inputs are lists and results lists of tuples."""
+import ctypes
 import gc
 import inspect
 import math
@@ -52,6 +53,17 @@ def read_obj(path):
     return [tuple(float(x) for x in p[:3]) for p in records(path, "v")], f
 
 
+def sphere_points(n):
+    """n points on the unit sphere (a Fibonacci spiral); each is its own outward normal."""
+    golden = math.pi * (3 - math.sqrt(5))
+    pts = []
+    for i in range(n):
+        z = 1 - 2 * (i + 0.5) / n
+        r = math.sqrt(1 - z * z)
+        pts.append((r * math.cos(golden * i), r * math.sin(golden * i), z))
+    return pts
+
+
 def read_ma(path):
     """Balls (x, y, z, r), edge and face counts of a .ma file."""
     return ([tuple(float(x) for x in p[:4]) for p in records(path, "v")], len(records(path, "e")),
@@ -94,12 +106,8 @@ class CommonTest(unittest.TestCase):
 
     def test_point_normals_trust(self):
         # a sphere cloud (Fibonacci points, exact normals); random signs passed as given are re-oriented
-        n, golden = 2000, math.pi * (3 - math.sqrt(5))
-        pts = []
-        for i in range(n):
-            z = 1 - 2 * (i + 0.5) / n
-            r = math.sqrt(1 - z * z)
-            pts.append((r * math.cos(golden * i), r * math.sin(golden * i), z))
+        n = 2000
+        pts = sphere_points(n)
         signs = [1 if (i * 7919) % 13 < 6 else -1 for i in range(n)]
         shuffled = [(s * x, s * y, s * z) for s, (x, y, z) in zip(signs, pts)]
         opts = dict(cover_samples=300, voronoi_samples=600)
@@ -176,7 +184,41 @@ class CommonTest(unittest.TestCase):
         self.assertFalse(set(rows(sel.indices)) & set(rows(free.indices)))
         with self.assertRaises(ca.CoverageAxisError) as cm:
             ca.select(cset, forced_in=[0, 1])
-        self.assertEqual(cm.exception.status, ca.CA_ERROR_INVALID_ARGUMENT)
+        self.assertEqual(cm.exception.status, ca.CA_ERROR_INVALID_INPUT)
+
+    def test_lengths_are_checked_before_the_call(self):
+        points = sphere_points(200)
+        called = []
+        real = _steps.lib
+
+        def spy():  # records every library function the steps fetch
+            lib = real()
+
+            class Spy:
+                def __getattr__(self, name):
+                    called.append(name)
+                    return getattr(lib, name)
+            return Spy()
+        _steps.lib = spy
+        try:
+            for short in (points[:10], points + points[:1]):
+                with self.assertRaises(ca.CoverageAxisError) as cm:
+                    ca.skeletonize(points, normals=short)
+                self.assertEqual(cm.exception.status, ca.CA_ERROR_INVALID_INPUT)
+                self.assertIn("normals: %d rows for 200 vertices" % len(short), cm.exception.message)
+            self.assertNotIn("ca_candidates", called)
+        finally:
+            _steps.lib = real
+        # the library refuses the mismatch on its own too: a view whose normal_count is short
+        view, keep = _steps._surface(points, None, points)
+        view.normal_count = 10
+        out = ctypes.c_void_p()
+        with ca.Context() as ctx:
+            with self.assertRaises(ca.CoverageAxisError) as cm:
+                ctx.run(real().ca_candidates, ctypes.byref(view), None, ctypes.byref(out))
+        self.assertEqual(cm.exception.status, ca.CA_ERROR_INVALID_INPUT)
+        self.assertIn("normals", cm.exception.message)
+        del keep
 
     def test_results_in_caller_units(self):
         a = ca.skeletonize(BOX_V, BOX_F, **SMALL)
