@@ -54,7 +54,7 @@ Status candidates_from_arrays(const std::vector<Vec3>& samples, const std::vecto
     if (samples.empty()) return fail(Code::degenerate_input, "no surface samples");
     if (centers.empty()) return fail(Code::no_candidates, "no candidate balls");
     if (centers.size() != radii.size())
-        return fail(Code::invalid_argument, std::to_string(centers.size()) + " centres but " + std::to_string(radii.size()) + " radii");
+        return fail(Code::invalid_input, std::to_string(centers.size()) + " centres but " + std::to_string(radii.size()) + " radii");
     if (!(std::isfinite(reference_length) && reference_length >= 0))
         return fail(Code::invalid_argument, "reference_length must be finite and >= 0");
     for (size_t i = 0; i < samples.size(); ++i)
