@@ -31,16 +31,99 @@ use std::sync::Arc;
 
 pub use sys::{ca_evaluation as Evaluation, ca_select_stats as SelectStats, ca_skeleton_stats as SkeletonStats};
 
-/// A failed call: the library's status code and its message.
+/// Why a call failed: the library's `ca_status` codes (`CA_ERROR_*`, pinned values) as an enum.
+/// `Unknown` keeps a code this crate does not name (a newer library's).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Status {
+    /// An option is out of range.
+    InvalidArgument,
+    /// A required pointer is NULL.
+    NullPointer,
+    /// A struct_size this library does not know.
+    StructSize,
+    /// NaN/Inf coordinate, out-of-range index, bad normal, an array whose length does not match.
+    InvalidInput,
+    /// Empty, zero area, too few distinct points, coplanar.
+    DegenerateInput,
+    /// Some samples are covered by no candidate ball.
+    Uncoverable,
+    /// The Delaunay / power diagram (Qhull) failed.
+    Geometry,
+    /// The set-cover solver (CBC) failed.
+    Solver,
+    /// The progress closure or a cancel request stopped the call.
+    Cancelled,
+    OutOfMemory,
+    BufferTooSmall,
+    /// A bug: please report it with the input.
+    Internal,
+    /// No inner candidate ball was found.
+    NoCandidates,
+    /// The context's time limit ran out.
+    TimeLimit,
+    Unknown(i32),
+}
+
+impl Status {
+    /// The status of a `ca_status` code (not `CA_OK`, which is no error).
+    pub fn from_code(code: i32) -> Status {
+        match code {
+            sys::CA_ERROR_INVALID_ARGUMENT => Status::InvalidArgument,
+            sys::CA_ERROR_NULL_POINTER => Status::NullPointer,
+            sys::CA_ERROR_STRUCT_SIZE => Status::StructSize,
+            sys::CA_ERROR_INVALID_INPUT => Status::InvalidInput,
+            sys::CA_ERROR_DEGENERATE_INPUT => Status::DegenerateInput,
+            sys::CA_ERROR_UNCOVERABLE => Status::Uncoverable,
+            sys::CA_ERROR_GEOMETRY => Status::Geometry,
+            sys::CA_ERROR_SOLVER => Status::Solver,
+            sys::CA_ERROR_CANCELLED => Status::Cancelled,
+            sys::CA_ERROR_OUT_OF_MEMORY => Status::OutOfMemory,
+            sys::CA_ERROR_BUFFER_TOO_SMALL => Status::BufferTooSmall,
+            sys::CA_ERROR_INTERNAL => Status::Internal,
+            sys::CA_ERROR_NO_CANDIDATES => Status::NoCandidates,
+            sys::CA_ERROR_TIME_LIMIT => Status::TimeLimit,
+            other => Status::Unknown(other),
+        }
+    }
+
+    /// The `ca_status` code.
+    pub fn code(self) -> i32 {
+        match self {
+            Status::InvalidArgument => sys::CA_ERROR_INVALID_ARGUMENT,
+            Status::NullPointer => sys::CA_ERROR_NULL_POINTER,
+            Status::StructSize => sys::CA_ERROR_STRUCT_SIZE,
+            Status::InvalidInput => sys::CA_ERROR_INVALID_INPUT,
+            Status::DegenerateInput => sys::CA_ERROR_DEGENERATE_INPUT,
+            Status::Uncoverable => sys::CA_ERROR_UNCOVERABLE,
+            Status::Geometry => sys::CA_ERROR_GEOMETRY,
+            Status::Solver => sys::CA_ERROR_SOLVER,
+            Status::Cancelled => sys::CA_ERROR_CANCELLED,
+            Status::OutOfMemory => sys::CA_ERROR_OUT_OF_MEMORY,
+            Status::BufferTooSmall => sys::CA_ERROR_BUFFER_TOO_SMALL,
+            Status::Internal => sys::CA_ERROR_INTERNAL,
+            Status::NoCandidates => sys::CA_ERROR_NO_CANDIDATES,
+            Status::TimeLimit => sys::CA_ERROR_TIME_LIMIT,
+            Status::Unknown(code) => code,
+        }
+    }
+}
+
+/// A failed call: the library's status and its message.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Error {
-    pub status: i32,
+    pub status: Status,
     pub message: String,
+}
+
+impl Error {
+    fn new(status: Status, message: String) -> Error {
+        Error { status, message }
+    }
 }
 
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{} ({})", self.message, status_string(self.status))
+        write!(f, "{} ({})", self.message, status_string(self.status.code()))
     }
 }
 
@@ -72,7 +155,7 @@ fn check(status: i32) -> Result<()> {
     if status == sys::CA_OK {
         Ok(())
     } else {
-        Err(Error { status, message: status_string(status) })
+        Err(Error::new(Status::from_code(status), status_string(status)))
     }
 }
 
@@ -126,14 +209,22 @@ impl<'a> Surface<'a> {
         Surface { raw, _data: PhantomData }
     }
 
-    /// An oriented point cloud: positions and outward normals (the same count, or the call fails).
-    pub fn points(positions: &'a [[f64; 3]], normals: &'a [[f64; 3]]) -> Surface<'a> {
+    /// A point cloud: positions and one normal per point, or no normals (an empty slice: estimated
+    /// by the library). Normals of another length are `Status::InvalidInput`.
+    pub fn points(positions: &'a [[f64; 3]], normals: &'a [[f64; 3]]) -> Result<Surface<'a>> {
+        if !normals.is_empty() && normals.len() != positions.len() {
+            return Err(Error::new(Status::InvalidInput,
+                                  format!("{} normals for {} points (one per point, or none)", normals.len(),
+                                          positions.len())));
+        }
         let mut raw: sys::ca_surface_view = defaults!(sys::ca_surface_view, sys::ca_surface_view_defaults);
         raw.positions = positions.as_ptr() as *const f64;
         raw.vertex_count = positions.len();
-        raw.normals = if normals.len() == positions.len() { normals.as_ptr() as *const f64 } else { ptr::null() };
-        raw.normal_count = if raw.normals.is_null() { 0 } else { normals.len() };
-        Surface { raw, _data: PhantomData }
+        if !normals.is_empty() {
+            raw.normals = normals.as_ptr() as *const f64;
+            raw.normal_count = normals.len();
+        }
+        Ok(Surface { raw, _data: PhantomData })
     }
 }
 
@@ -293,7 +384,7 @@ impl<'a> SelectOptions<'a> {
         self.raw.divide_threshold = samples;
         self
     }
-    /// One entry per sample; non-zero: need not be covered. Lengths are checked by the call.
+    /// One entry per sample; non-zero: need not be covered. [`Context::select`] checks the lengths.
     pub fn ignorable_samples(mut self, m: Option<&'a [u8]>) -> Self {
         self.raw.ignorable_samples = mask(m);
         self.raw.ignorable_samples_count = m.map_or(0, |m| m.len());
@@ -548,7 +639,7 @@ impl Context {
             return Ok(());
         }
         let message = unsafe { cstr(sys::ca_context_last_error(self.ptr())) };
-        Err(Error { status, message: if message.is_empty() { status_string(status) } else { message } })
+        Err(Error::new(Status::from_code(status), if message.is_empty() { status_string(status) } else { message }))
     }
 
     /// Step 1: surface samples and inner candidate balls.
@@ -563,8 +654,7 @@ impl Context {
     pub fn candidates_from_arrays(&self, samples: &[[f64; 3]], centers: &[[f64; 3]], radii: &[f64],
                                   reference_length: f64) -> Result<CandidateSet> {
         if centers.len() != radii.len() {
-            return Err(Error { status: sys::CA_ERROR_INVALID_ARGUMENT,
-                               message: format!("{} centres but {} radii", centers.len(), radii.len()) });
+            return Err(Error::new(Status::InvalidInput, format!("{} centres but {} radii", centers.len(), radii.len())));
         }
         let mut out = ptr::null_mut();
         self.check(unsafe {
@@ -575,8 +665,22 @@ impl Context {
         Ok(CandidateSet { raw: out })
     }
 
-    /// Step 2: the fewest dilated candidate balls covering every sample.
+    /// Step 2: the fewest dilated candidate balls covering every sample. A mask whose length is
+    /// not the set's sample count (ignorable_samples) or ball count (forced_in, forced_out) is
+    /// `Status::InvalidInput`.
     pub fn select(&self, set: &CandidateSet, options: &SelectOptions<'_>) -> Result<Selection> {
+        let raw = &options.raw;
+        let samples = unsafe { sys::ca_candidate_set_sample_count(set.raw) };
+        for (name, array, count, want, per) in [
+            ("ignorable_samples", raw.ignorable_samples, raw.ignorable_samples_count, samples, "sample"),
+            ("forced_in", raw.forced_in, raw.forced_in_count, set.len(), "candidate ball"),
+            ("forced_out", raw.forced_out, raw.forced_out_count, set.len(), "candidate ball"),
+        ] {
+            if !array.is_null() && count != want {
+                return Err(Error::new(Status::InvalidInput,
+                                      format!("{}: {} entries, the set needs one per {} ({})", name, count, per, want)));
+            }
+        }
         let mut out = ptr::null_mut();
         self.check(unsafe { sys::ca_select(self.ptr(), set.raw, &options.raw, &mut out) })?;
         Ok(Selection { raw: out })

@@ -118,13 +118,58 @@ fn defaults_come_from_the_library() {
 fn errors_carry_status_and_message() {
     let ctx = Context::new().unwrap();
     let e = ctx.candidates(&Surface::mesh(&[], &[]), &CandidateOptions::new()).err().unwrap();
-    assert_eq!(e.status, coverage_axis_sys::CA_ERROR_DEGENERATE_INPUT);
+    assert_eq!(e.status, Status::DegenerateInput);
     assert!(!e.message.is_empty());
     let v = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
     let e = ctx.candidates(&Surface::mesh(&v, &[[0, 1, 7]]), &CandidateOptions::new()).err().unwrap();
-    assert_eq!(e.status, coverage_axis_sys::CA_ERROR_INVALID_INPUT, "{}", e);
+    assert_eq!(e.status, Status::InvalidInput, "{}", e);
     let e = Context::builder().threads(-1).build().err().unwrap();
-    assert_eq!(e.status, coverage_axis_sys::CA_ERROR_INVALID_ARGUMENT);
+    assert_eq!(e.status, Status::InvalidArgument);
+    assert_eq!(e.status.code(), coverage_axis_sys::CA_ERROR_INVALID_ARGUMENT);
+    for code in 1..=14 {
+        assert_eq!(Status::from_code(code).code(), code);
+        assert_ne!(Status::from_code(code), Status::Unknown(code));
+    }
+    assert_eq!(Status::from_code(99), Status::Unknown(99));
+}
+
+/// n points on the unit sphere (a Fibonacci spiral); each is its own outward normal.
+fn sphere_points(n: usize) -> Vec<[f64; 3]> {
+    let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
+    (0..n)
+        .map(|i| {
+            let z = 1.0 - 2.0 * (i as f64 + 0.5) / n as f64;
+            let r = (1.0 - z * z).sqrt();
+            [r * (golden * i as f64).cos(), r * (golden * i as f64).sin(), z]
+        })
+        .collect()
+}
+
+#[test]
+fn wrong_lengths_are_errors_before_the_call() {
+    let points = sphere_points(400);
+    // normals of another length are refused, not dropped (which would estimate them instead)
+    for normals in [&points[..10], &points[..399]] {
+        let e = Surface::points(&points, normals).err().expect("wrong-length normals accepted");
+        assert_eq!(e.status, Status::InvalidInput, "{}", e);
+        assert!(e.message.contains(&format!("{} normals for 400 points", normals.len())), "{}", e);
+    }
+    let ctx = Context::builder().threads(1).build().unwrap();
+    let options = CandidateOptions::new().cover_samples(100).voronoi_samples(400);
+    let set = ctx.candidates(&Surface::points(&points, &points).unwrap(), &options).unwrap();
+    assert!(ctx.candidates(&Surface::points(&points, &[]).unwrap(), &options).is_ok());  // no normals: estimated
+    // masks: one entry per sample or candidate ball
+    let short = vec![0u8; set.len() - 1];
+    let e = ctx.select(&set, &SelectOptions::new().forced_in(Some(&short))).err().expect("short mask accepted");
+    assert_eq!(e.status, Status::InvalidInput, "{}", e);
+    assert!(e.message.contains("forced_in"), "{}", e);
+    let long = vec![0u8; set.samples().len() + 1];
+    let e = ctx.select(&set, &SelectOptions::new().ignorable_samples(Some(&long))).err().expect("long mask accepted");
+    assert_eq!(e.status, Status::InvalidInput, "{}", e);
+    let mut forced = vec![0u8; set.len()];
+    forced[0] = 1;
+    let selection = ctx.select(&set, &SelectOptions::new().forced_in(Some(&forced))).unwrap();
+    assert!(selection.indices().contains(&0));
 }
 
 #[test]
@@ -143,13 +188,13 @@ fn progress_closure_and_cancel() {
     // a closure returning false cancels the call
     let stop = Context::builder().progress(|_, _| false).build().unwrap();
     let e = stop.candidates(&Surface::mesh(&v, &f), &CandidateOptions::new()).err().unwrap();
-    assert_eq!(e.status, coverage_axis_sys::CA_ERROR_CANCELLED);
+    assert_eq!(e.status, Status::Cancelled);
 
     // a cancel handle sent to another thread; the request stays in force until cleared
     let handle = ctx.cancel_handle();
     std::thread::spawn(move || handle.cancel()).join().unwrap();
     let e = ctx.candidates(&Surface::mesh(&v, &f), &CandidateOptions::new()).err().unwrap();
-    assert_eq!(e.status, coverage_axis_sys::CA_ERROR_CANCELLED);
+    assert_eq!(e.status, Status::Cancelled);
     ctx.cancel_handle().clear();
     assert!(ctx.candidates(&Surface::mesh(&v, &f), &CandidateOptions::new().cover_samples(300)).is_ok());
 }
