@@ -280,8 +280,8 @@ namespace CoverageAxis
     }
 
     /// <summary>A surface: a triangle mesh (x y z per vertex, i j k per triangle, 0-based) or an
-    /// oriented point cloud (Triangles null, one outward normal per point). Arrays are read during
-    /// a call only.</summary>
+    /// oriented point cloud (Triangles null, one outward normal per point, or Normals null). Arrays
+    /// are read during a call only; their lengths are checked before it (Status.InvalidInput).</summary>
     public sealed class Surface
     {
         public double[] Positions;
@@ -296,9 +296,24 @@ namespace CoverageAxis
             return new Surface { Positions = positions, Normals = normals };
         }
 
+        /// <summary>Throws Status.InvalidInput unless the arrays hold whole points and triangles and
+        /// the normals, when given, one per point.</summary>
+        internal void CheckLengths()
+        {
+            int values = Positions == null ? 0 : Positions.Length;
+            if (values % 3 != 0)
+                throw new CoverageAxisException(Status.InvalidInput, "Positions: " + values + " values, not x y z per point");
+            if (Triangles != null && Triangles.Length % 3 != 0)
+                throw new CoverageAxisException(Status.InvalidInput, "Triangles: " + Triangles.Length + " values, not i j k per triangle");
+            if (Normals != null && Normals.Length != values)
+                throw new CoverageAxisException(Status.InvalidInput, "Normals: " + Normals.Length / 3 + " normals (" +
+                    Normals.Length + " values) for " + values / 3 + " points; one per point, or null");
+        }
+
         /// <summary>Pins the arrays and calls f with their view.</summary>
         internal T With<T>(Func<Native.SurfaceView, T> f)
         {
+            CheckLengths();
             var view = new Native.SurfaceView();
             Native.CheckDefaults(Native.ca_surface_view_defaults(ref view, Native.SizeOf<Native.SurfaceView>()), "ca_surface_view");
             var pins = new[] { Pinning.Pin(Positions), Pinning.Pin(Triangles), Pinning.Pin(Normals) };
@@ -461,11 +476,16 @@ namespace CoverageAxis
                        () => new CandidateSet(h));
         }
 
-        /// <summary>Step 2: the fewest dilated candidate balls that cover every sample.</summary>
+        /// <summary>Step 2: the fewest dilated candidate balls that cover every sample. A mask whose
+        /// length is not the set's SampleCount (IgnorableSamples) or Count (ForcedIn, ForcedOut)
+        /// throws Status.InvalidInput.</summary>
         public Selection Select(CandidateSet set, SelectOptions options = null,
                                 CancellationToken token = default(CancellationToken))
         {
             options = options ?? new SelectOptions();
+            CheckMask(options.IgnorableSamples, "IgnorableSamples", set.SampleCount, "sample");
+            CheckMask(options.ForcedIn, "ForcedIn", set.Count, "candidate ball");
+            CheckMask(options.ForcedOut, "ForcedOut", set.Count, "candidate ball");
             var o = options.Raw;
             var pins = new[] { Pinning.Pin(options.IgnorableSamples), Pinning.Pin(options.ForcedIn), Pinning.Pin(options.ForcedOut) };
             try
@@ -483,6 +503,13 @@ namespace CoverageAxis
             {
                 Pinning.Free(pins);
             }
+        }
+
+        static void CheckMask(byte[] mask, string name, int count, string per)
+        {
+            if (mask != null && mask.Length != count)
+                throw new CoverageAxisException(Status.InvalidInput, name + ": " + mask.Length + " entries, the set needs one per " +
+                    per + " (" + count + ")");
         }
 
         /// <summary>Step 3: edges and faces between the selected balls (set: the selection's own).</summary>
@@ -547,6 +574,8 @@ namespace CoverageAxis
         internal CandidateSet(CandidateSetHandle h) { Handle = h; }
         public void Dispose() { Handle.Dispose(); }
         public int Count { get { return (int)Native.ca_candidate_set_count(Handle); } }
+        /// <summary>The surface samples to cover.</summary>
+        public int SampleCount { get { return (int)Native.ca_candidate_set_sample_count(Handle); } }
         /// <summary>x y z per ball.</summary>
         public double[] Centers { get { return Copy.Doubles(Native.ca_candidate_set_centers(Handle), 3 * (ulong)Count); } }
         public double[] Radii { get { return Copy.Doubles(Native.ca_candidate_set_radii(Handle), (ulong)Count); } }

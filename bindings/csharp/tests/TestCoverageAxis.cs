@@ -138,6 +138,54 @@ static class TestCoverageAxis
         catch (CoverageAxisException e) { Check(e.Status == Status.InvalidArgument, e.Message); }
     }
 
+    // n points on the unit sphere (a Fibonacci spiral), x y z each; each is its own outward normal.
+    static double[] SpherePoints(int n)
+    {
+        var p = new double[3 * n];
+        double golden = Math.PI * (3 - Math.Sqrt(5));
+        for (int i = 0; i < n; ++i)
+        {
+            double z = 1 - 2 * (i + 0.5) / n, r = Math.Sqrt(1 - z * z);
+            p[3 * i] = r * Math.Cos(golden * i);
+            p[3 * i + 1] = r * Math.Sin(golden * i);
+            p[3 * i + 2] = z;
+        }
+        return p;
+    }
+
+    static void LengthsAreCheckedBeforeTheCall()
+    {
+        var points = SpherePoints(400);
+        using (var ctx = new Context(threads: 1))
+        {
+            foreach (int n in new[] { 10, 399, 401 })
+            {
+                var normals = SpherePoints(n);
+                try { ctx.Candidates(Surface.Points(points, normals)); Check(false, n + " normals accepted for 400 points"); }
+                catch (CoverageAxisException e)
+                {
+                    Check(e.Status == Status.InvalidInput && e.Message.Contains(n + " normals"), e.Message);
+                }
+            }
+            var options = new CandidateOptions { CoverSamples = 100, VoronoiSamples = 400 };
+            using (var set = ctx.Candidates(Surface.Points(points, points), options))
+            {
+                try { ctx.Select(set, new SelectOptions { ForcedIn = new byte[set.Count - 1] }); Check(false, "short mask accepted"); }
+                catch (CoverageAxisException e) { Check(e.Status == Status.InvalidInput && e.Message.Contains("ForcedIn"), e.Message); }
+                try
+                {
+                    ctx.Select(set, new SelectOptions { IgnorableSamples = new byte[set.SampleCount + 1] });
+                    Check(false, "long mask accepted");
+                }
+                catch (CoverageAxisException e) { Check(e.Status == Status.InvalidInput, e.Message); }
+                var forced = new byte[set.Count];
+                forced[0] = 1;
+                using (var selection = ctx.Select(set, new SelectOptions { ForcedIn = forced }))
+                    Check(selection.Indices.Contains(0u), "the forced ball is selected");
+            }
+        }
+    }
+
     static void ProgressEventAndCancellation()
     {
         var surface = ReadObj(Path.Combine(dataDir, "fox.obj"));
@@ -214,6 +262,7 @@ static class TestCoverageAxis
         Test("layout matches the header", LayoutMatchesTheHeader);
         Test("defaults come from the library", DefaultsComeFromTheLibrary);
         Test("errors carry status and message", ErrorsCarryStatusAndMessage);
+        Test("lengths are checked before the call", LengthsAreCheckedBeforeTheCall);
         Test("fox matches the CLI", FoxMatchesTheCli);
         Test("progress event and cancellation", ProgressEventAndCancellation);
         Test("results outlive context and set", ResultsOutliveContextAndSet);
