@@ -1,10 +1,10 @@
-"""check_julia_layout.py: checks the struct declarations of bindings/julia/CoverageAxis.jl against
+"""check_julia_layout.py: checks the struct declarations of bindings/julia/src/CoverageAxis.jl against
 the C layout printed by tests/abi_layout (Julia is not packaged in Debian 12, so the binding cannot
 run here). Every immutable `struct` whose first field is `struct_size::UInt32` is parsed, laid out
 with C's rules (each field at the next multiple of its alignment, the size rounded up to the largest
 alignment) and compared field by field (names, offsets, sizes) with the printer's output; every
 printed struct must be declared.
-usage: check_julia_layout.py ABI_LAYOUT_EXE CoverageAxis.jl"""
+usage: check_julia_layout.py ABI_LAYOUT_EXE bindings/julia/src/CoverageAxis.jl"""
 import re
 import sys
 

@@ -1,7 +1,9 @@
-# CoverageAxis.jl: the Julia binding of the coverage-axis C ABI (include/coverage_axis.h, ABI 3).
+# CoverageAxis.jl: the Julia binding of the coverage-axis C ABI (include/coverage_axis.h, ABI 3),
+# the module of the package in bindings/julia (Project.toml; tests in test/runtests.jl).
 # ccall wrappers over libcoverage_axis; the C structs are declared field for field (checked
 # against the C compiler's layout by tests/abi_layout/check_julia_layout.py, since Julia is not
-# packaged in Debian 12 and cannot run in this project's CI). Results are mutable objects with
+# packaged in Debian 12 and cannot run in this project's CI). The lengths of the arrays passed in
+# are checked before each call (CoverageAxisError with CA_ERROR_INVALID_INPUT). Results are mutable objects with
 # finalizers that destroy the C object; their arrays are zero-copy `unsafe_wrap`s inside an
 # `OwnedArray` that keeps the owning result alive. Options are keyword arguments applied on top of
 # the library's defaults (ca_*_defaults). Indices (triangles in, edges and faces out) are 0-based,
@@ -15,6 +17,7 @@ export Context, candidates, select, connect, skeletonize, evaluate, cancel!, cle
 const libcoverage_axis = get(ENV, "COVERAGE_AXIS_LIBRARY", "libcoverage_axis")
 const ABI_VERSION = 3  # the ABI whose layouts are declared below
 const CA_OK = Int32(0)
+const CA_ERROR_INVALID_INPUT = Int32(4)
 const CA_ERROR_CANCELLED = Int32(9)
 
 # ---- the C structs (names: the header's without ca_, in CamelCase) ----------------------------
@@ -346,10 +349,16 @@ function stats(s::Skeleton)
 end
 
 # ---- the steps --------------------------------------------------------------------------------
+invalid_input(message) = throw(CoverageAxisError(CA_ERROR_INVALID_INPUT, message))
+
 # A view of the caller's arrays (3×n positions, 3×m 0-based UInt32 triangles or nothing, 3×n
 # normals or nothing); the arrays must be preserved around the call that reads it.
 function surface_view(positions::Matrix{Float64}, triangles, normals)
-    size(positions, 1) == 3 || throw(ArgumentError("positions must be 3×n"))
+    size(positions, 1) == 3 || invalid_input("positions must be 3×n, not $(size(positions, 1))×$(size(positions, 2))")
+    triangles === nothing || size(triangles, 1) == 3 ||
+        invalid_input("triangles must be 3×m, not $(size(triangles, 1))×$(size(triangles, 2))")
+    normals === nothing || size(normals) == size(positions) ||
+        invalid_input("normals: $(size(normals, 2)) for $(size(positions, 2)) points (3×n, one per point, or nothing)")
     with(defaults(SurfaceView); positions=pointer(positions), vertex_count=size(positions, 2),
          triangles=triangles === nothing ? Ptr{UInt32}(C_NULL) : pointer(triangles),
          triangle_count=triangles === nothing ? 0 : size(triangles, 2),
@@ -362,8 +371,10 @@ as_matrix(::Type{T}, a) where {T} = a === nothing ? nothing : a isa Matrix{T} ? 
 """
     candidates(ctx, positions, triangles=nothing; normals=nothing, options...)
 
-Step 1. positions 3×n; triangles 3×m 0-based (a mesh) or `nothing` with 3×n outward `normals`
-(a point cloud). Options: the fields of `ca_candidate_options` (cover_samples, seed, ...).
+Step 1. positions 3×n; triangles 3×m 0-based (a mesh) or `nothing` with 3×n outward `normals`,
+one per point, or `nothing` (a point cloud). Options: the fields of `ca_candidate_options`
+(cover_samples, seed, ...). Arrays of other shapes throw `CoverageAxisError` (status 4,
+CA_ERROR_INVALID_INPUT) before the library is called.
 """
 function candidates(ctx::Context, positions, triangles=nothing; normals=nothing, options...)
     p, t, n = as_matrix(Float64, positions), as_matrix(UInt32, triangles), as_matrix(Float64, normals)
@@ -381,11 +392,16 @@ end
     select(ctx, set; options...)
 
 Step 2: the fewest dilated balls covering every sample. Options: the fields of
-`ca_select_options` (delta, solver, effort, time_limit_s, ...); masks as Vector{UInt8}.
+`ca_select_options` (delta, solver, effort, time_limit_s, ...); masks as Vector{UInt8}, one entry
+per sample (`ignorable_samples`) or candidate ball (`forced_in`, `forced_out`).
 """
 function select(ctx::Context, set::CandidateSet; ignorable_samples=nothing, forced_in=nothing, forced_out=nothing,
                 options...)
     masks = (ignorable_samples, forced_in, forced_out)
+    for (name, m, n) in (("ignorable_samples", ignorable_samples, sample_count(set)),
+                         ("forced_in", forced_in, length(set)), ("forced_out", forced_out, length(set)))
+        m === nothing || length(m) == n || invalid_input("$name: $(length(m)) entries, the set needs $n")
+    end
     ptrs = map(m -> m === nothing ? Ptr{UInt8}(C_NULL) : pointer(m::Vector{UInt8}), masks)
     counts = map(m -> m === nothing ? 0 : length(m), masks)
     o = with(defaults(SelectOptions); ignorable_samples=ptrs[1], forced_in=ptrs[2], forced_out=ptrs[3],
