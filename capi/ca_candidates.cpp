@@ -68,6 +68,7 @@ ca_status ca_candidates(ca_context* ctx, const ca_surface_view* surface, const c
         co.random_candidates = o.random_candidates;
         co.seed = o.seed;
         co.connect_samples = o.connect_samples;
+        co.volumetric_only = o.volumetric_only != 0;
         co.threads = ctx->desc.threads;
         capi::Pending<ca_candidate_set> res(capi::make_result<ca_candidate_set>(ctx));
         st = ca::generate_candidates(std::move(surf), co, monitor, res.obj->core);
@@ -75,6 +76,11 @@ ca_status ca_candidates(ca_context* ctx, const ca_surface_view* surface, const c
         publish(res.obj);
         ctx->log(1, std::to_string(res.obj->core.cover_samples.size()) + " surface samples, " +
                         std::to_string(res.obj->core.balls.size()) + " candidate balls");
+        if (res.obj->core.surface_balls)
+            ctx->log(1, std::to_string(res.obj->core.surface_balls) +
+                            " surface balls for samples no inner ball reaches (open sheets or thin parts)");
+        if (res.obj->core.delaunay_failed)
+            ctx->log(2, "the Delaunay step failed (Qhull, after its retries); the candidates are fallback and surface balls");
         *out = res.release();
         return Status::success();
     });

@@ -78,6 +78,9 @@ ca_status ca_connect(ca_context* ctx, const ca_candidate_set* set, const ca_sele
         s.fit_uncovered = fs.uncovered;
         s.genus = report.genus;
         s.thin_handles = report.thin_handles;
+        s.surface_balls = report.surface_balls;
+        s.medial_balls = sk.balls.size() - report.surface_balls;
+        s.open_parts = report.open_parts;
         *out = res.release();
         return Status::success();
     });

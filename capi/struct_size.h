@@ -96,6 +96,22 @@ struct ca_select_options {
 };
 }  // namespace abi2_first
 
+// ---- as last published in ABI 2 (before ABI 3 appended to them) ----
+namespace abi2 {
+struct ca_candidate_options {
+    uint32_t struct_size;
+    int32_t generator;
+    uint32_t cover_samples, voronoi_samples, random_candidates;
+    uint64_t seed;
+    uint32_t connect_samples;
+};
+struct ca_skeleton_stats {
+    abi2_first::ca_skeleton_stats abi2_first_fields;
+    int64_t genus;
+    uint64_t thin_handles;
+};
+}  // namespace abi2
+
 // Published sizes of each struct, first (ABI 1) to current. A new ABI version appends its size;
 // appended fields must start at or after the previous size (checked below), so a caller's
 // struct_size tells exactly which fields it has.
@@ -108,14 +124,14 @@ template <class T> struct Published;
 CA_PUBLISHED(ca_context_desc, sizeof(abi1::ca_context_desc), sizeof(abi2_first::ca_context_desc),
              sizeof(ca_context_desc))
 CA_PUBLISHED(ca_surface_view, sizeof(abi1::ca_surface_view), sizeof(ca_surface_view))
-CA_PUBLISHED(ca_candidate_options, sizeof(ca_candidate_options))
+CA_PUBLISHED(ca_candidate_options, sizeof(abi2::ca_candidate_options), sizeof(ca_candidate_options))
 CA_PUBLISHED(ca_select_options, sizeof(abi1::ca_select_options), sizeof(abi2_first::ca_select_options),
              sizeof(ca_select_options))
 CA_PUBLISHED(ca_select_stats, sizeof(abi1::ca_select_stats), sizeof(abi2_first::ca_select_stats),
              sizeof(ca_select_stats))
 CA_PUBLISHED(ca_connect_options, sizeof(abi1::ca_connect_options), sizeof(ca_connect_options))
 CA_PUBLISHED(ca_skeleton_stats, sizeof(abi1::ca_skeleton_stats), sizeof(abi2_first::ca_skeleton_stats),
-             sizeof(ca_skeleton_stats))
+             sizeof(abi2::ca_skeleton_stats), sizeof(ca_skeleton_stats))
 CA_PUBLISHED(ca_skeleton_view, sizeof(ca_skeleton_view))
 CA_PUBLISHED(ca_evaluate_options, sizeof(ca_evaluate_options))
 CA_PUBLISHED(ca_evaluation, sizeof(ca_evaluation))
@@ -154,6 +170,12 @@ static_assert(offsetof(ca_skeleton_stats, fitted) == offsetof(abi2_first::ca_ske
                   offsetof(ca_skeleton_stats, genus) >= sizeof(abi2_first::ca_skeleton_stats),
               "ca_skeleton_stats: its first ABI 2 layout is a prefix of the current one");
 
+static_assert(offsetof(ca_candidate_options, connect_samples) == offsetof(abi2::ca_candidate_options, connect_samples) &&
+                  offsetof(ca_candidate_options, volumetric_only) >= sizeof(abi2::ca_candidate_options),
+              "ca_candidate_options: ABI 2 is a prefix of ABI 3");
+static_assert(offsetof(ca_skeleton_stats, thin_handles) == offsetof(abi2::ca_skeleton_stats, thin_handles) &&
+                  offsetof(ca_skeleton_stats, medial_balls) >= sizeof(abi2::ca_skeleton_stats),
+              "ca_skeleton_stats: ABI 2 is a prefix of ABI 3");
 template <class T>
 bool published_size(uint32_t size) {
     for (uint32_t s : Published<T>::sizes)

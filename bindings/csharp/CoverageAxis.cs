@@ -29,7 +29,7 @@ namespace CoverageAxis
     {
         const string Lib = "coverage_axis";
         /// <summary>The ABI version whose layouts these declarations follow.</summary>
-        public const uint AbiVersion = 2;
+        public const uint AbiVersion = 3;
 
         [UnmanagedFunctionPointer(CallingConvention.Cdecl)]
         public delegate void LogFn(IntPtr user, int level, IntPtr message);
@@ -67,6 +67,8 @@ namespace CoverageAxis
             public uint cover_samples, voronoi_samples, random_candidates;
             public ulong seed;
             public uint connect_samples;
+            public uint reserved_abi2_tail;  // ABI 3: the ABI 2 layout's tail padding
+            public int volumetric_only;      // ABI 3
         }
 
         [StructLayout(LayoutKind.Sequential)]
@@ -122,6 +124,7 @@ namespace CoverageAxis
             public int fitted;
             public long genus;           // ABI 2 (appended after fitted)
             public ulong thin_handles;
+            public ulong medial_balls, surface_balls, open_parts;   // ABI 3
         }
 
         [StructLayout(LayoutKind.Sequential)]

@@ -13,7 +13,7 @@ export Context, candidates, select, connect, skeletonize, evaluate, cancel!, cle
 
 # The library's path: COVERAGE_AXIS_LIBRARY, else the loader's search path.
 const libcoverage_axis = get(ENV, "COVERAGE_AXIS_LIBRARY", "libcoverage_axis")
-const ABI_VERSION = 2  # the ABI whose layouts are declared below
+const ABI_VERSION = 3  # the ABI whose layouts are declared below
 const CA_OK = Int32(0)
 const CA_ERROR_CANCELLED = Int32(9)
 
@@ -53,6 +53,8 @@ struct CandidateOptions
     random_candidates::UInt32
     seed::UInt64
     connect_samples::UInt32
+    reserved_abi2_tail::UInt32   # ABI 3: the ABI 2 layout's tail padding
+    volumetric_only::Int32       # ABI 3
 end
 
 struct SelectOptions
@@ -127,6 +129,9 @@ struct SkeletonStats
     fitted::Int32
     genus::Int64           # ABI 2 (appended after fitted)
     thin_handles::UInt64
+    medial_balls::UInt64   # ABI 3
+    surface_balls::UInt64
+    open_parts::UInt64
 end
 
 struct SkeletonView

@@ -18,7 +18,7 @@ from ctypes import POINTER, CFUNCTYPE, c_char_p, c_double, c_int32, c_size_t, c_
 from ._structs import (_CandidateOptions, _ConnectOptions, _ContextDesc, _EvaluateOptions, _Evaluation,
                        _SelectOptions, _SelectStats, _SkeletonStats, _SkeletonView, _SurfaceView)
 
-ABI_VERSION = 2
+ABI_VERSION = 3
 
 # the header's pinned status codes, CA_OK = 0 ... CA_ERROR_TIME_LIMIT = 14
 STATUS_NAMES = ("CA_OK", "CA_ERROR_INVALID_ARGUMENT", "CA_ERROR_NULL_POINTER", "CA_ERROR_STRUCT_SIZE",

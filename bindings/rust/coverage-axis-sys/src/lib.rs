@@ -8,7 +8,7 @@
 use std::os::raw::{c_char, c_void};
 
 /// The ABI version whose struct layouts this crate declares.
-pub const CA_ABI_VERSION: u32 = 2;
+pub const CA_ABI_VERSION: u32 = 3;
 
 pub type ca_status = i32;
 pub const CA_OK: ca_status = 0;
@@ -139,6 +139,10 @@ ca_struct!(ca_candidate_options {
     random_candidates: u32,
     seed: u64,
     connect_samples: u32,
+    /// ABI 3: the ABI 2 layout's tail padding
+    reserved_abi2_tail: u32,
+    /// ABI 3
+    volumetric_only: i32,
 });
 
 ca_struct!(ca_select_options {
@@ -228,6 +232,10 @@ ca_struct!(#[derive(Debug, Default)] ca_skeleton_stats {
     genus: i64,
     /// ABI 2
     thin_handles: u64,
+    /// ABI 3
+    medial_balls: u64,
+    surface_balls: u64,
+    open_parts: u64,
 });
 
 ca_struct!(ca_skeleton_view {
