@@ -40,6 +40,9 @@ void publish(ca_skeleton& r, const ca::ConnectResult& c, const ca::Normalization
     s.fit_uncovered = c.fit.uncovered;
     s.genus = c.report.genus;
     s.thin_handles = c.report.thin_handles;
+    s.surface_balls = c.report.surface_balls;
+    s.medial_balls = sk.balls.size() - c.report.surface_balls;
+    s.open_parts = c.report.open_parts;
 }
 
 }  // namespace

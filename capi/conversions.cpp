@@ -124,6 +124,7 @@ ca::CandidateOptions to_core(const ca_candidate_options& o, int32_t threads) {
     c.random_candidates = o.random_candidates;
     c.seed = o.seed;
     c.connect_samples = o.connect_samples;
+    c.volumetric_only = o.volumetric_only != 0;
     c.threads = threads;
     return c;
 }
@@ -178,6 +179,7 @@ ca_candidate_options to_c(const ca::CandidateOptions& c) {
     o.random_candidates = c.random_candidates;
     o.seed = c.seed;
     o.connect_samples = c.connect_samples;
+    o.volumetric_only = c.volumetric_only ? 1 : 0;
     return o;
 }
 

@@ -96,16 +96,27 @@ struct ca_select_options {
 };
 }  // namespace abi2_first
 
-// ---- as last published in ABI 2: ca_surface_view and ca_select_options before their ABI 3 counts
-// were appended ----
+// ---- as last published in ABI 2 (before ABI 3 appended to them) ----
 namespace abi2 {
 struct ca_surface_view {
     abi1::ca_surface_view abi1_fields;
     int32_t point_normals;
 };
+struct ca_candidate_options {
+    uint32_t struct_size;
+    int32_t generator;
+    uint32_t cover_samples, voronoi_samples, random_candidates;
+    uint64_t seed;
+    uint32_t connect_samples;
+};
 struct ca_select_options {
     abi2_first::ca_select_options abi2_first_fields;
     int32_t probe_fit;
+};
+struct ca_skeleton_stats {
+    abi2_first::ca_skeleton_stats abi2_first_fields;
+    int64_t genus;
+    uint64_t thin_handles;
 };
 }  // namespace abi2
 
@@ -127,14 +138,14 @@ CA_PUBLISHED(ca_context_desc, {1, sizeof(abi1::ca_context_desc)}, {2, sizeof(abi
              {2, sizeof(ca_context_desc)})
 CA_PUBLISHED(ca_surface_view, {1, sizeof(abi1::ca_surface_view)}, {2, sizeof(abi2::ca_surface_view)},
              {3, sizeof(ca_surface_view)})
-CA_PUBLISHED(ca_candidate_options, {1, sizeof(ca_candidate_options)})
+CA_PUBLISHED(ca_candidate_options, {1, sizeof(abi2::ca_candidate_options)}, {3, sizeof(ca_candidate_options)})
 CA_PUBLISHED(ca_select_options, {1, sizeof(abi1::ca_select_options)}, {2, sizeof(abi2_first::ca_select_options)},
              {2, sizeof(abi2::ca_select_options)}, {3, sizeof(ca_select_options)})
 CA_PUBLISHED(ca_select_stats, {1, sizeof(abi1::ca_select_stats)}, {2, sizeof(abi2_first::ca_select_stats)},
              {2, sizeof(ca_select_stats)})
 CA_PUBLISHED(ca_connect_options, {1, sizeof(abi1::ca_connect_options)}, {2, sizeof(ca_connect_options)})
 CA_PUBLISHED(ca_skeleton_stats, {1, sizeof(abi1::ca_skeleton_stats)}, {2, sizeof(abi2_first::ca_skeleton_stats)},
-             {2, sizeof(ca_skeleton_stats)})
+             {2, sizeof(abi2::ca_skeleton_stats)}, {3, sizeof(ca_skeleton_stats)})
 CA_PUBLISHED(ca_skeleton_view, {1, sizeof(ca_skeleton_view)})
 CA_PUBLISHED(ca_evaluate_options, {1, sizeof(ca_evaluate_options)})
 CA_PUBLISHED(ca_evaluation, {1, sizeof(ca_evaluation)})
@@ -178,6 +189,13 @@ static_assert(offsetof(ca_skeleton_stats, method) == offsetof(abi1::ca_skeleton_
 static_assert(offsetof(ca_skeleton_stats, fitted) == offsetof(abi2_first::ca_skeleton_stats, fitted) &&
                   offsetof(ca_skeleton_stats, genus) >= sizeof(abi2_first::ca_skeleton_stats),
               "ca_skeleton_stats: its first ABI 2 layout is a prefix of the current one");
+
+static_assert(offsetof(ca_candidate_options, connect_samples) == offsetof(abi2::ca_candidate_options, connect_samples) &&
+                  offsetof(ca_candidate_options, volumetric_only) >= sizeof(abi2::ca_candidate_options),
+              "ca_candidate_options: ABI 2 is a prefix of ABI 3");
+static_assert(offsetof(ca_skeleton_stats, thin_handles) == offsetof(abi2::ca_skeleton_stats, thin_handles) &&
+                  offsetof(ca_skeleton_stats, medial_balls) >= sizeof(abi2::ca_skeleton_stats),
+              "ca_skeleton_stats: ABI 2 is a prefix of ABI 3");
 
 template <class T>
 bool published_size(uint32_t size) {

@@ -71,8 +71,9 @@ extern "C" {
 #define CA_VERSION_NUMBER (CA_VERSION_MAJOR * 10000 + CA_VERSION_MINOR * 100 + CA_VERSION_PATCH)
 /* ABI 2: structs grow by appending (see struct_size above); *_init became static inline over
    the exported ca_*_defaults; ca_context_desc.progress_interval_s and three ca_select_stats
-   fields were appended. ABI 3: every array the library reads has a count (ca_surface_view.
-   normal_count, the ca_select_options mask counts). */
+   fields were appended. ABI 3: fields appended to ca_candidate_options and ca_skeleton_stats
+   (surface balls), and every array the library reads has a count (ca_surface_view.normal_count,
+   the ca_select_options mask counts). */
 #define CA_ABI_VERSION 3
 
 CA_API uint32_t ca_version(void);     /* CA_VERSION_NUMBER of the linked library */
@@ -195,6 +196,14 @@ typedef struct ca_candidate_options {
     uint64_t seed;               /* default 1; the same seed gives the same result */
     uint32_t connect_samples;    /* meshes: surface samples for the power-diagram connection;
                                     default 10000; 0 = reuse the Voronoi samples */
+    uint32_t reserved_abi2_tail; /* ABI 3. The tail padding of the ABI 2 layout, never read (a caller of
+                                    ABI 2 may leave it uninitialised) */
+    int32_t volumetric_only;     /* ABI 3. 0 (default): a cover sample that no inner ball reaches (open
+                                    sheets, cards, planes, single-sided or very thin parts) gets a
+                                    surface ball: centred on the surface there, radius half the local
+                                    thickness of a thin two-sided part, else 0; the cover then always
+                                    exists. 1: inner balls only; such samples make ca_select return
+                                    CA_ERROR_UNCOVERABLE, and a flat mesh CA_ERROR_NO_CANDIDATES */
 } ca_candidate_options;
 
 CA_API ca_status ca_candidate_options_defaults(ca_candidate_options* options, uint32_t struct_size); /* the defaults named above */
@@ -413,6 +422,11 @@ typedef struct ca_skeleton_stats {
     uint64_t thin_handles;       /* ABI 2. max(0, genus - betti1): handles of the shape that the
                                     skeleton has no loop for (too thin for the dilation); 0 if
                                     the genus is unknown */
+    uint64_t medial_balls;       /* ABI 3. vertices that are inner (medial) balls */
+    uint64_t surface_balls;      /* ABI 3. vertices that are surface balls (ca_candidate_options.
+                                    volumetric_only), joined along the surface */
+    uint64_t open_parts;         /* ABI 3. connected parts of the input mesh with a boundary (sheets,
+                                    cards, open cloth); 0 for point clouds */
 } ca_skeleton_stats;
 
 CA_API ca_status ca_skeleton_stats_get(const ca_skeleton* skeleton, ca_skeleton_stats* stats);

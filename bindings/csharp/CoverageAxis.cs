@@ -68,6 +68,8 @@ namespace CoverageAxis
             public uint cover_samples, voronoi_samples, random_candidates;
             public ulong seed;
             public uint connect_samples;
+            public uint reserved_abi2_tail;  // ABI 3: the ABI 2 layout's tail padding
+            public int volumetric_only;      // ABI 3
         }
 
         [StructLayout(LayoutKind.Sequential)]
@@ -124,6 +126,7 @@ namespace CoverageAxis
             public int fitted;
             public long genus;           // ABI 2 (appended after fitted)
             public ulong thin_handles;
+            public ulong medial_balls, surface_balls, open_parts;   // ABI 3
         }
 
         [StructLayout(LayoutKind.Sequential)]

@@ -79,6 +79,9 @@ void print_summary(const cli::Json& j, const cli::RunOptions& o) {
     std::printf("skeleton    %s route: %llu vertices, %llu edges, %llu faces, %llu component(s), %llu isolated, b1 = %lld\n",
                 j["connect"].get<std::string>().c_str(), u("selected"), u("edges"), u("faces"), u("components"), u("isolated"),
                 j["betti1"].get<long long>());
+    if (u("surface_balls") || u("open_parts"))
+        std::printf("            %llu medial and %llu surface balls (on open sheets and thin parts), %llu open part(s)\n",
+                    u("medial_balls"), u("surface_balls"), u("open_parts"));
     if (target_error) {
         const double hd = j["hd_reached"].get<double>();
         std::printf("target      two-sided HD %.3f %% %s %.4g %% of the bbox diagonal (%llu probes)%s\n", hd,

@@ -40,7 +40,7 @@ Failure library_failure(ca_context* ctx, ca_status st, const std::string& step) 
     f.status = name.substr(0, name.find(':'));
     f.code = st;
     f.message = step + " failed: " + (ctx ? ca_context_last_error(ctx) : "");
-    if (st == CA_ERROR_UNCOVERABLE) f.message += "; raise --delta, add candidates, or pass --skip-uncoverable";
+    if (st == CA_ERROR_UNCOVERABLE) f.message += "; raise --delta, add candidates, pass --skip-uncoverable, or drop --volumetric-only";
     f.exit_code = 1;
     return f;
 }
@@ -331,6 +331,9 @@ Outcome run_pipeline(const std::string& input, const RunOptions& o, const Output
     j["betti1"] = ks.betti1;
     j["genus"] = ks.genus;
     j["thin_handles"] = ks.thin_handles;
+    j["medial_balls"] = ks.medial_balls;
+    j["surface_balls"] = ks.surface_balls;
+    j["open_parts"] = ks.open_parts;
     if (ks.fitted) {
         j["fit"] = {{"error_before", ks.fit_error_before}, {"error_after", ks.fit_error_after},
                     {"time_s", ks.fit_time_s}, {"uncovered", ks.fit_uncovered}};

@@ -112,6 +112,10 @@ void add_run_options(CLI::App& app, RunOptions& o) {
     app.add_option("--surface-samples", o.surface_samples_file, "cover these samples (v x y z, input units) instead of sampling")
         ->group(sampling);
     app.add_option("--seed", o.candidates.seed, "random seed")->capture_default_str()->group(sampling);
+    app.add_flag("--volumetric-only",
+                 "inner balls only: no surface balls on open sheets, cards, planes and thin parts (their samples are then "
+                 "uncoverable, a flat mesh has no candidates)")
+        ->group(sampling);
     app.add_option("--normals", o.normals,
                    "a point cloud's normals: given (oriented; checked, re-oriented if their signs disagree) | "
                    "unoriented (re-oriented) | estimate (ignored, estimated from the points)")
@@ -165,6 +169,7 @@ void add_run_options(CLI::App& app, RunOptions& o) {
 bool finish_run_options(const CLI::App& app, RunOptions& o, std::string& error) {
     if (app.count("--scale")) o.select.dilation = CA_DILATE_SCALE;
     o.select.skip_uncoverable = app.count("--skip-uncoverable") ? 1 : 0;
+    o.candidates.volumetric_only = app.count("--volumetric-only") ? 1 : 0;
     // --time-limit bounds the whole run; without it only the solver's default budget applies
     if (app.count("--time-limit")) o.time_limit_s = std::isfinite(o.select.time_limit_s) ? std::max(0.0, o.select.time_limit_s) : 0.0;
     o.select.solver = value_of(kSolvers, o.solver);
@@ -223,6 +228,7 @@ Json options_json(const RunOptions& o) {
                 {"random_candidates", o.candidates.random_candidates},
                 {"connect_samples", o.candidates.connect_samples},
                 {"seed", o.candidates.seed},
+                {"volumetric_only", o.candidates.volumetric_only != 0},
                 {"normals", o.normals},
                 {"surface_samples", file(o.surface_samples_file)},
                 {"dilation", s.dilation == CA_DILATE_SCALE ? "scale" : "offset"},

@@ -1,6 +1,7 @@
 // candidates.cpp: the candidate step's entry (generate_candidates): checks the options, samples the
 // surface, builds the surface structures beside the chosen generator (voronoi.cpp,
-// random_candidates.cpp, point_cloud.cpp), then clamps to hole caps and adds fallback balls.
+// random_candidates.cpp, point_cloud.cpp), then clamps to hole caps and adds fallback balls and
+// surface balls.
 #include "candidates_internal.h"
 
 #include "bvh.h"
@@ -58,17 +59,33 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
         if (!sample_surface(mesh, opt.cover_samples, stream_seed(opt.seed, 1), out.cover_samples, monitor))
             st = monitor.stop_status("sampling");
         out.time_sampling_s = seconds_since(t0);
-        if (st.ok())
+        // A flat mesh bounds no volume: no inner candidates and no 3-D Delaunay step; its cover is
+        // made of surface balls. A Delaunay step Qhull cannot build (its retries included) leaves
+        // the fallback and surface balls to cover the shape.
+        if (st.ok() && !out.surface.flat) {
             st = opt.generator == Generator::voronoi ? mesh_voronoi_candidates(opt, monitor, structures, built, threads, out)
                                                      : mesh_random_candidates(opt, monitor, structures, built, threads, out);
+            if (st.code == Code::geometry_failure || st.code == Code::degenerate_input) {
+                out.delaunay_failed = true;
+                out.balls.clear();
+                out.voronoi_tets.clear();
+                out.voronoi_inner.clear();
+                st = Status::success();
+            }
+        }
         if (!st.ok()) built.abandon = true;
         structures.wait();
         if (st.ok()) st = structures_status(built, monitor);
         const MeshDistance* cap_distance = built.cap_distance.get();
         if (st.ok() && cap_distance && !clamp_to_hole_caps(out, *cap_distance, threads, monitor)) st = monitor.stop_status("hole caps");
         if (st.ok()) {
-            out.fallback_balls = add_fallback_balls(out, *built.winding, *built.distance, cap_distance, threads, monitor);
+            if (!out.surface.flat)
+                out.fallback_balls = add_fallback_balls(out, *built.winding, *built.distance, cap_distance, threads, monitor);
             if (monitor.stopped()) st = monitor.stop_status("fallback balls");
+            if (st.ok() && !opt.volumetric_only) {
+                add_surface_balls(out, built.distance.get(), threads, monitor);
+                if (monitor.stopped()) st = monitor.stop_status("surface balls");
+            }
             out.winding = std::move(built.winding);
             out.distance = std::move(built.distance);
             out.cap_distance = std::move(built.cap_distance);
@@ -79,8 +96,8 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
     if (!st.ok()) return st;
     out.time_candidates_s = seconds_since(t0) - out.time_sampling_s;
     if (out.balls.empty())
-        return fail(Code::no_candidates, "no candidate ball lies inside the shape (is the surface closed around a "
-                                         "volume? try more samples or the random generator)");
+        return fail(Code::no_candidates, "no candidate ball lies inside the shape (volumetric-only: is the surface "
+                                         "closed around a volume? try more samples or the random generator)");
     return Status::success();
 }
 

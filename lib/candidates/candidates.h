@@ -1,7 +1,8 @@
-// candidates.h: step 1 of the pipeline. Surface samples S to cover, and inner candidate balls P:
+// candidates.h: step 1 of the pipeline. Surface samples S to cover, and candidate balls P:
 // inside Voronoi vertices of |C| surface samples (radius = circumradius), random interior points
 // (radius = exact distance to the mesh), or for oriented point clouds the Voronoi vertices on the
-// inner side of all four generating points' normals, with the outlier filter of the paper.
+// inner side of all four generating points' normals, with the outlier filter of the paper; then
+// fallback balls under samples nothing reaches, and surface balls on what has no inside.
 // For meshes it also keeps what the connection step needs: denser surface samples for the
 // power diagram, and the Delaunay tetrahedra of the Voronoi samples with their inner flags
 // (the inner Voronoi diagram = medial mesh of the medial-axis route).
@@ -30,6 +31,9 @@ struct CandidateOptions {
     int32_t threads = 0;    // 0 = all cores
     // Point clouds: drop outlier points (cloud_outliers.cpp) before building anything on them.
     bool filter_outliers = true;
+    // Only inner (volumetric) balls: no surface balls for samples nothing inner reaches
+    // (surface_balls.cpp), which then stay uncoverable as the paper's method has them.
+    bool volumetric_only = false;
 };
 
 // Everything later steps need, in internal (unit-cube) units.
@@ -65,7 +69,13 @@ struct CandidateSet {
     bool noisy_cloud = false;             // point clouds: judged noisy by those two (cloud_local_planes.cpp)
     double orientation_inconsistent = 0;  // point clouds: fraction of orientation probes failing (point_cloud.cpp)
     std::vector<Ball> balls;              // P, undilated medial radii
-    size_t fallback_balls = 0;            // of which added by add_fallback_balls (at the end)
+    size_t fallback_balls = 0;            // of which added by add_fallback_balls (after the generator's)
+    // of which surface balls (surface_balls.cpp): the last ones, on open sheets and thin parts
+    // that no inner ball reaches
+    size_t surface_balls = 0;
+    // Meshes: the Delaunay step of the Voronoi generator failed (Qhull could not build it even
+    // with joggle, e.g. on a nearly flat mesh); the candidates are the fallback and surface balls.
+    bool delaunay_failed = false;
     size_t hole_clamped = 0;              // radii clamped by clamp_to_hole_caps (open meshes)
     double time_sampling_s = 0, time_candidates_s = 0;
 };

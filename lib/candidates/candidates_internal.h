@@ -40,6 +40,17 @@ inline Status structures_status(const SurfaceStructures& built, const Monitor& m
     return built.stopped ? monitor.stop_status("surface structures") : Status::success();
 }
 
+// fallback_balls.cpp: the cover samples no candidate reaches within kFallbackReach: those that no
+// ball's reach covers by the coverage rule (coverage.h), asked per sample of a tree of the ball
+// centres, which stops at the first ball that reaches. None when an input is not finite (as
+// build_coverage refuses it) or `monitor` stopped the queries (the caller tests monitor.stopped()).
+std::vector<size_t> unreached_samples(const CandidateSet& set, int threads, const Monitor& monitor);
+
+// surface_balls.cpp: a surface ball under every cover sample no candidate reaches within
+// kFallbackReach (appended; sets set.surface_balls), radius from the local thickness measured with
+// `distance` (null, or a flat mesh: radius 0). Returns how many; 0 when `monitor` stopped it.
+size_t add_surface_balls(CandidateSet& set, const MeshDistance* distance, int threads, const Monitor& monitor);
+
 // voronoi.cpp: circumcentres of the Delaunay tetrahedra of pts, de-duplicated, within the (slightly
 // grown) bounding box. `accept(unique, raw, raw_tets, keep)` sees the candidate centres (raw, one
 // per tetrahedron in raw_tets) and fills keep[k] for raw[unique[k]]. The tetrahedra are left in `tets`.

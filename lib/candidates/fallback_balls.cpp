@@ -26,7 +26,7 @@
 // above 1/2 on that side but the rays find it clearly enclosed and the other side open, it is
 // grown there by the distances alone (the touching rule above); otherwise on the other side while
 // w > 1/2. Clouds with trusted given normals keep the normal's side.
-#include "candidates.h"
+#include "candidates_internal.h"
 
 #include "coverage.h"
 #include "distance.h"
@@ -41,12 +41,8 @@
 #include <memory>
 
 namespace ca {
-namespace {
+namespace cand {
 
-// The samples no candidate reaches within kFallbackReach: those that no ball's reach covers by
-// the coverage rule (coverage.h), asked per sample of a tree of the ball centres, which stops at
-// the first ball that reaches. None when an input is not finite (as build_coverage refuses it) or
-// `monitor` stopped the queries.
 std::vector<size_t> unreached_samples(const CandidateSet& set, int threads, const Monitor& monitor) {
     std::vector<Vec3> centers(set.balls.size());
     std::vector<double> reach2(set.balls.size());
@@ -73,6 +69,11 @@ std::vector<size_t> unreached_samples(const CandidateSet& set, int threads, cons
         if (!reached[j]) out.push_back(j);
     return out;
 }
+
+}  // namespace cand
+
+namespace {
+using cand::unreached_samples;
 
 // The ball under sample s (unit inward direction -n): false if no point below s is inside.
 // `noise_depth` > 0 (noisy clouds): the inside test is unreliable within that depth, so when no

@@ -214,6 +214,10 @@ Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monito
     noise.untrusted_signs = out.surface.normals_source != NormalSource::given;
     out.fallback_balls = add_cloud_fallback_balls(out, *winding, sample_normals, noise, threads, monitor);
     if (monitor.stopped()) return monitor.stop_status("fallback balls");
+    if (!opt.volumetric_only) {
+        add_surface_balls(out, nullptr, threads, monitor);
+        if (monitor.stopped()) return monitor.stop_status("surface balls");
+    }
     out.cloud_winding = std::move(winding);
     return Status::success();
 }

@@ -50,7 +50,8 @@
 //    before removal and before filling.
 //  * reconnect: if the skeleton has several components, they are joined Kruskal-style by the
 //    shortest segments between balls of different components whose test points (same rule)
-//    are all inside; a connected shape thus gets a connected skeleton unless no such segment
+//    are all inside (on skeletons of more than 200 balls, among each ball's 32 nearest balls:
+//    an asset of many separate parts would otherwise test every pair of balls across parts); a connected shape thus gets a connected skeleton unless no such segment
 //    exists. On the medial route a first pass takes only segments that also pass the envelope
 //    rule, the centre-line pass then joins what is left. On meshes a last pass joins what is
 //    still apart within one connected part of the mesh (each ball belongs to the part nearest
@@ -88,9 +89,11 @@ struct ConnectOptions {
 
 // What the connection did and found out about the shape's topology.
 struct ConnectReport {
-    ConnectMethod method = ConnectMethod::power;  // the route taken (never automatic)
+    ConnectMethod method = ConnectMethod::power;  // the route chosen (never automatic)
     long genus = -1;           // of the input mesh (mesh_topology.h); -1 unknown or a point cloud
     size_t thin_handles = 0;   // max(0, genus - b1): handles with no loop in the skeleton
+    size_t surface_balls = 0;  // skeleton balls that are surface balls (candidates/surface_balls.cpp)
+    size_t open_parts = 0;     // parts of the input mesh with a boundary (mesh_topology.h)
 };
 
 // The route `method` stands for on `set`: itself, or for `automatic` the medial route where the set
@@ -100,6 +103,10 @@ struct ConnectReport {
 ConnectMethod resolve_method(const CandidateSet& set, ConnectMethod method);
 
 // Skeleton in internal units; its balls are the selected balls (undilated radii), in selection order.
+// The selected surface balls (CandidateSet::surface_balls) are left out of the route and the
+// repairs, which work through the shape's volume, and joined along the surface instead
+// (sheet_route.cpp) to each other and to the medial balls whose regions they meet. A route that
+// Qhull cannot build (medial, then power) leaves the balls to the repairs' reconnection.
 // The medial route needs a mesh or a point cloud's winding number: a set from caller arrays gives
 // Code::invalid_argument.
 Status connect_balls(const CandidateSet& set, const Selection& sel, const ConnectOptions& opt,
@@ -135,6 +142,10 @@ namespace detail {
 Status connect_medial(const CandidateSet& set, const Selection& sel, int threads, const Monitor& monitor, Skeleton& out);
 // The power-diagram route's raw edges and faces (power_route.cpp); `out.balls` is already set.
 Status connect_power(const CandidateSet& set, const Selection& sel, const Monitor& monitor, Skeleton& out);
+// The surface balls' edges and triangles along the surface (sheet_route.cpp), added to `s`, whose
+// balls are flagged by `surface_ball`; output canonical.
+Status connect_sheets(const CandidateSet& set, const std::vector<uint8_t>& surface_ball, int threads, const Monitor& monitor,
+                      Skeleton& s);
 
 // ---- the shared repairs (repairs.cpp), in the order connect_balls applies them ----
 // Removes the triangles, then the edges (with their triangles), that fail the inside test.

@@ -20,6 +20,11 @@
 namespace ca {
 namespace detail {
 
+// reconnect: up to this many balls every pair is a candidate join; above it, each ball's
+// kReconnectNeighbours nearest balls.
+constexpr uint32_t kReconnectAllPairs = 200;
+constexpr size_t kReconnectNeighbours = 32;
+
 // Removes the triangles, then the edges (with their triangles), that fail the inside test.
 // `failed` gets the faces that failed it themselves (sorted), which hole filling need not retest.
 bool remove_outside(const InsideTest& test, double h, double tol, bool collapse, int threads, const Monitor& monitor,
@@ -177,9 +182,30 @@ void reconnect(const InsideTest& test, double h, double tol, Skeleton& s, const 
     if (components <= 1) return;
     struct Pair { double d2; uint32_t i, j; };
     std::vector<Pair> pairs;
-    for (uint32_t i = 0; i < n; ++i)
-        for (uint32_t j = i + 1; j < n; ++j)
-            if (uf.find(i) != uf.find(j)) pairs.push_back({(s.balls[i].center - s.balls[j].center).squaredNorm(), i, j});
+    if (n <= kReconnectAllPairs) {
+        for (uint32_t i = 0; i < n; ++i)
+            for (uint32_t j = i + 1; j < n; ++j)
+                if (uf.find(i) != uf.find(j)) pairs.push_back({(s.balls[i].center - s.balls[j].center).squaredNorm(), i, j});
+    } else {
+        // each ball with its nearest balls only: the pairs between parts that never join (an asset of
+        // many separate parts) would otherwise cost n^2 segment tests
+        std::vector<Vec3> centers;
+        for (const Ball& b : s.balls) centers.push_back(b.center);
+        const PointTree tree(centers);
+        std::vector<size_t> idx(kReconnectNeighbours + 1);
+        std::vector<double> d2(kReconnectNeighbours + 1);
+        for (uint32_t i = 0; i < n; ++i) {
+            const size_t found = tree.nearest(centers[i], idx.size(), idx.data(), d2.data());
+            for (size_t k = 0; k < found; ++k) {
+                const uint32_t j = uint32_t(idx[k]);
+                if (j == i || uf.find(i) == uf.find(j)) continue;
+                pairs.push_back({(centers[std::min(i, j)] - centers[std::max(i, j)]).squaredNorm(), std::min(i, j), std::max(i, j)});
+            }
+        }
+        std::sort(pairs.begin(), pairs.end(), [](const Pair& a, const Pair& b) { return a.i != b.i ? a.i < b.i : a.j < b.j; });
+        pairs.erase(std::unique(pairs.begin(), pairs.end(), [](const Pair& a, const Pair& b) { return a.i == b.i && a.j == b.j; }),
+                    pairs.end());
+    }
     std::sort(pairs.begin(), pairs.end(), [](const Pair& a, const Pair& b) {
         return a.d2 != b.d2 ? a.d2 < b.d2 : (a.i != b.i ? a.i < b.i : a.j < b.j);
     });

@@ -53,6 +53,7 @@ MeshTopology mesh_topology(const Mesh& mesh, const std::vector<uint32_t>& weld, 
     // triangles on it, its balance the half-edges up minus down
     const size_t parts = F.size();
     std::vector<uint8_t> manifold(parts, 1);
+    out.part_open.assign(parts, 0);
     bool balanced = true;
     for (uint32_t u = 0; u < nv; ++u) {
         if (monitor.stopped_at(u)) return stopped;
@@ -65,6 +66,7 @@ MeshTopology mesh_topology(const Mesh& mesh, const std::vector<uint32_t>& weld, 
             for (; k != e && (*k >> 1) == w; ++k) ++count, balance += (*k & 1) ? -1 : 1;
             ++E[p];
             if (count != 2) manifold[p] = 0;   // open (1) or non-manifold (> 2) edge
+            if (count == 1) out.part_open[p] = 1;
             if (balance != 0) balanced = false;
         }
     }
@@ -78,6 +80,10 @@ MeshTopology mesh_topology(const Mesh& mesh, const std::vector<uint32_t>& weld, 
         else if (out.genus >= 0) out.genus += out.part_genus[p];
     }
     return out;
+}
+
+size_t MeshTopology::open_parts() const {
+    return size_t(std::count(part_open.begin(), part_open.end(), uint8_t(1)));
 }
 
 MeshTopology mesh_topology(const Mesh& mesh) {

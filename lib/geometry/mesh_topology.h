@@ -26,10 +26,12 @@ struct MeshTopology {
     // characteristic is not that of a closed orientable surface).
     std::vector<long> part_genus;
     std::vector<uint32_t> triangle_part;   // the part of each triangle
+    std::vector<uint8_t> part_open;        // per part: 1 if an edge of it is on one triangle only (a boundary)
     long genus = -1;                       // sum over the parts; -1 if any part is unknown
     // Every edge has as many half-edges one way as the other (and every triangle is valid): the
     // winding number is then an integer off the surface.
     bool closed = false;
+    size_t open_parts() const;             // parts with a boundary (sheets, cards, open cloth)
 };
 
 // From the buckets of the mesh's welded corners (half_edge_buckets with the weld map, or with

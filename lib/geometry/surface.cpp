@@ -114,8 +114,12 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
     if (!(longest > 0)) return fail(Code::degenerate_input, "all input points coincide");
     if (!std::isfinite(longest))
         return fail(Code::invalid_input, "the input's bounding box is too large to represent");
-    if (all_in_one_plane(used, lo, longest))
-        return fail(Code::degenerate_input, "all input points lie in one plane: a medial skeleton needs a solid");
+    // A flat mesh has area, so it has a skeleton: the sheet itself. A flat point cloud carries no
+    // surface the winding number could close around, and its normals say nothing of a side.
+    if (all_in_one_plane(used, lo, longest)) {
+        if (cloud) return fail(Code::degenerate_input, "all points of the cloud lie in one plane: a point cloud needs a solid");
+        out.flat = true;
+    }
 
     if (monitor.stopped()) return monitor.stop_status("surface");
     out.norm.origin = lo;

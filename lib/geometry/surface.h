@@ -27,6 +27,10 @@ struct Surface {
     Mesh mesh;                    // internal units; empty triangles for a point cloud
     std::vector<Vec3> normals;    // point clouds: unit outward normals, one per vertex
     bool point_cloud = false;
+    // Meshes: every vertex lies in one plane (a water plane, a decal, a card). Such a mesh bounds
+    // no volume: it has no inner balls and no 3-D Delaunay step; its skeleton is the sheet itself
+    // (surface balls, candidates/surface_balls.cpp).
+    bool flat = false;
     NormalSource normals_source = NormalSource::none;
     // sign_disagreement (normals.h) of the normals as given (-1: none given or not measured)
     // and of the normals used
@@ -44,8 +48,9 @@ struct Surface {
     Normalization norm;
 };
 
-// Validates raw caller data (finite coordinates, indices in range, non-degenerate, not all in
-// one plane, unit normals for point clouds) and normalises it. `mesh.triangles` empty means a
+// Validates raw caller data (finite coordinates, indices in range, non-degenerate, a point cloud
+// not all in one plane, unit normals for point clouds) and normalises it. A flat mesh is valid
+// and marked `flat`. `mesh.triangles` empty means a
 // point cloud, which takes `normals` (one per vertex, trusted as `trust` says; empty or
 // `estimate`: estimated by PCA and oriented) unless `require_normals` is false (the evaluation
 // only measures distances: normals are dropped). Trusted normals whose signs disagree between

@@ -45,6 +45,11 @@ Status candidates_step(SurfaceInput surface, const CandidateOptions& opt, const 
     if (!st.ok()) return st;
     monitor.note(1, std::to_string(out.cover_samples.size()) + " surface samples, " + std::to_string(out.balls.size()) +
                         " candidate balls");
+    if (out.surface_balls)
+        monitor.note(1, std::to_string(out.surface_balls) +
+                            " surface balls for samples no inner ball reaches (open sheets or thin parts)");
+    if (out.delaunay_failed)
+        monitor.note(2, "the Delaunay step failed (Qhull, after its retries); the candidates are fallback and surface balls");
     return Status::success();
 }
 

@@ -53,6 +53,8 @@ int main(void) {
     FIELD(ca_candidate_options, random_candidates);
     FIELD(ca_candidate_options, seed);
     FIELD(ca_candidate_options, connect_samples);
+    FIELD(ca_candidate_options, reserved_abi2_tail);
+    FIELD(ca_candidate_options, volumetric_only);
     STRUCT(ca_select_options);
     FIELD(ca_select_options, struct_size);
     FIELD(ca_select_options, dilation);
@@ -122,6 +124,9 @@ int main(void) {
     FIELD(ca_skeleton_stats, fitted);
     FIELD(ca_skeleton_stats, genus);
     FIELD(ca_skeleton_stats, thin_handles);
+    FIELD(ca_skeleton_stats, medial_balls);
+    FIELD(ca_skeleton_stats, surface_balls);
+    FIELD(ca_skeleton_stats, open_parts);
     STRUCT(ca_skeleton_view);
     FIELD(ca_skeleton_view, struct_size);
     FIELD(ca_skeleton_view, centers);

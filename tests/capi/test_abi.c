@@ -111,8 +111,18 @@ static void test_bad_input(void) {
     /* every triangle degenerate */
     memset(f, 0, sizeof f);
     CHECK(run_candidates(ctx, box_v, 8, f, 12, NULL, &set) == CA_ERROR_DEGENERATE_INPUT && set == NULL);
-    /* flat: the bottom face of the box only */
-    CHECK(run_candidates(ctx, box_v, 8, box_f, 2, NULL, &set) == CA_ERROR_DEGENERATE_INPUT && set == NULL);
+    /* flat (the bottom face of the box only): a sheet, covered by surface balls on it */
+    CHECK(run_candidates(ctx, box_v, 8, box_f, 2, NULL, &set) == CA_OK && set != NULL);
+    CHECK(ca_candidate_set_count(set) > 0);
+    {
+        size_t i;
+        for (i = 0; set && i < ca_candidate_set_count(set); ++i)
+            CHECK(ca_candidate_set_radii(set)[i] == 0 && ca_candidate_set_centers(set)[3 * i + 2] == box_v[2]);
+    }
+    ca_candidate_set_destroy(set);
+    set = NULL;
+    /* a point cloud in one plane is refused: it encloses nothing and its normals name no side */
+    CHECK(run_candidates(ctx, box_v, 4, NULL, 0, NULL, &set) == CA_ERROR_DEGENERATE_INPUT && set == NULL);
     CHECK(strstr(ca_context_last_error(ctx), "plane") != NULL);
 
     /* point cloud without normals: estimated (8 box corners are too few for any inner ball) */

@@ -7,6 +7,7 @@
 #include "capi_check.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -93,6 +94,25 @@ typedef struct v1_skeleton_stats {
     double time_s;
     int32_t method;
 } v1_skeleton_stats;
+
+/* ca_candidate_options as last published in ABI 2 (ABI 3 appended after its tail padding) */
+typedef struct v2_candidate_options {
+    uint32_t struct_size;
+    int32_t generator;
+    uint32_t cover_samples, voronoi_samples, random_candidates;
+    uint64_t seed;
+    uint32_t connect_samples;
+} v2_candidate_options;
+
+/* ca_skeleton_stats as last published in ABI 2 */
+typedef struct v2_skeleton_stats {
+    v1_skeleton_stats v1;
+    double fit_time_s, fit_error_before, fit_error_after;
+    uint64_t fit_uncovered;
+    int32_t fitted;
+    int64_t genus;
+    uint64_t thin_handles;
+} v2_skeleton_stats;
 
 #define CANARY 0xA5
 static int canary_intact(const unsigned char* p, size_t n) {
@@ -512,6 +532,54 @@ static void test_counts(void) {
     ca_context_destroy(ctx);
 }
 
+/* ABI 3 (surface balls): an ABI 2 caller's candidate options, whose tail padding holds garbage,
+   get surface balls on a flat square (volumetric_only is past its size: the default, off); the
+   current layout with volumetric_only finds no candidate there; ABI 2 skeleton stats are written
+   up to their size only, and the ABI 3 counts say what the skeleton is made of. */
+static void test_surface_ball_layouts(void) {
+    static const double square[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+    static const uint32_t tris[] = {0, 1, 2, 0, 2, 3};
+    ca_context* ctx = NULL;
+    ca_candidate_set* set = NULL;
+    ca_selection* sel = NULL;
+    ca_skeleton* sk = NULL;
+    ca_surface_view v;
+    ca_candidate_options now;
+    ca_skeleton_stats ks;
+    struct { v2_candidate_options o; unsigned char tail[16]; } old;
+    struct { v2_skeleton_stats s; unsigned char tail[64]; } oks;
+    ca_surface_view_init(&v);
+    v.positions = square;
+    v.vertex_count = 4;
+    v.triangles = tris;
+    v.triangle_count = 2;
+    CHECK(sizeof(v2_candidate_options) <= offsetof(ca_candidate_options, volumetric_only));
+    CHECK(ca_context_create(NULL, &ctx) == CA_OK);
+    ca_candidate_options_init(&now);
+    memset(&old, 0xFF, sizeof old);
+    memcpy(&old.o, &now, sizeof old.o);
+    old.o.struct_size = (uint32_t)sizeof old.o;
+    old.o.cover_samples = 300;
+    CHECK(ca_candidates(ctx, &v, (const ca_candidate_options*)(void*)&old, &set) == CA_OK);
+    CHECK(ca_select(ctx, set, NULL, &sel) == CA_OK);
+    CHECK(ca_connect(ctx, set, sel, NULL, &sk) == CA_OK);
+    ks.struct_size = sizeof ks;
+    CHECK(ca_skeleton_stats_get(sk, &ks) == CA_OK && ks.surface_balls == ks.vertices && ks.medial_balls == 0 &&
+          ks.open_parts == 1 && ks.faces > 0);
+    memset(&oks, CANARY, sizeof oks);
+    oks.s.v1.struct_size = (uint32_t)sizeof oks.s;
+    CHECK(ca_skeleton_stats_get(sk, (ca_skeleton_stats*)(void*)&oks) == CA_OK && oks.s.v1.vertices == ks.vertices &&
+          oks.s.thin_handles == ks.thin_handles && canary_intact(oks.tail, sizeof oks.tail));
+    ca_skeleton_destroy(sk);
+    ca_selection_destroy(sel);
+    ca_candidate_set_destroy(set);
+    set = NULL;
+    now.cover_samples = 300;
+    now.volumetric_only = 1;
+    CHECK(ca_candidates(ctx, &v, &now, &set) == CA_ERROR_NO_CANDIDATES && set == NULL);
+    ca_context_destroy(ctx);
+}
+
 int main(void) {
     CHECK(ca_abi_version() == 3 && CA_ABI_VERSION == 3);
     test_old_input_struct();
@@ -522,6 +590,7 @@ int main(void) {
     test_select_layouts();
     test_old_surface_view();
     test_counts();
+    test_surface_ball_layouts();
     printf("test_struct_size: %d checks, %d failed\n", checks, failures);
     return failures ? 1 : 0;
 }

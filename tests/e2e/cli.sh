@@ -173,7 +173,18 @@ printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 nan\nf 1 2 3\nf 1 2 4\nf 1 3 4\nf 2 3 4
 expect_fail 1 "nan" "$tmp/nan.obj" -o "$tmp/nan.ma"
 check "no output after a failure" test ! -e "$tmp/nan.ma"
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n' > "$tmp/flat.obj"
-expect_fail 1 "plane" "$tmp/flat.obj"
+# a flat square is a sheet: its skeleton is made of surface balls on it (radius 0 in the .ma)
+"$tool" "$tmp/flat.obj" -o "$tmp/flat.ma" --json > "$tmp/flat.json"
+check "a flat mesh gives a skeleton of surface balls" python3 -c "
+import json, sys
+j = json.load(open(sys.argv[1]))
+assert j['surface_balls'] == j['selected'] > 0 and j['medial_balls'] == 0 and j['open_parts'] == 1 and j['faces'] > 0
+v = [l.split() for l in open(sys.argv[2]) if l.startswith('v ')]
+assert len(v) == j['selected'] and all(float(x[4]) == 0 and float(x[3]) == 0 for x in v)
+" "$tmp/flat.json" "$tmp/flat.ma"
+"$tool" "$tmp/flat.obj" -o "$tmp/flat.ma" > "$tmp/flat.txt"
+check "the summary counts the surface balls and open parts" grep -q "0 medial and [0-9]* surface balls.*1 open part" "$tmp/flat.txt"
+expect_fail 1 "volumetric-only" "$tmp/flat.obj" --volumetric-only
 : > "$tmp/empty.obj"
 expect_fail 3 "no vertices" "$tmp/empty.obj"
 expect_fail 2 "unknown option" "$data/fox.obj" --frobnicate 1

@@ -33,7 +33,7 @@ check "--help lists the glTF and assimp formats" grep -q "glb; through assimp:.*
 
 # 2. --json failures: one JSON error object on stdout, non-zero exit
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n' > "$tmp/flat.obj"
-"$tool" "$tmp/flat.obj" -o "$tmp/flat.ma" --json > "$tmp/e1.json" 2> "$tmp/err"
+"$tool" "$tmp/flat.obj" -o "$tmp/flat.ma" --volumetric-only --json > "$tmp/e1.json" 2> "$tmp/err"
 code=$?
 check "library failure with --json: exit 1 (got $code)" test "$code" -eq 1
 check "library failure: the error object names a CA_ERROR status and its code" \

@@ -57,6 +57,8 @@ struct CandidateOptions
     random_candidates::UInt32
     seed::UInt64
     connect_samples::UInt32
+    reserved_abi2_tail::UInt32   # ABI 3: the ABI 2 layout's tail padding
+    volumetric_only::Int32       # ABI 3
 end
 
 struct SelectOptions
@@ -134,6 +136,9 @@ struct SkeletonStats
     fitted::Int32
     genus::Int64           # ABI 2 (appended after fitted)
     thin_handles::UInt64
+    medial_balls::UInt64   # ABI 3
+    surface_balls::UInt64
+    open_parts::UInt64
 end
 
 struct SkeletonView

@@ -31,6 +31,7 @@ _STEPS = {
     "evaluate": ("ca_evaluate_options_defaults", _EvaluateOptions),
 }
 _NOT_OPTIONS = {"struct_size", "alloc", "free", "alloc_user", "log", "log_user", "progress", "progress_user",
+                "reserved_abi2_tail",  # padding, never read
                 "ignorable_samples_count", "forced_in_count", "forced_out_count"}  # the masks' lengths
 
 

@@ -23,7 +23,7 @@ class _SurfaceView(Structure):
 class _CandidateOptions(Structure):
     _fields_ = [("struct_size", c_uint32), ("generator", c_int32), ("cover_samples", c_uint32),
                 ("voronoi_samples", c_uint32), ("random_candidates", c_uint32), ("seed", c_uint64),
-                ("connect_samples", c_uint32)]
+                ("connect_samples", c_uint32), ("reserved_abi2_tail", c_uint32), ("volumetric_only", c_int32)]
 
 
 class _SelectOptions(Structure):
@@ -56,7 +56,8 @@ class _SkeletonStats(Structure):
                 ("components", c_uint64), ("isolated", c_uint64), ("betti1", c_int64), ("time_s", c_double),
                 ("method", c_int32), ("fit_time_s", c_double), ("fit_error_before", c_double),
                 ("fit_error_after", c_double), ("fit_uncovered", c_uint64), ("fitted", c_int32),
-                ("genus", c_int64), ("thin_handles", c_uint64)]
+                ("genus", c_int64), ("thin_handles", c_uint64), ("medial_balls", c_uint64),
+                ("surface_balls", c_uint64), ("open_parts", c_uint64)]
 
 
 class _SkeletonView(Structure):

@@ -241,8 +241,14 @@ class CommonTest(unittest.TestCase):
             ca.skeletonize(BOX_V, [(0, 1, -1)])
         self.assertEqual(cm.exception.status, ca.CA_ERROR_INVALID_INPUT)
         with self.assertRaises(ca.CoverageAxisError) as cm:
-            ca.skeletonize(BOX_V[:4], [(0, 1, 2), (0, 2, 3)])
+            ca.skeletonize([(0, 0, 0), (0, 0, 0), (0, 0, 0)], [(0, 1, 2)])
         self.assertEqual(cm.exception.status, ca.CA_ERROR_DEGENERATE_INPUT)
+        # a flat face is a sheet: surface balls (radius 0) unless only inner balls are asked for
+        flat = ca.skeletonize(BOX_V[:4], [(0, 1, 2), (0, 2, 3)])
+        self.assertTrue(len(flat.radii) > 0 and all(r == 0 for r in flat.radii))
+        with self.assertRaises(ca.CoverageAxisError) as cm:
+            ca.skeletonize(BOX_V[:4], [(0, 1, 2), (0, 2, 3)], volumetric_only=1)
+        self.assertEqual(cm.exception.status, ca.CA_ERROR_NO_CANDIDATES)
         with self.assertRaises(ca.CoverageAxisError) as cm:
             ca.skeletonize(BOX_V, BOX_F, delta=-1)
         self.assertEqual(cm.exception.status, ca.CA_ERROR_INVALID_ARGUMENT)

@@ -19,6 +19,7 @@ TEST_CASE("defaults: every field of the C option structs is the C++ option struc
     CHECK(c.random_candidates == cc.random_candidates);
     CHECK(c.seed == cc.seed);
     CHECK(c.connect_samples == cc.connect_samples);
+    CHECK((c.volumetric_only != 0) == cc.volumetric_only);
 
     ca_select_options s;
     ca_select_options_init(&s);

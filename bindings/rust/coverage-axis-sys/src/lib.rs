@@ -141,6 +141,10 @@ ca_struct!(ca_candidate_options {
     random_candidates: u32,
     seed: u64,
     connect_samples: u32,
+    /// ABI 3: the ABI 2 layout's tail padding
+    reserved_abi2_tail: u32,
+    /// ABI 3
+    volumetric_only: i32,
 });
 
 ca_struct!(ca_select_options {
@@ -236,6 +240,10 @@ ca_struct!(#[derive(Debug, Default)] ca_skeleton_stats {
     genus: i64,
     /// ABI 2
     thin_handles: u64,
+    /// ABI 3
+    medial_balls: u64,
+    surface_balls: u64,
+    open_parts: u64,
 });
 
 ca_struct!(ca_skeleton_view {
