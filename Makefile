@@ -7,7 +7,7 @@ DEMO_MODEL ?= tests/data/fox.obj
 DEMO_PREVIEW ?= --up z
 DATA ?= ../shared/data
 
-.PHONY: all deps configure build demo test bench install clean fuzz fuzz-build fuzz-pipeline fuzz-long blender-addon test-blender test-distributed
+.PHONY: all deps configure build demo test bench install package clean fuzz fuzz-build fuzz-pipeline fuzz-long blender-addon test-blender test-distributed
 
 all: build
 
@@ -49,6 +49,11 @@ bench: build
 
 install: build
 	@cmake --install $(BUILD) $(if $(PREFIX),--prefix $(PREFIX),)
+
+# the Debian package (libraries, header, CMake package, pkg-config file, the tool; docs/building.md):
+# $(BUILD)/coverage-axis_<version>_<arch>.deb
+package: build
+	@cmake --build $(BUILD) --target package
 
 # libFuzzer (clang, ASan/UBSan): the C ABI (fuzz_pipeline, seeded with the small bundled meshes in
 # its structured format, tests/fuzz/make_seeds.py) and every file reader (fuzz_read_<format>, seeded

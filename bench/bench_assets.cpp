@@ -97,12 +97,8 @@ double median(std::vector<double> v) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::string root = "../shared/data", only;
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        if (a == "--only" && i + 1 < argc) only = argv[++i];
-        else root = a;
-    }
+    std::string root, only;
+    bench::root_and_only(argc, argv, root, only);
     std::string self = argv[0];
     const std::string tool = self.substr(0, self.find_last_of('/') + 1) + "coverage-axis";
     const std::vector<std::string> folders = {"real/0ad",     "real/flightgear", "real/openarena", "meshes/paper",

@@ -41,6 +41,17 @@ inline bool selected(const std::string& only, const std::string& name) {
     return false;
 }
 
+// The arguments `[DATA_ROOT] [--only NAME[,NAME...]]` (root default ../shared/data).
+inline void root_and_only(int argc, char** argv, std::string& root, std::string& only) {
+    root = "../shared/data";
+    only.clear();
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--only" && i + 1 < argc) only = argv[++i];
+        else root = a;
+    }
+}
+
 inline std::string stem(const std::string& path) {
     std::string n = path.substr(path.find_last_of('/') + 1);
     return n.substr(0, n.find_last_of('.'));

@@ -79,12 +79,8 @@ void run_cloud(const std::string& name, const shapes::Cloud& c) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::string root = "../shared/data", only;
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        if (a == "--only" && i + 1 < argc) only = argv[++i];
-        else root = a;
-    }
+    std::string root, only;
+    bench::root_and_only(argc, argv, root, only);
     std::printf("| cloud | variant | status | normals used | wrong | cpu s |\n|---|---|---|---|---|---|\n");
     std::vector<std::string> files = {std::string(CA_TEST_DATA) + "/fish_points.xyz"};
     for (const std::string& f : bench::list_files(root + "/pointclouds", ".xyz")) files.push_back(f);

@@ -126,12 +126,8 @@ void print_best(bool found, const Probe& best) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::string root = "../shared/data", only;
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        if (a == "--only" && i + 1 < argc) only = argv[++i];
-        else root = a;
-    }
+    std::string root, only;
+    bench::root_and_only(argc, argv, root, only);
     const auto models = bench::list_files(root + "/meshes/paper", ".obj");
     if (models.empty()) {
         std::printf("bench_target_error: no models under %s/meshes/paper, skipped\n", root.c_str());

@@ -207,3 +207,28 @@ TEST_CASE("a closed shape gets no surface balls") {
     CHECK(r.report.surface_balls == 0);
     CHECK(r.report.open_parts == 0);
 }
+
+TEST_CASE("a card modelled as two sheets a hair apart: surface balls midway, half the gap as radius") {
+    // both layers face the same way, so the winding number calls the gap outside (the half-space on
+    // one side of the stack counts as inside and gets inner balls): the samples of the gap's sides
+    // get surface balls by the thin-part rule, which finds the opposite layer along the normal line
+    const double gap = 0.004;   // 0.4 % of the longest side, under the thin-part limit of 1 %
+    ca::Mesh upper = sheet(6, level);
+    for (ca::Vec3& v : upper.vertices) v.z() = gap;
+    Run r;
+    const ca::Status st = run(shapes::merged(sheet(6, level), upper), r);
+    REQUIRE_MESSAGE(st.ok(), st.message);
+    CHECK(!r.set.surface.flat);
+    CHECK(uncovered(r) == 0);
+    REQUIRE(r.set.surface_balls > 0);
+    size_t midway = 0;
+    for (size_t i = r.set.balls.size() - r.set.surface_balls; i < r.set.balls.size(); ++i) {
+        const ca::Ball& b = r.set.balls[i];
+        const ca::Vec3 p = r.set.surface.norm.to_user(b.center);
+        const double radius = b.radius * r.set.surface.norm.scale;
+        midway += std::abs(p.z() - gap / 2) < 1e-3 * gap && std::abs(radius - gap / 2) < 0.05 * gap;
+    }
+    // interior samples see the other layer straight across; near the border the distance may
+    // reach round the edge
+    CHECK(midway >= 0.8 * double(r.set.surface_balls));
+}

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# subproject.sh: the library built from source inside a parent project (subproject/): configured
+# through add_subdirectory and through FetchContent, each of which must look for nothing beyond
+# the library's dependencies (check_finds.py: the tool, bindings, tests and benchmarks are off by
+# default when the project is not the top level) and define no tool or test target; then the
+# add_subdirectory one is built (the library and examples/minimal.c only) and run.
+# usage: subproject.sh SOURCE_DIR [JOBS]
+set -eu
+src=$1
+jobs=${2:-2}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+configure() {  # BUILD_DIR USE_FETCHCONTENT
+  cmake -S "$src/tests/consumer/subproject" -B "$tmp/$1" -DCA_SOURCE_DIR="$src" -DUSE_FETCHCONTENT="$2" \
+    --trace-expand --trace-format=json-v1 --trace-redirect="$tmp/$1.trace" > "$tmp/$1.log" 2>&1 \
+    || { cat "$tmp/$1.log" >&2; exit 1; }
+  python3 "$src/tests/consumer/check_finds.py" "$tmp/$1.trace" "$tmp/$1"
+  targets=$(cmake --build "$tmp/$1" --target help)
+  for target in coverage_axis coverage_axis_shared consumer_subproject; do
+    grep -qx "\.\.\. $target" <<< "$targets" || { echo "$1: no target $target" >&2; exit 1; }
+  done
+  for target in coverage-axis ca_io example_c unit_tests abi_layout; do
+    if grep -qx "\.\.\. $target" <<< "$targets"; then echo "$1: target $target defined" >&2; exit 1; fi
+  done
+}
+configure fetchcontent ON
+echo "FetchContent configure: ok"
+configure subdirectory OFF
+echo "add_subdirectory configure: ok"
+cmake --build "$tmp/subdirectory" --target consumer_subproject -j "$jobs" > "$tmp/build.log" 2>&1 \
+  || { tail -50 "$tmp/build.log" >&2; exit 1; }
+"$tmp/subdirectory/consumer_subproject" | grep -q "balls"
+echo "add_subdirectory consumer: ok"
+echo "subproject: 3 passed, 0 failed"
