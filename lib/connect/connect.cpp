@@ -42,9 +42,12 @@ Status connect_volume(const CandidateSet& set, const Selection& sel, const Conne
     }
     // A diagram Qhull cannot build does not end the run: the medial route falls back to the power
     // route, and where that fails too the balls are left to the reconnection below.
-    if (diagram_failed(st) && opt.method == ConnectMethod::medial) {
+    ConnectMethod route = opt.method;
+    if (diagram_failed(st) && route == ConnectMethod::medial) {
         out.edges.clear(), out.faces.clear();
         st = connect_power(set, sel, monitor, out);
+        route = ConnectMethod::power;
+        if (report) report->method = route;
     }
     if (diagram_failed(st)) {
         out.edges.clear(), out.faces.clear();
@@ -63,13 +66,13 @@ Status connect_volume(const CandidateSet& set, const Selection& sel, const Conne
         // Envelope rule (medial route only): the accepted bulge is the dilation delta. On the power
         // route it can cut a real loop through thin handles, so there only the centre-line rule
         // applies.
-        const double tol = opt.method == ConnectMethod::medial ? (sel.delta > 0 ? sel.delta : 0.02) : -1;
+        const double tol = route == ConnectMethod::medial ? (sel.delta > 0 ? sel.delta : 0.02) : -1;
         std::vector<Tri> failed;   // faces that failed the removal test
-        const long raw_b1 = opt.method == ConnectMethod::medial && opt.fill_holes ? topology(out).betti1 : 0;
-        if (opt.remove_outside && !remove_outside(test, h, tol, opt.method == ConnectMethod::medial, threads, monitor, out, failed)) return monitor.stop_status("connect");
+        const long raw_b1 = route == ConnectMethod::medial && opt.fill_holes ? topology(out).betti1 : 0;
+        if (opt.remove_outside && !remove_outside(test, h, tol, route == ConnectMethod::medial, threads, monitor, out, failed)) return monitor.stop_status("connect");
         if (!monitor.report("connect", 0.75)) return monitor.stop_status("connect");
         if (opt.fill_holes) {
-            const bool medial = opt.method == ConnectMethod::medial;
+            const bool medial = route == ConnectMethod::medial;
             const Skeleton before = medial ? out : Skeleton{};
             // loops of the medial mesh that survived removal (not those that removal added)
             const long target = medial ? std::min(raw_b1, topology(out).betti1) : 0;
