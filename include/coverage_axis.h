@@ -249,6 +249,10 @@ CA_API int32_t ca_candidate_set_normals(const ca_candidate_set* set);
 /* Point clouds: how many (de-duplicated) points were dropped as outliers: isolated points and
    points far off their neighbours' plane (docs/pointclouds.md). 0 for meshes and clean clouds. */
 CA_API uint64_t ca_candidate_set_outlier_count(const ca_candidate_set* set);
+/* ABI 3. Point clouds: how many given normals were zero, which means "none": they were estimated
+   (from the points, signed to agree with the given normals around them; when every normal is
+   zero, the cloud's normals are estimated as with NULL normals). 0 for meshes. */
+CA_API uint64_t ca_candidate_set_normals_replaced(const ca_candidate_set* set);
 /* Copy-out: capacity in balls; centers needs 3*capacity doubles, radii capacity doubles (either
    may be NULL). *count receives the number of balls; CA_ERROR_BUFFER_TOO_SMALL if capacity is
    smaller (nothing copied). */

@@ -58,6 +58,8 @@ void print_summary(const cli::Json& j, const cli::RunOptions& o) {
     std::printf("samples     %llu surface samples, %llu candidate balls (%s)\n", u("surface_samples"), u("candidates"),
                 o.candidate_kind.c_str());
     if (u("outliers")) std::printf("            %llu cloud points dropped as outliers\n", u("outliers"));
+    if (u("normals_replaced"))
+        std::printf("            %llu zero normals (none given) replaced by estimated ones\n", u("normals_replaced"));
     const bool target = o.select.target_count > 0, target_error = o.select.target_error > 0;
     if (o.select.dilation == CA_DILATE_OFFSET)
         std::printf("dilation    r + %.4g (delta %.4g of the longest bbox side)%s\n", j["delta"].get<double>(),

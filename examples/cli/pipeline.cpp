@@ -323,6 +323,7 @@ Outcome run_pipeline(const std::string& input, const RunOptions& o, const Output
     j["surface_samples"] = ca_candidate_set_sample_count(owned.set);
     j["candidates"] = ca_candidate_set_count(owned.set);
     j["outliers"] = ca_candidate_set_outlier_count(owned.set);
+    j["normals_replaced"] = ca_candidate_set_normals_replaced(owned.set);
     j["selected"] = sd.radii.size();
     j["edges"] = ks.edges;
     j["faces"] = ks.faces;

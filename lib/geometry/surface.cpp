@@ -2,6 +2,7 @@
 #include "surface.h"
 #include "duplicates.h"
 #include "hole_caps.h"
+#include "kdtree.h"
 #include "normals.h"
 #include "patch_signs.h"
 #include "winding.h"
@@ -37,6 +38,26 @@ static bool all_in_one_plane(const std::vector<Vec3>& pts, const Vec3& lo, doubl
 }
 
 namespace {
+// The points of `missing` take their PCA direction (normals.h), signed to agree with the given
+// normals among their 16 nearest neighbours (where none is given, the sign is left to the
+// orientation check that follows).
+void fill_missing_normals(const std::vector<Vec3>& pts, const std::vector<size_t>& missing, std::vector<Vec3>& normals,
+                          int threads) {
+    const std::vector<Vec3> pca = estimate_normals(pts, 16, threads);
+    std::vector<uint8_t> given(pts.size(), 1);
+    for (size_t i : missing) given[i] = 0;
+    const PointTree tree(pts);
+    size_t idx[17];
+    double d2[17];
+    for (size_t i : missing) {
+        Vec3 around = Vec3::Zero();
+        const size_t found = tree.nearest(pts[i], 17, idx, d2);
+        for (size_t k = 0; k < found; ++k)
+            if (given[idx[k]]) around += normals[idx[k]];
+        normals[i] = around.dot(pca[i]) < 0 ? Vec3(-pca[i]) : pca[i];
+    }
+}
+
 // Most given normals lie within about 37 degrees of their neighbourhood's PCA direction (either
 // sign): they describe the surface, whatever their signs.
 bool follows_surface(const std::vector<Vec3>& given, const std::vector<Vec3>& pca) {
@@ -79,17 +100,26 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
         out.duplicate_triangles = merged.duplicate;
     }
     if (cloud && (!require_normals || trust == PointNormals::estimate)) normals.clear();
+    std::vector<size_t> missing;   // points whose given normal is zero
     if (cloud && require_normals && !normals.empty()) {
         if (normals.size() != nv)
             return fail(Code::invalid_input, "a point cloud (no triangles) needs one normal per point (" +
                                                  std::to_string(normals.size()) + " normals for " +
                                                  std::to_string(nv) + " points)");
+        // A zero normal means "none" (scanners and exporters write 0 0 0 where they have none): it is
+        // estimated below. NaN or infinite ones are errors.
         for (size_t i = 0; i < nv; ++i) {
             const double len = normals[i].norm();
-            if (!std::isfinite(len) || len < 1e-12)
-                return fail(Code::invalid_input, "normal " + std::to_string(i) + " is zero, NaN or infinite");
+            if (!std::isfinite(len))
+                return fail(Code::invalid_input, "normal " + std::to_string(i) + " is NaN or infinite");
+            if (len < 1e-12) {
+                missing.push_back(i);
+                continue;
+            }
             normals[i] /= len;
         }
+        out.normals_replaced = missing.size();
+        if (missing.size() == nv) normals.clear(), missing.clear();   // none given: all estimated
     }
 
     // the shape is what the triangles use (a point cloud: every point)
@@ -166,6 +196,7 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
         // checked and oriented when their signs disagree; the outward sign is fixed by the
         // winding number when the candidates are built
         out.normals_source = NormalSource::given;
+        if (!missing.empty()) fill_missing_normals(raw.vertices, missing, normals, threads);
         if (normals.empty()) {
             normals = estimate_normals(raw.vertices, 16, threads);
             out.normals_source = NormalSource::estimated;

@@ -37,6 +37,9 @@ struct Surface {
     double disagreement_given = -1, disagreement = 0;
     // trusted normals disagreed, but orientation did not make them consistent (noise): kept as given
     bool sign_check_inconclusive = false;
+    // point clouds: given normals that were zero ("none") and were estimated (all of them: the
+    // cloud's normals are estimated)
+    size_t normals_replaced = 0;
     bool flipped = false;         // the mesh faced inward and was flipped
     size_t dropped_triangles = 0; // zero-area triangles ignored
     size_t duplicate_triangles = 0; // repeats of a kept triangle merged into it (duplicates.h)

@@ -38,6 +38,8 @@ Status candidates_step(SurfaceInput surface, const CandidateOptions& opt, const 
                             "% of neighbouring pairs; they were re-oriented");
     if (monitor.stopped()) return monitor.stop_status("surface");
     if (surf.flipped) monitor.note(2, "the mesh faces inward (negative signed volume); it was flipped");
+    if (surf.normals_replaced)
+        monitor.note(1, std::to_string(surf.normals_replaced) + " zero point normals (none given) were estimated");
     if (surf.dropped_triangles) monitor.note(1, std::to_string(surf.dropped_triangles) + " zero-area triangles were ignored");
     if (surf.duplicate_triangles)
         monitor.note(1, std::to_string(surf.duplicate_triangles) + " repeated triangles were merged");

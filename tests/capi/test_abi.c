@@ -154,9 +154,12 @@ static void test_bad_input(void) {
     }
     CHECK(run_candidates(ctx, pts, 100, NULL, 0, nrm, &set) == CA_ERROR_DEGENERATE_INPUT && set == NULL);
     CHECK(strstr(ca_context_last_error(ctx), "5") != NULL);
-    /* zero normal */
-    nrm[0] = nrm[1] = nrm[2] = 0;
+    /* a NaN normal is refused; a zero normal means "none" (estimated): the cloud is judged on its points */
+    nrm[0] = 0.0 / 0.0;
     CHECK(run_candidates(ctx, pts, 100, NULL, 0, nrm, &set) == CA_ERROR_INVALID_INPUT && set == NULL);
+    CHECK(strstr(ca_context_last_error(ctx), "normal 0") != NULL);
+    nrm[0] = nrm[1] = nrm[2] = 0;
+    CHECK(run_candidates(ctx, pts, 100, NULL, 0, nrm, &set) == CA_ERROR_DEGENERATE_INPUT && set == NULL);
     ca_context_destroy(ctx);
 }
 

@@ -196,6 +196,28 @@ TEST_CASE("point cloud: random-sign and missing normals give the same skeleton s
     CHECK(std::abs(double(estimated.skeleton.balls.size()) - n) <= 0.1 * n);
 }
 
+TEST_CASE("point cloud: zero normals mean none: 1 % of them are estimated and counted, all of them estimate the cloud") {
+    const double R = 1.0, tube = 0.3;
+    shapes::Cloud c = shapes::sample_cloud(shapes::torus(R, tube, 128, 48), 8000);
+    const Run exact = run(c);
+    const double n = double(exact.skeleton.balls.size());
+    shapes::Cloud holes = c;
+    for (size_t i = 0; i < holes.normals.size(); i += 100) holes.normals[i] = ca::Vec3::Zero();   // 80 of 8000
+    const Run some = run(holes);
+    CHECK(some.set.surface.normals_replaced == 80);
+    CHECK(some.set.surface.normals_source == ca::NormalSource::given);
+    check_ring(some, R, tube);
+    CHECK(std::abs(double(some.skeleton.balls.size()) - n) <= 0.1 * n);
+    // the replaced normals point outward, as their neighbours' do
+    for (size_t i = 0; i < holes.normals.size(); i += 100) CHECK(some.set.surface.normals[i].dot(c.normals[i]) > 0.9);
+    shapes::Cloud none = c;
+    for (ca::Vec3& v : none.normals) v = ca::Vec3::Zero();
+    const Run all = run(none);
+    CHECK(all.set.surface.normals_replaced == 8000);
+    CHECK(all.set.surface.normals_source == ca::NormalSource::estimated);
+    check_ring(all, R, tube);
+}
+
 TEST_CASE("point cloud: random-sign and missing normals on a sphere give one ball at its centre") {
     const double R = 2.0;
     const shapes::Cloud c = sphere_cloud(R, 5000);
