@@ -10,6 +10,7 @@
 // and stops the child past it; a signal, a non-zero exit or a malformed frame becomes an error.
 // Where the child cannot be started (no /proc, the executable gone) the read runs in this process.
 #include "cli.h"
+#include "reader_common.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -198,12 +199,9 @@ bool make_pipe(int fds[2]) {
 std::string last_line(const std::string& text) {
     size_t end = text.size();
     while (end > 0 && (text[end - 1] == '\n' || text[end - 1] == '\r' || text[end - 1] == ' ')) --end;
-    const size_t start = text.rfind('\n', end == 0 ? 0 : end - 1);
-    std::string line = text.substr(start == std::string::npos ? 0 : start + 1, end - (start == std::string::npos ? 0 : start + 1));
-    if (line.size() > 200) line = line.substr(0, 200) + "...";
-    for (char& c : line)
-        if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126) c = '?';
-    return line;
+    const size_t newline = end == 0 ? std::string::npos : text.rfind('\n', end - 1);
+    const size_t start = newline == std::string::npos ? 0 : newline + 1;
+    return caio::detail::printable(text.substr(start, end - start), 200);
 }
 
 std::string seconds_text(double s) {

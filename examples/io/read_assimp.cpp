@@ -87,11 +87,14 @@ bool read_assimp(const std::string& name, const std::string& buf, const std::str
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
     const aiScene* scene =
         importer.ReadFileFromMemory(buf.data(), buf.size(), aiProcess_ValidateDataStructure, format.c_str());
-    if (!scene) return fail(error, name, 0, std::string("assimp: ") + importer.GetErrorString());
+    // assimp's messages may quote a long stretch of the file: one short line of it is kept
+    constexpr size_t kMessageChars = 200;
+    if (!scene) return fail(error, name, 0, "assimp: " + printable(importer.GetErrorString(), kMessageChars));
     if (!check_assimp_scene(name, scene, buf.size(), error)) return false;
     scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
                                          aiProcess_PreTransformVertices | aiProcess_SortByPType);
-    if (!scene) return fail(error, name, 0, std::string("assimp post-processing: ") + importer.GetErrorString());
+    if (!scene)
+        return fail(error, name, 0, "assimp post-processing: " + printable(importer.GetErrorString(), kMessageChars));
     size_t nv = 0, nt = 0;
     for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
         nv += scene->mMeshes[m]->mNumVertices;

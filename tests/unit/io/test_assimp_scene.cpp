@@ -1,6 +1,7 @@
 // test_assimp_scene.cpp: tests of the checks an assimp scene passes before post-processing
 // (examples/io/check_assimp_scene.cpp), on scenes built by hand with one flaw each, and of the
-// assimp reader on the bundled files whose scenes assimp's post-processing crashed or aborted on.
+// assimp reader on the bundled files whose scenes assimp's post-processing crashed or aborted on
+// and on a file whose message from assimp quotes the rest of the file.
 #include <doctest/doctest.h>
 
 #include <assimp/material.h>
@@ -11,6 +12,7 @@
 #include <memory>
 #include <string>
 
+#include "io_test_util.h"
 #include "mesh_io.h"
 #include "readers.h"
 
@@ -180,4 +182,19 @@ TEST_CASE("assimp reader: scenes its post-processing crashed or aborted on are r
         CHECK(error.find(file) != std::string::npos);
         CHECK(m.positions.empty());
     }
+}
+
+TEST_CASE("assimp reader: assimp's message is cut to one short printable line") {
+    // AC3D's number parser quotes everything after the bad number, here over 7000 bytes
+    std::string ac = "AC3Db\nOBJECT world\nkids 1\nOBJECT poly\nnumvert 3\n0 0 0\n1 0 0\n0 1 0\nnumsurf 1\n"
+                     "SURF 0x10\nmat 0\nrefs 3\n0 0 0\n1 0 0\n2 0{0\n";
+    for (int k = 0; k < 1000; ++k) ac += "kids 0\n";
+    iotest::TempDir td;
+    caio::MeshData m;
+    std::string error;
+    CHECK_FALSE(caio::read_mesh(td.write("long.ac", ac), m, error));
+    INFO(error);
+    CHECK(error.find("assimp: ") != std::string::npos);
+    CHECK(error.size() < td.path("long.ac").size() + 250);
+    CHECK(error.find('\n') == std::string::npos);
 }
