@@ -223,8 +223,8 @@ enum class Read { done, failed, not_started };
 
 // Reads one input in the child. Read::not_started when the child could not be started (then
 // neither `out` nor `error` was touched).
-Read read_in_child(const std::string& path, const std::string& format, const ReadLimits& limits,
-                      caio::MeshData& out, std::string& error) {
+Read read_in_child(const std::string& path, const std::string& format, const ReadLimits& limits, caio::MeshData& out,
+                   std::string& error) {
     const std::string name = path == "-" ? "<stdin>" : path;
     const double time_s = std::min(limits.time_s, 1e7);  // within what the clock and rlimits represent
     int data[2], err[2];
@@ -308,7 +308,8 @@ Read read_in_child(const std::string& path, const std::string& format, const Rea
     }
     for (pollfd& p : fds)
         if (p.fd >= 0) ::close(p.fd);
-    // both pipes closed: the child is exiting; it still may not outlive the deadline
+    // the pipes are closed (the child is exiting) or the deadline passed: wait for the child, which
+    // may not outlive the deadline either
     int status = 0;
     for (int pause_ms = 1;; pause_ms = std::min(2 * pause_ms, 20)) {
         if (timed_out || ms_left() == 0) {
