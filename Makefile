@@ -7,7 +7,7 @@ DEMO_MODEL ?= tests/data/fox.obj
 DEMO_PREVIEW ?= --up z
 DATA ?= ../shared/data
 
-.PHONY: all deps configure build demo test bench install package clean fuzz fuzz-build fuzz-pipeline fuzz-long blender-addon test-blender test-distributed
+.PHONY: all deps configure build demo test bench install package clean fuzz fuzz-build fuzz-pipeline fuzz-long fuzz-assimp blender-addon test-blender test-distributed
 
 all: build
 
@@ -85,6 +85,19 @@ fuzz: fuzz-pipeline
 # ten minutes of the pipeline harness, the run that reaches the deep steps
 fuzz-long:
 	@$(MAKE) --no-print-directory fuzz-pipeline FUZZ_SECONDS=600
+
+# a mutation fuzzer of the formats read through assimp, run through the tool (tests/fuzz/fuzz_assimp.py;
+# ctest runs a short one): seeded with the bundled models and hostile files, and with the shared
+# real models and hostile files when $(DATA) is there; FUZZ_ASSIMP_SECONDS in all, the formats taking
+# turns, JOBS runs at a time. Findings (the tool killed, past its time limit, an unclear failure)
+# and the first inputs assimp crashed, hung or ran out of memory on go to $(BUILD)/fuzz-assimp.
+FUZZ_ASSIMP_SECONDS ?= 600
+FUZZ_ASSIMP_FORMATS ?= md3,ac,3ds,x,dae,fbx,blend
+fuzz-assimp: configure
+	@cmake --build $(BUILD) -j $(JOBS) --target coverage-axis
+	python3 tests/fuzz/fuzz_assimp.py --tool $(BUILD)/coverage-axis --seconds $(FUZZ_ASSIMP_SECONDS) --jobs $(JOBS) \
+	  --formats $(FUZZ_ASSIMP_FORMATS) --out $(BUILD)/fuzz-assimp tests/data/hostile tests/data/formats \
+	  $(wildcard $(DATA)/real/openarena $(DATA)/real/flightgear $(DATA)/hostile)
 
 clean:
 	@rm -rf $(BUILD) build-fuzz demo-output

@@ -18,6 +18,12 @@ using Json = nlohmann::ordered_json;
 // Version of the JSON reports (bumped when a field changes meaning or goes away).
 constexpr int kFormatVersion = 1;
 
+// Bounds on reading one input through assimp, which runs in a child process (read_input).
+struct ReadLimits {
+    double time_s = 60;      // wall clock from the start of the read; past it the reader is stopped
+    double memory_mib = 0;   // the reader's address space; 0 = 512 MiB + 128 bytes per input byte
+};
+
 // Everything that decides a run's results. The structs start as the library's *_init defaults.
 struct RunOptions {
     ca_candidate_options candidates;
@@ -35,6 +41,7 @@ struct RunOptions {
     std::string view = "auto", up, preview_size;
     int32_t threads = 0;  // 0 = all cores
     double time_limit_s = 0;  // --time-limit: the whole run's budget, from the start of reading; 0 = none
+    ReadLimits read;          // --read-time-limit (else --time-limit's budget), --read-memory-limit
     RunOptions();
 };
 
@@ -90,6 +97,14 @@ std::string version_text();
 std::string library_version();
 // FNV-1a 64 of a file's bytes as 16 hex digits ("" if it cannot be read).
 std::string file_hash(const std::string& path);
+// Reads a mesh or point cloud as caio::read_mesh does (`format` "" = by extension). An input that
+// goes to assimp is read in a child process (this executable's `--internal-read`) bounded by
+// `limits`: a crash, an abort, a hang or runaway memory there becomes a false return with a
+// message naming the file. Other formats are read in this process.
+bool read_input(const std::string& path, const std::string& format, const ReadLimits& limits, caio::MeshData& out,
+                std::string& error);
+// The child side of read_input: `coverage-axis --internal-read PATH FORMAT SECONDS MIB`.
+int read_child_command(int argc, char** argv);
 // Readable mesh files: the extensions a folder given to batch expands to.
 bool is_mesh_file(const std::string& path);
 // Parses a command line: -1 to go on; the exit code after --help or --version (printed); or 2

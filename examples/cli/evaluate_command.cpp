@@ -43,7 +43,7 @@ int evaluate_command(int argc, char** argv) {
     caio::MeshData mesh;
     caio::SkeletonData sk;
     std::string err;
-    if (!caio::read_mesh(input, mesh, err) || !caio::read_ma(skeleton_path, sk, err)) return fail(file_failure(err));
+    if (!read_input(input, "", ReadLimits{}, mesh, err) || !caio::read_ma(skeleton_path, sk, err)) return fail(file_failure(err));
     ca_context* ctx = nullptr;
     const ca_status st = ca_context_create(nullptr, &ctx);
     if (st != CA_OK) return fail(library_failure(nullptr, st, "context"));

@@ -3,7 +3,9 @@
 // Prints a one-screen summary, or one JSON object with --json (also on failure). Commands:
 // `coverage-axis INPUT [options]`, `coverage-axis batch ...`, `coverage-axis evaluate ...`.
 // Exit codes: 0 success, 1 the library refused or failed, 2 bad command line, 3 a file could
-// not be read or written.
+// not be read or written (a reader that crashed or ran past its limits included). The internal
+// command `--internal-read` is the child process that reads an input through assimp
+// (isolated_read.cpp).
 #include "cli.h"
 
 #include <algorithm>
@@ -171,6 +173,7 @@ int single_run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    if (argc > 1 && std::strcmp(argv[1], "--internal-read") == 0) return cli::read_child_command(argc, argv);
     if (argc > 1 && std::strcmp(argv[1], "evaluate") == 0) return cli::evaluate_command(argc - 1, argv + 1);
     if (argc > 1 && std::strcmp(argv[1], "batch") == 0) return cli::batch_command(argc - 1, argv + 1);
     return single_run(argc, argv);

@@ -261,7 +261,7 @@ Outcome run_pipeline(const std::string& input, const RunOptions& o, const Output
     const auto t_start = Clock::now();
     caio::MeshData mesh;
     std::string err;
-    if (!caio::read_mesh(input, o.format, mesh, err)) return r.failure = file_failure(err), r;
+    if (!read_input(input, o.format, o.read, mesh, err)) return r.failure = file_failure(err), r;
     const double t_read = since(t_start);
 
     Owned owned;

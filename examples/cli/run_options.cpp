@@ -101,6 +101,14 @@ void add_run_options(CLI::App& app, RunOptions& o) {
     app.add_option("--format", o.format, "input format instead of the extension (needed for - = standard input): " +
                                             caio::readable_formats())
         ->group(sampling);
+    app.add_option("--read-time-limit", o.read.time_s,
+                   "seconds an input read through assimp may take (the read runs in a child process, stopped past "
+                   "this); given --time-limit, that budget, or the smaller if both are given")
+        ->capture_default_str()->group(sampling);
+    app.add_option("--read-memory-limit", o.read.memory_mib,
+                   "address space in MiB of the process reading an input through assimp (0 = 512 + 128 bytes per "
+                   "input byte)")
+        ->capture_default_str()->check(at_least(0))->group(sampling);
     app.add_option("--samples", o.candidates.cover_samples, "surface samples to cover")
         ->capture_default_str()->check(CLI::Range(1u, 100000000u))->group(sampling);
     app.add_option("--voronoi-samples", o.candidates.voronoi_samples, "samples whose inner Voronoi vertices are candidates")
@@ -172,6 +180,13 @@ bool finish_run_options(const CLI::App& app, RunOptions& o, std::string& error) 
     o.candidates.volumetric_only = app.count("--volumetric-only") ? 1 : 0;
     // --time-limit bounds the whole run; without it only the solver's default budget applies
     if (app.count("--time-limit")) o.time_limit_s = std::isfinite(o.select.time_limit_s) ? std::max(0.0, o.select.time_limit_s) : 0.0;
+    if (!(o.read.time_s > 0) || !std::isfinite(o.read.time_s)) {
+        error = "--read-time-limit takes a number of seconds > 0";
+        return false;
+    }
+    // ... the read included: it bounds an assimp read unless --read-time-limit sets a smaller bound
+    if (o.time_limit_s > 0)
+        o.read.time_s = app.count("--read-time-limit") ? std::min(o.read.time_s, o.time_limit_s) : o.time_limit_s;
     o.select.solver = value_of(kSolvers, o.solver);
     o.point_normals = value_of(kNormals, o.normals);
     o.select.effort = value_of(kEfforts, o.effort);

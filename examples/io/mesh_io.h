@@ -4,6 +4,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -37,7 +38,10 @@ struct MeshData {
 // one polygon; beyond either the reader refuses with a message naming the limit.
 // Indices are checked against the vertex count. On failure `out` is empty and `error` says
 // "file[:line]: what".
-bool read_mesh(const std::string& path, const std::string& format, MeshData& out, std::string& error);
+// `loaded`, if given, is called with the input's size in bytes once it is in memory, before any
+// reader parses it (the tool's reader process sets its memory limit there).
+bool read_mesh(const std::string& path, const std::string& format, MeshData& out, std::string& error,
+               const std::function<void(size_t input_bytes)>& loaded = nullptr);
 // Same, format by extension.
 bool read_mesh(const std::string& path, MeshData& out, std::string& error);
 // Parses bytes already in memory (fuzzing, tests); glTF external URIs are all refused.
@@ -46,6 +50,8 @@ bool read_mesh_buffer(const std::string& bytes, const std::string& format, MeshD
 std::string readable_formats();
 // Whether read_mesh reads this format name or extension (with or without the dot, any case).
 bool is_readable_format(const std::string& format);
+// Whether read_mesh hands this input (`format`, or if "" the extension of `path`) to assimp.
+bool is_assimp_input(const std::string& path, const std::string& format);
 
 // Point/ball files: lines "v x y z [r]" (obj style) or plain "x y z [r]"; '#' comments and
 // other obj records (vn, f, ...) are skipped. `radii` is filled only if every point has one

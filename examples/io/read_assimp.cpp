@@ -1,12 +1,16 @@
 // read_assimp.cpp: every other mesh format assimp imports (FBX, DAE, 3DS, ...). The file is
 // handed to assimp from memory with an I/O system that opens nothing else, so files an asset
-// references (materials, textures, external geometry) are never read. Assimp triangulates,
+// references (materials, textures, external geometry) are never read. Assimp imports the scene
+// with only its own structure validation; the scene then passes check_assimp_scene
+// (check_assimp_scene.cpp) before any post-processing step runs, because those steps trust the
+// importer's output and crash or abort on a malformed scene. Post-processing then triangulates,
 // merges identical vertices and applies the node transforms (pre-transformed vertices, in world
 // units); point and line primitives are dropped. The output obeys the same one-per-input-byte
 // limit as the other readers. Normals are not read (MeshData normals stay empty).
 // Assimp's Collada reader does not advance past a non-digit in an index list (<p>, <v>,
 // <vcount>, <h>) and fills memory until it runs out; such files are refused before assimp sees
-// them.
+// them. A crash or hang inside an importer itself cannot be caught here: the command-line tool
+// runs this reader in a child process (examples/cli/isolated_read.cpp).
 #include <assimp/IOStream.hpp>
 #include <assimp/IOSystem.hpp>
 #include <assimp/Importer.hpp>
@@ -81,10 +85,16 @@ bool read_assimp(const std::string& name, const std::string& buf, const std::str
     Assimp::Importer importer;
     importer.SetIOHandler(new NoFiles);  // owned by the importer
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices |
-                           aiProcess_SortByPType;
-    const aiScene* scene = importer.ReadFileFromMemory(buf.data(), buf.size(), flags, format.c_str());
-    if (!scene) return fail(error, name, 0, std::string("assimp: ") + importer.GetErrorString());
+    const aiScene* scene =
+        importer.ReadFileFromMemory(buf.data(), buf.size(), aiProcess_ValidateDataStructure, format.c_str());
+    // assimp's messages may quote a long stretch of the file: one short line of it is kept
+    constexpr size_t kMessageChars = 200;
+    if (!scene) return fail(error, name, 0, "assimp: " + printable(importer.GetErrorString(), kMessageChars));
+    if (!check_assimp_scene(name, scene, buf.size(), error)) return false;
+    scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                                         aiProcess_PreTransformVertices | aiProcess_SortByPType);
+    if (!scene)
+        return fail(error, name, 0, "assimp post-processing: " + printable(importer.GetErrorString(), kMessageChars));
     size_t nv = 0, nt = 0;
     for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
         nv += scene->mMeshes[m]->mNumVertices;

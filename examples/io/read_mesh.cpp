@@ -1,7 +1,7 @@
 // read_mesh.cpp: the entry points read_mesh and readable_formats: picks the reader by format
 // name or extension, loads the file or standard input whole, runs the reader and applies the
 // common size limit. Formats with a reader of their own (obj off ply xyz pts stl gltf glb) never
-// go to assimp.
+// go to assimp (is_assimp_input says which inputs do).
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -45,14 +45,20 @@ bool parse_buffer(const std::string& name, const std::string& buf, const std::st
     return read_assimp(name, buf, format, out, error);
 }
 
+// The format read_mesh uses: `format_name`, or if "" the extension of `path`.
+std::string input_format(const std::string& path, const std::string& format_name) {
+    return normalise_format(format_name.empty() ? lower_ext(path) : format_name);
+}
+
 }  // namespace
 
-bool read_mesh(const std::string& path, const std::string& format_name, MeshData& out, std::string& error) {
+bool read_mesh(const std::string& path, const std::string& format_name, MeshData& out, std::string& error,
+               const std::function<void(size_t)>& loaded) {
     out = MeshData{};
     const bool from_stdin = path == "-";
     const std::string name = from_stdin ? "<stdin>" : path;
     const bool ok = guarded(name, error, [&]() {
-        const std::string format = normalise_format(format_name.empty() ? lower_ext(path) : format_name);
+        const std::string format = input_format(path, format_name);
         if (format.empty())
             return fail(error, name, 0,
                         from_stdin ? "reading standard input needs a format name"
@@ -61,6 +67,7 @@ bool read_mesh(const std::string& path, const std::string& format_name, MeshData
             return fail(error, name, 0, "unknown mesh format '" + format + "' (readable: " + readable_formats() + ")");
         std::string buf;
         if (!(from_stdin ? load_stdin(buf, error) : load_file(path, buf, error))) return false;
+        if (loaded) loaded(buf.size());
         if (!parse_buffer(name, buf, format, from_stdin ? std::string() : asset_folder(path), out, error)) return false;
         // glTF may add external buffers' bytes; its reader applied the limit with them included.
         if (format != "gltf" && format != "glb" &&
@@ -87,6 +94,11 @@ bool read_mesh_buffer(const std::string& buf, const std::string& format_name, Me
     });
     if (!ok) out = MeshData{};
     return ok;
+}
+
+bool is_assimp_input(const std::string& path, const std::string& format_name) {
+    const std::string format = input_format(path, format_name);
+    return !format.empty() && !own_format(format) && assimp_can_read(format);
 }
 
 bool is_readable_format(const std::string& format_name) {

@@ -21,14 +21,15 @@ bool fail(std::string& error, const std::string& name, size_t line, const std::s
     return false;
 }
 
-std::string quote_token(const char* b, const char* e) {
-    const size_t n = static_cast<size_t>(e - b);
-    std::string s(b, std::min<size_t>(n, 40));
+std::string printable(const std::string& text, size_t max_chars) {
+    std::string s = text.substr(0, max_chars);
     for (char& c : s)
         if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126) c = '?';
-    if (n > 40) s += "...";
-    return "'" + s + "'";
+    if (text.size() > max_chars) s += "...";
+    return s;
 }
+
+std::string quote_token(const char* b, const char* e) { return "'" + printable(std::string(b, e), 40) + "'"; }
 
 std::string vcount_msg(size_t nv) { return std::to_string(nv) + (nv == 1 ? " vertex)" : " vertices)"); }
 

@@ -19,6 +19,9 @@ namespace detail {
 // ---- errors ----
 // Sets error to "name[:line]: what" and returns false.
 bool fail(std::string& error, const std::string& name, size_t line, const std::string& what);
+// `text` fit for a one-line message: at most `max_chars` characters (then "..."), bytes outside
+// printable ASCII as '?'.
+std::string printable(const std::string& text, size_t max_chars);
 // A token quoted for a message: at most 40 characters, non-printable bytes as '?'.
 std::string quote_token(const char* b, const char* e);
 std::string vcount_msg(size_t nv);

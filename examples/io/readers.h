@@ -7,6 +7,8 @@
 #include "mesh_io.h"
 #include "reader_common.h"
 
+struct aiScene;
+
 namespace caio {
 namespace detail {
 
@@ -24,6 +26,9 @@ bool read_gltf(const std::string& name, const std::string& buf, bool binary, con
 bool read_assimp(const std::string& name, const std::string& buf, const std::string& format, MeshData& out,
                  std::string& error);
 bool assimp_can_read(const std::string& format);
+// Whether an imported assimp scene is safe to post-process (check_assimp_scene.cpp); false with
+// a message naming the first problem. `input_bytes` sets the size limit.
+bool check_assimp_scene(const std::string& name, const aiScene* scene, size_t input_bytes, std::string& error);
 // The extensions assimp imports, without dots, space-separated.
 std::string assimp_formats();
 
