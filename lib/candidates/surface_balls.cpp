@@ -9,9 +9,11 @@
 //    (radius = its distance to the surface, about half the gap);
 //  * elsewhere (a single-sided sheet, a card, a plane): the point of the surface at the sample,
 //    radius 0.
-// A surface ball covers its own sample at every dilation (the coverage rule counts distance 0 as
-// covered; a thin part's ball reaches its sample within the gap's rounding), so a cover always
-// exists, and the minimum cover takes surface balls only where no medial ball serves. They are
+// A radius-0 surface ball covers its own sample at every dilation (the coverage rule counts
+// distance 0 as covered), a thin part's ball for every offset delta >= kFallbackReach (its centre
+// is at most kThinGap / 2 = kFallbackReach from the sample), so a cover exists wherever the
+// fallback balls promise one, and the minimum cover takes surface balls only where no medial ball
+// serves. They are
 // appended after every other candidate; CandidateSet::surface_balls counts them.
 #include "candidates_internal.h"
 
