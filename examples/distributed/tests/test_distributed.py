@@ -119,10 +119,13 @@ class ClusterRoute(unittest.TestCase):
         cls.markers = os.environ["CA_TEST_MARKERS"] = os.path.join(cls.tmp, "markers")
         os.makedirs(cls.markers)
         cls.ca, cls.cert, cls.key = make_certificates(cls.tmp, "cluster")
-        inputs = [os.path.join(DATA, m) for m in MODELS] + [os.path.join(DATA, "moebius.obj")]
         broken = os.path.join(cls.tmp, "broken.obj")  # a face refers to a vertex the file lacks
         with open(broken, "w") as f:
             f.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n")
+        line = os.path.join(cls.tmp, "line.obj")  # readable, but no triangle has area: the library refuses it
+        with open(line, "w") as f:
+            f.write("v 0 0 0\nv 1 0 0\nv 2 0 0\nv 3 0 0\nf 1 2 3\nf 2 3 4\n")
+        inputs = [os.path.join(DATA, m) for m in MODELS] + [line]
         doomed = os.path.join(cls.tmp, HOLD_ALWAYS + ".obj")
         shutil.copy(os.path.join(DATA, "hourglass.obj"), doomed)
         off, ply = os.path.join(cls.tmp, "fox_off.off"), os.path.join(cls.tmp, "cow_ply.ply")
@@ -195,8 +198,8 @@ class ClusterRoute(unittest.TestCase):
         by_name = {os.path.basename(line["input"]): line for line in self.lines}
         self.assertEqual(by_name["broken.obj"]["error"]["status"], "FILE_ERROR")
         self.assertIn("out of range", by_name["broken.obj"]["error"]["message"])
-        self.assertEqual(by_name["moebius.obj"]["error"]["status"], "CA_ERROR_UNCOVERABLE")
-        self.assertEqual(by_name["moebius.obj"]["error"]["code"], 6)
+        self.assertEqual(by_name["line.obj"]["error"]["status"], "CA_ERROR_DEGENERATE_INPUT")
+        self.assertEqual(by_name["line.obj"]["error"]["code"], 5)
 
     def test_killed_worker_does_not_lose_its_asset(self):
         self.assertIn(HOLD_ONCE + ".1.pid", self.killed)  # its first run was killed ...
