@@ -97,6 +97,7 @@ const char* ca_status_string(ca_status s) {
         case CA_ERROR_INTERNAL: return "CA_ERROR_INTERNAL: internal error";
         case CA_ERROR_NO_CANDIDATES: return "CA_ERROR_NO_CANDIDATES: no inner candidate ball was found";
         case CA_ERROR_TIME_LIMIT: return "CA_ERROR_TIME_LIMIT: the context's time limit ran out";
+        case CA_ERROR_TARGET_NOT_REACHED: return "CA_ERROR_TARGET_NOT_REACHED: the target error was not reached";
         default: return "unknown ca_status";
     }
 }

@@ -96,6 +96,9 @@ typedef int32_t ca_status;
 #define CA_ERROR_INTERNAL          12 /* a bug: please report it with the input */
 #define CA_ERROR_NO_CANDIDATES     13 /* no inner candidate ball was found */
 #define CA_ERROR_TIME_LIMIT        14 /* ca_context_desc.time_limit_s ran out; the message names the stage */
+#define CA_ERROR_TARGET_NOT_REACHED 15 /* ABI 3. ca_select: no probe reached target_error; the one failure
+                                       that still returns a result: *out holds the probe of lowest HD
+                                       (stats hd_reached), which the caller destroys as on success */
 
 /* A static English name for a status, e.g. "CA_ERROR_NULL_POINTER: a required pointer is NULL". */
 CA_API const char* ca_status_string(ca_status status);
@@ -304,7 +307,9 @@ typedef struct ca_select_options {
                                     with its defaults, has a two-sided Hausdorff distance <= E % of the
                                     bbox diagonal, by a search over delta from the delta above (offset
                                     dilation only, not with target_count; docs/fidelity.md: what it
-                                    guarantees). The stats give the HD reached and the delta. */
+                                    guarantees). The stats give the HD reached and the delta. When no
+                                    probe reaches E: CA_ERROR_TARGET_NOT_REACHED, and *out is the
+                                    selection of lowest HD found (destroy it as on success) */
     int32_t probe_fit;           /* ABI 2 (appended after target_error). How the target_error search and
                                     target_count's lowest-HD search connect each probe: 0 (default): the
                                     default ca_connect_options; 1: the same with fit = 1, so the HD

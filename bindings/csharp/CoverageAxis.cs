@@ -16,6 +16,7 @@ namespace CoverageAxis
         Ok = 0, InvalidArgument = 1, NullPointer = 2, StructSize = 3, InvalidInput = 4,
         DegenerateInput = 5, Uncoverable = 6, Geometry = 7, Solver = 8, Cancelled = 9,
         OutOfMemory = 10, BufferTooSmall = 11, Internal = 12, NoCandidates = 13, TimeLimit = 14,
+        TargetNotReached = 15,
     }
 
     public enum Generator { Voronoi = 0, Random = 1 }
@@ -282,6 +283,17 @@ namespace CoverageAxis
         }
     }
 
+    /// <summary>Select with TargetError: no probe reached it. Selection is the selection of lowest
+    /// HD found (its Stats' hd_reached); the caller disposes of it.</summary>
+    public class TargetNotReachedException : CoverageAxisException
+    {
+        public Selection Selection { get; private set; }
+        public TargetNotReachedException(string message, Selection selection) : base(Status.TargetNotReached, message)
+        {
+            Selection = selection;
+        }
+    }
+
     /// <summary>A surface: a triangle mesh (x y z per vertex, i j k per triangle, 0-based) or an
     /// oriented point cloud (Triangles null, one outward normal per point, or Normals null). Arrays
     /// are read during a call only; their lengths are checked before it (Status.InvalidInput).</summary>
@@ -464,6 +476,8 @@ namespace CoverageAxis
             if (token.IsCancellationRequested) Native.ca_context_clear_cancel(handle);
             if (status == 0) return result();
             var message = Marshal.PtrToStringAnsi(Native.ca_context_last_error(handle));
+            if (status == (int)Status.TargetNotReached)  // the one failure with a result (Select's)
+                throw new TargetNotReachedException(message, (Selection)(object)result());
             if (status == (int)Status.Cancelled && token.IsCancellationRequested)
                 throw new OperationCanceledException(message, token);
             throw new CoverageAxisException((Status)status, message);

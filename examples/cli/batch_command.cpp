@@ -100,7 +100,8 @@ Json run_job(const Job& job, const RunOptions& o, const Json& options, bool forc
     Json report;
     if (!force && up_to_date(job.out, key, report)) {
         report["skipped"] = true;
-        ok = true;
+        ok = !report.contains("error");  // a stored run that missed its target error
+
         return report;
     }
     std::error_code ec;
@@ -119,7 +120,7 @@ Json run_job(const Job& job, const RunOptions& o, const Json& options, bool forc
     }
     report = r.report;
     report["skipped"] = false;
-    ok = true;
+    ok = !r.target_missed;  // the outputs are written; the line carries the error
     return report;
 }
 

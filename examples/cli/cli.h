@@ -62,7 +62,8 @@ struct Failure {
 struct Outcome {
     bool ok = false;
     Json report;      // the --json fields
-    Failure failure;
+    Failure failure;  // !ok: why; ok with target_missed: the target not reached (exit 4)
+    bool target_missed = false;  // --target-error not reached: the outputs hold the lowest HD found
 };
 
 // The options of a run, on a single run's or the batch command's command line.

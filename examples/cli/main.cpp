@@ -167,6 +167,11 @@ int single_run(int argc, char** argv) {
     if (!r.ok) return report_failure(r.failure, json, input);
     if (json) std::printf("%s\n", r.report.dump().c_str());
     else if (!quiet) print_summary(r.report, o);
+    // a target error not reached: the outputs are written, the exit status says it was missed
+    if (r.target_missed) {
+        if (!json) std::fprintf(stderr, "coverage-axis: %s (%s)\n", r.failure.message.c_str(), ca_status_string(r.failure.code));
+        return r.failure.exit_code;
+    }
     return 0;
 }
 

@@ -221,6 +221,13 @@ bool make_selection(Owned& owned, const RunOptions& o, Failure& failure) {
         *m.count = m.mask.size();
     }
     const ca_status st = ca_select(owned.ctx, owned.set, &so, &owned.sel);
+    if (st == CA_ERROR_TARGET_NOT_REACHED) {  // the run goes on with the best selection; exit 4 at the end
+        failure = library_failure(owned.ctx, st, "selection");
+        failure.message = std::string(ca_context_last_error(owned.ctx)) +
+                          "; the outputs hold that skeleton (raise --samples or add --fit to search further)";
+        failure.exit_code = 4;
+        return true;
+    }
     if (st != CA_OK) return failure = library_failure(owned.ctx, st, "selection"), false;
     return true;
 }
@@ -280,6 +287,7 @@ Outcome run_pipeline(const std::string& input, const RunOptions& o, const Output
     t0 = Clock::now();
     if (!context_for(owned, desc, o.time_limit_s, t_start, "selection", r.failure) || !make_selection(owned, o, r.failure))
         return r;
+    r.target_missed = r.failure.exit_code == 4;
     const double t_select = since(t0);
     ca_select_stats ss;
     ss.struct_size = sizeof ss;
@@ -362,6 +370,8 @@ Outcome run_pipeline(const std::string& input, const RunOptions& o, const Output
     if (o.select.target_count > 0) j["hd_reached"] = ev.hd_two_sided;
     else if (ss.hd_reached >= 0) j["hd_reached"] = ss.hd_reached;
     else j["hd_reached"] = nullptr;
+    if (o.select.target_error > 0) j["target_reached"] = !r.target_missed;
+    if (r.target_missed) j["error"] = error_json(r.failure);
     j["time_s"] = {{"read", round4(t_read)},         {"candidates", round4(t_candidates)}, {"select", round4(t_select)},
                    {"connect", round4(t_connect)}, {"write", round4(t_write)},           {"evaluate", round4(t_evaluate)},
                    {"total", round4(since(t_start))}};

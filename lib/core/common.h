@@ -47,6 +47,7 @@ enum class Code : int32_t {
     internal = 12,
     no_candidates = 13,
     time_limit = 14,        // the call's time budget ran out
+    target_not_reached = 15,  // a search ended above its target; its best result is still returned
 };
 
 struct Status {

@@ -6,6 +6,7 @@
 #include "target_error.h"
 
 #include <cmath>
+#include <cstdio>
 
 namespace ca {
 
@@ -71,9 +72,14 @@ Status select_step(const CandidateSet& set, const SelectRequest& request, const 
         if (!st.ok()) return st;
         out.selection = std::move(ter.selection);
         out.hd_reached = ter.evaluation.hd_two_sided;
-        if (!ter.reached)
-            monitor.note(2, "target_error " + std::to_string(request.target_error) + " % not reached: the lowest HD found is " +
-                                std::to_string(out.hd_reached) + " %");
+        if (!ter.reached) {
+            // the caller gets the best probe with a status of its own, never a silent success
+            char text[160];
+            std::snprintf(text, sizeof text, "target error %.4g %% not reached: the lowest two-sided HD found is %.3f %% (%zu balls, %llu probes)",
+                          request.target_error, out.hd_reached, out.selection.indices.size(),
+                          (unsigned long long)out.selection.probes);
+            return fail(Code::target_not_reached, text);
+        }
     } else if (lowest_hd) {
         TargetCountHdOptions tc;
         tc.connect = probe.connect;

@@ -87,7 +87,8 @@ struct SelectResult {
     double hd_reached = -1;       // the searches: the HD of the returned selection; -1 not measured
 };
 
-// Checks the request and runs its strategy: target_error's search when set; target_count with the
+// Checks the request and runs its strategy: target_error's search when set (when no probe
+// reaches it: Code::target_not_reached with `out` holding the probe of lowest HD); target_count with the
 // offset dilation on a set with a surface: the lowest HD within the count (target_count_hd.h); else
 // select_balls (which handles target_count by bisection alone). Each search probe is connected as
 // connect_step would with the default ConnectRequest (fit = probe_fit) and measured as

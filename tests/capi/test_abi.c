@@ -529,6 +529,47 @@ static void test_probe_fit(void) {
     ca_context_destroy(ctx);
 }
 
+/* A target error no probe reaches: CA_ERROR_TARGET_NOT_REACHED with a message saying what was
+   reached, and the selection of lowest HD still in *out: its stats report that HD (above the
+   target), and it connects like any selection. */
+static void test_target_not_reached(void) {
+    ca_context* ctx = NULL;
+    ca_candidate_set* set = NULL;
+    ca_selection* sel = NULL;
+    ca_skeleton* sk = NULL;
+    ca_surface_view v = box_view();
+    ca_candidate_options o = small_options();
+    ca_select_options so;
+    ca_select_stats ss;
+    CHECK(ca_context_create(NULL, &ctx) == CA_OK);
+    CHECK(ca_candidates(ctx, &v, &o, &set) == CA_OK);
+    ca_select_options_init(&so);
+    so.target_error = 1e-4; /* a box's skeleton of a few balls is never that close */
+    CHECK(ca_select(ctx, set, &so, &sel) == CA_ERROR_TARGET_NOT_REACHED);
+    CHECK(strstr(ca_context_last_error(ctx), "not reached") != NULL);
+    CHECK(strstr(ca_status_string(CA_ERROR_TARGET_NOT_REACHED), "CA_ERROR_TARGET_NOT_REACHED") != NULL);
+    CHECK(sel != NULL);
+    if (sel) {
+        ss.struct_size = sizeof ss;
+        CHECK(ca_selection_stats(sel, &ss) == CA_OK);
+        CHECK(ss.hd_reached > so.target_error);
+        CHECK(ss.probes >= 2);
+        CHECK(ca_selection_count(sel) > 0);
+        CHECK(ca_connect(ctx, set, sel, NULL, &sk) == CA_OK && sk != NULL);
+        /* the HD the stats report is the one ca_evaluate measures on that skeleton */
+        CHECK(fabs(connected_hd(ctx, set, sel, 0) - ss.hd_reached) < 1e-9 * ss.hd_reached);
+        ca_skeleton_destroy(sk);
+        ca_selection_destroy(sel);
+    }
+    /* a reachable target is a success */
+    so.target_error = 50;
+    sel = NULL;
+    CHECK(ca_select(ctx, set, &so, &sel) == CA_OK && sel != NULL);
+    ca_selection_destroy(sel);
+    ca_candidate_set_destroy(set);
+    ca_context_destroy(ctx);
+}
+
 int main(void) {
     test_versions();
     test_null_and_sizes();
@@ -539,6 +580,7 @@ int main(void) {
     test_evaluate();
     test_routes_and_target();
     test_probe_fit();
+    test_target_not_reached();
     printf("test_abi: %d passed, %d failed\n", checks - failures, failures);
     return failures ? 1 : 0;
 }

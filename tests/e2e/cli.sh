@@ -73,6 +73,15 @@ hd_te=$(json_field hd_reached "$tmp/te.json")
 check "target error: HD reached $hd_te <= 2.6" awk -v h="$hd_te" 'BEGIN{exit !(h >= 0 && h <= 2.6)}'
 check "target error: --evaluate measures the same HD" awk -v h="$hd_te" -v e="$(json_field hd_two_sided "$tmp/te.json")" 'BEGIN{d=h-e; if(d<0)d=-d; exit !(d < 1e-9)}'
 check "target error: several probes" test "$(json_field probes "$tmp/te.json")" -ge 2
+# a target no probe reaches: exit 4, the best skeleton written, the JSON says what was reached
+"$tool" "$data/fox.obj" -o "$tmp/tn.ma" --samples 800 --voronoi-samples 2000 --target-error 0.01 --json > "$tmp/tn.json"
+check "unreachable target error: exit 4" test $? -eq 4
+check "unreachable target error: the best skeleton is written" test -s "$tmp/tn.ma"
+check "unreachable target error: target_reached false" grep -q '"target_reached":false' "$tmp/tn.json"
+check "unreachable target error: the status in the report" grep -q '"status":"CA_ERROR_TARGET_NOT_REACHED"' "$tmp/tn.json"
+check "unreachable target error: the HD reached is above the target" awk -v h="$(json_field hd_reached "$tmp/tn.json")" 'BEGIN{exit !(h > 0.01)}'
+check "unreachable target error: the message says what was reached" grep -q 'not reached: the lowest two-sided HD found is' "$tmp/tn.json"
+check "target error reached: target_reached true" grep -q '"target_reached":true' "$tmp/te.json"
 "$tool" "$data/fox.obj" -o "$tmp/te2.ma" --target-error 2 --target-count 30 --json > "$tmp/te2.json"
 check "target error with target count: refused by the library (exit 1)" test $? -eq 1
 check "target error with target count: INVALID_ARGUMENT naming both" grep -q 'CA_ERROR_INVALID_ARGUMENT.*target_error and target_count' "$tmp/te2.json"

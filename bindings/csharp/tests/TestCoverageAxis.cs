@@ -186,6 +186,29 @@ static class TestCoverageAxis
         }
     }
 
+    static void TargetNotReachedKeepsTheBestSelection()
+    {
+        var surface = ReadObj(Path.Combine(dataDir, "fox.obj"));
+        using (var ctx = new Context())
+        using (var set = ctx.Candidates(surface, new CandidateOptions { CoverSamples = 300 }))
+        {
+            try
+            {
+                ctx.Select(set, new SelectOptions { TargetError = 1e-4 });
+                Check(false, "an unreachable target error returned success");
+            }
+            catch (TargetNotReachedException e)
+            {
+                Check(e.Status == Status.TargetNotReached && e.Message.Contains("not reached"), e.Message);
+                using (var best = e.Selection)
+                {
+                    Check(best.Count > 0 && best.Stats.hd_reached > 1e-4, "the best selection is carried");
+                    using (var sk = ctx.Connect(set, best)) Check(sk.Count == best.Count, "it connects");
+                }
+            }
+        }
+    }
+
     static void ProgressEventAndCancellation()
     {
         var surface = ReadObj(Path.Combine(dataDir, "fox.obj"));
@@ -263,6 +286,7 @@ static class TestCoverageAxis
         Test("defaults come from the library", DefaultsComeFromTheLibrary);
         Test("errors carry status and message", ErrorsCarryStatusAndMessage);
         Test("lengths are checked before the call", LengthsAreCheckedBeforeTheCall);
+        Test("a target error not reached keeps the best selection", TargetNotReachedKeepsTheBestSelection);
         Test("fox matches the CLI", FoxMatchesTheCli);
         Test("progress event and cancellation", ProgressEventAndCancellation);
         Test("results outlive context and set", ResultsOutliveContextAndSet);

@@ -11,12 +11,14 @@
 module CoverageAxis
 
 export Context, candidates, select, connect, skeletonize, evaluate, cancel!, clear_cancel!,
-       centers, radii, dilated_radii, indices, uncovered, samples, edges, faces, stats, CoverageAxisError
+       centers, radii, dilated_radii, indices, uncovered, samples, edges, faces, stats, CoverageAxisError,
+       TargetNotReachedError
 
 # The library's path: COVERAGE_AXIS_LIBRARY, else the loader's search path.
 const libcoverage_axis = get(ENV, "COVERAGE_AXIS_LIBRARY", "libcoverage_axis")
 const ABI_VERSION = 3  # the ABI whose layouts are declared below
 const CA_OK = Int32(0)
+const CA_ERROR_TARGET_NOT_REACHED = Int32(15)
 const CA_ERROR_INVALID_INPUT = Int32(4)
 const CA_ERROR_CANCELLED = Int32(9)
 
@@ -298,6 +300,13 @@ mutable struct Skeleton
     Skeleton(ptr) = finalizer(close, new(ptr))
 end
 
+"""`select` with target_error: no probe reached it; `selection` is the one of lowest HD found."""
+struct TargetNotReachedError <: Exception
+    message::String
+    selection::Selection
+end
+Base.showerror(io::IO, e::TargetNotReachedError) = print(io, "TargetNotReachedError: ", e.message)
+
 for (T, destroy) in ((CandidateSet, :ca_candidate_set_destroy), (Selection, :ca_selection_destroy),
                      (Skeleton, :ca_skeleton_destroy))
     @eval function Base.close(x::$T)
@@ -412,10 +421,15 @@ function select(ctx::Context, set::CandidateSet; ignorable_samples=nothing, forc
     o = with(defaults(SelectOptions); ignorable_samples=ptrs[1], forced_in=ptrs[2], forced_out=ptrs[3],
              ignorable_samples_count=counts[1], forced_in_count=counts[2], forced_out_count=counts[3], options...)
     out = Ref{Ptr{Cvoid}}(C_NULL)
-    GC.@preserve ctx set masks begin
-        check(ctx, ccall((:ca_select, libcoverage_axis), Int32,
-                         (Ptr{Cvoid}, Ptr{Cvoid}, Ref{SelectOptions}, Ref{Ptr{Cvoid}}), ctx.ptr, set.ptr, o, out))
+    status = GC.@preserve ctx set masks begin
+        ccall((:ca_select, libcoverage_axis), Int32,
+              (Ptr{Cvoid}, Ptr{Cvoid}, Ref{SelectOptions}, Ref{Ptr{Cvoid}}), ctx.ptr, set.ptr, o, out)
     end
+    if status == CA_ERROR_TARGET_NOT_REACHED && out[] != C_NULL  # the one failure with a result
+        message = unsafe_string(ccall((:ca_context_last_error, libcoverage_axis), Cstring, (Ptr{Cvoid},), ctx.ptr))
+        throw(TargetNotReachedError(message, Selection(out[])))
+    end
+    check(ctx, status)
     Selection(out[])
 end
 

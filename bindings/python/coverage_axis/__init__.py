@@ -11,21 +11,24 @@ Steps one by one: candidates() -> select() -> connect(); a Context gives threads
 and a cancel() any thread may call. Errors raise CoverageAxisError (.status, .message)."""
 from ._arrays import HAVE_NUMPY
 from ._context import Context
-from ._library import (ABI_VERSION, STATUS_NAMES, CoverageAxisError, LibraryNotFoundError, lib as _lib,
-                       load_library)
+from ._library import (ABI_VERSION, STATUS_NAMES, CoverageAxisError, LibraryNotFoundError, TargetNotReachedError,
+                       lib as _lib, load_library)
 from ._library import (CA_OK, CA_ERROR_INVALID_ARGUMENT, CA_ERROR_NULL_POINTER, CA_ERROR_STRUCT_SIZE,
                        CA_ERROR_INVALID_INPUT, CA_ERROR_DEGENERATE_INPUT, CA_ERROR_UNCOVERABLE, CA_ERROR_GEOMETRY,
                        CA_ERROR_SOLVER, CA_ERROR_CANCELLED, CA_ERROR_OUT_OF_MEMORY, CA_ERROR_BUFFER_TOO_SMALL,
-                       CA_ERROR_INTERNAL, CA_ERROR_NO_CANDIDATES, CA_ERROR_TIME_LIMIT)
+                       CA_ERROR_INTERNAL, CA_ERROR_NO_CANDIDATES, CA_ERROR_TIME_LIMIT,
+                       CA_ERROR_TARGET_NOT_REACHED)
 from ._steps import CandidateSet, Selection, Skeleton, candidates, connect, defaults, evaluate, select, skeletonize
 
 __all__ = ["HAVE_NUMPY", "Context", "ABI_VERSION", "STATUS_NAMES", "CoverageAxisError", "LibraryNotFoundError",
+           "TargetNotReachedError",
            "load_library", "CandidateSet", "Selection", "Skeleton", "candidates", "connect", "defaults", "evaluate",
            "select", "skeletonize", "version",
            "CA_OK", "CA_ERROR_INVALID_ARGUMENT", "CA_ERROR_NULL_POINTER", "CA_ERROR_STRUCT_SIZE",
            "CA_ERROR_INVALID_INPUT", "CA_ERROR_DEGENERATE_INPUT", "CA_ERROR_UNCOVERABLE", "CA_ERROR_GEOMETRY",
            "CA_ERROR_SOLVER", "CA_ERROR_CANCELLED", "CA_ERROR_OUT_OF_MEMORY", "CA_ERROR_BUFFER_TOO_SMALL",
-           "CA_ERROR_INTERNAL", "CA_ERROR_NO_CANDIDATES", "CA_ERROR_TIME_LIMIT"]
+           "CA_ERROR_INTERNAL", "CA_ERROR_NO_CANDIDATES", "CA_ERROR_TIME_LIMIT",
+           "CA_ERROR_TARGET_NOT_REACHED"]
 
 
 def version():

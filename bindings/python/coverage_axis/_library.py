@@ -20,15 +20,16 @@ from ._structs import (_CandidateOptions, _ConnectOptions, _ContextDesc, _Evalua
 
 ABI_VERSION = 3
 
-# the header's pinned status codes, CA_OK = 0 ... CA_ERROR_TIME_LIMIT = 14
+# the header's pinned status codes, CA_OK = 0 ... CA_ERROR_TARGET_NOT_REACHED = 15
 STATUS_NAMES = ("CA_OK", "CA_ERROR_INVALID_ARGUMENT", "CA_ERROR_NULL_POINTER", "CA_ERROR_STRUCT_SIZE",
                 "CA_ERROR_INVALID_INPUT", "CA_ERROR_DEGENERATE_INPUT", "CA_ERROR_UNCOVERABLE", "CA_ERROR_GEOMETRY",
                 "CA_ERROR_SOLVER", "CA_ERROR_CANCELLED", "CA_ERROR_OUT_OF_MEMORY", "CA_ERROR_BUFFER_TOO_SMALL",
-                "CA_ERROR_INTERNAL", "CA_ERROR_NO_CANDIDATES", "CA_ERROR_TIME_LIMIT")
+                "CA_ERROR_INTERNAL", "CA_ERROR_NO_CANDIDATES", "CA_ERROR_TIME_LIMIT",
+                "CA_ERROR_TARGET_NOT_REACHED")
 (CA_OK, CA_ERROR_INVALID_ARGUMENT, CA_ERROR_NULL_POINTER, CA_ERROR_STRUCT_SIZE, CA_ERROR_INVALID_INPUT,
  CA_ERROR_DEGENERATE_INPUT, CA_ERROR_UNCOVERABLE, CA_ERROR_GEOMETRY, CA_ERROR_SOLVER, CA_ERROR_CANCELLED,
  CA_ERROR_OUT_OF_MEMORY, CA_ERROR_BUFFER_TOO_SMALL, CA_ERROR_INTERNAL, CA_ERROR_NO_CANDIDATES,
- CA_ERROR_TIME_LIMIT) = range(15)
+ CA_ERROR_TIME_LIMIT, CA_ERROR_TARGET_NOT_REACHED) = range(16)
 
 LOG_FN = CFUNCTYPE(None, c_void_p, c_int32, c_char_p)
 PROGRESS_FN = CFUNCTYPE(c_int32, c_void_p, c_char_p, c_double)
@@ -42,6 +43,17 @@ class CoverageAxisError(Exception):
         super().__init__("%s: %s" % (name, message))
         self.status = status
         self.message = message
+
+
+class TargetNotReachedError(CoverageAxisError):
+    """select() or skeletonize() with target_error: no probe reached it. .selection holds the
+    selection of lowest HD found (its stats' hd_reached), and from skeletonize() .skeleton its
+    skeleton."""
+
+    def __init__(self, message, selection):
+        super().__init__(CA_ERROR_TARGET_NOT_REACHED, message)
+        self.selection = selection
+        self.skeleton = None
 
 
 class LibraryNotFoundError(ImportError):

@@ -9,7 +9,8 @@ import ctypes
 
 from . import _arrays
 from ._context import Context
-from ._library import (CA_ERROR_INVALID_ARGUMENT, CA_ERROR_INVALID_INPUT, CoverageAxisError, _CandidateOptions,
+from ._library import (CA_ERROR_INVALID_ARGUMENT, CA_ERROR_INVALID_INPUT, CA_ERROR_TARGET_NOT_REACHED,
+                       CoverageAxisError, TargetNotReachedError, _CandidateOptions,
                        _ConnectOptions, _EvaluateOptions, _Evaluation, _SelectOptions, _SelectStats, _SkeletonStats,
                        _SkeletonView, _SurfaceView, fill_defaults, lib, output_struct, struct_dict)
 from ._structs import _ContextDesc
@@ -224,8 +225,15 @@ def select(candidate_set, *, context=None, ignorable_samples=None, forced_in=Non
         setattr(opts, name, ctypes.addressof(m) if m is not None and len(m) else None)
         setattr(opts, name + "_count", len(m) if m is not None else 0)
     out = ctypes.c_void_p()
-    _run(context, lib().ca_select, candidate_set._handle._ptr, ctypes.byref(opts), ctypes.byref(out))
-    del masks
+    try:
+        _run(context, lib().ca_select, candidate_set._handle._ptr, ctypes.byref(opts), ctypes.byref(out))
+    except CoverageAxisError as e:
+        if e.status != CA_ERROR_TARGET_NOT_REACHED:
+            raise
+        # the one failure with a result: the library returned its best selection
+        raise TargetNotReachedError(e.message, Selection(out, candidate_set)) from None
+    finally:
+        del masks
     return Selection(out, candidate_set)
 
 
@@ -286,7 +294,12 @@ def skeletonize(vertices, triangles=None, normals=None, *, context=None, connect
         steps[step][name] = value
     cset = candidates(vertices, triangles, normals, context=context, point_normals=point_normals,
                       **steps["candidates"])
-    sel = select(cset, context=context, **steps["select"])
+    try:
+        sel = select(cset, context=context, **steps["select"])
+    except TargetNotReachedError as e:  # the best skeleton travels with the error
+        e.skeleton = _connect_step(e.selection, context=context, **steps["connect"])
+        e.skeleton.stats = dict(e.selection.stats, **e.skeleton.stats, candidates=cset.count)
+        raise
     sk = _connect_step(sel, context=context, **steps["connect"])
     sk.stats = dict(sel.stats, **sk.stats, candidates=cset.count)
     return sk

@@ -176,6 +176,21 @@ class CommonTest(unittest.TestCase):
         for route in ("power", "medial"):
             self.assertEqual(ca.skeletonize(BOX_V, BOX_F, connect=route, **SMALL).stats["components"], 1)
 
+    def test_target_error_not_reached_carries_the_best_result(self):
+        with self.assertRaises(ca.TargetNotReachedError) as raised:
+            ca.skeletonize(BOX_V, BOX_F, target_error=1e-4, **SMALL)
+        e = raised.exception
+        self.assertIsInstance(e, ca.CoverageAxisError)
+        self.assertEqual(e.status, ca.CA_ERROR_TARGET_NOT_REACHED)
+        self.assertIn("not reached", e.message)
+        self.assertGreater(e.selection.stats["hd_reached"], 1e-4)
+        self.assertEqual(len(e.skeleton.radii), len(e.selection.radii))
+        self.assertGreater(len(e.skeleton.radii), 0)
+        # the skeleton carried is the one evaluate measures at the HD the search reported
+        hd = ca.evaluate(BOX_V, BOX_F, e.skeleton)["hd_two_sided"]
+        self.assertAlmostEqual(hd, e.selection.stats["hd_reached"], delta=1e-9 * hd)
+        self.assertEqual(len(ca.skeletonize(BOX_V, BOX_F, target_error=50, **SMALL).radii) > 0, True)
+
     def test_masks(self):
         cset = ca.candidates(BOX_V, BOX_F, **SMALL)
         free = ca.select(cset)

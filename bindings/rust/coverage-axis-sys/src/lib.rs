@@ -26,6 +26,7 @@ pub const CA_ERROR_BUFFER_TOO_SMALL: ca_status = 11;
 pub const CA_ERROR_INTERNAL: ca_status = 12;
 pub const CA_ERROR_NO_CANDIDATES: ca_status = 13;
 pub const CA_ERROR_TIME_LIMIT: ca_status = 14;
+pub const CA_ERROR_TARGET_NOT_REACHED: ca_status = 15;
 
 pub const CA_CANDIDATES_VORONOI: i32 = 0;
 pub const CA_CANDIDATES_RANDOM: i32 = 1;

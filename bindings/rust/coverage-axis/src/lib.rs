@@ -61,6 +61,8 @@ pub enum Status {
     NoCandidates,
     /// The context's time limit ran out.
     TimeLimit,
+    /// `target_error` was not reached (`Context::select_best` still returns the best selection).
+    TargetNotReached,
     Unknown(i32),
 }
 
@@ -82,6 +84,7 @@ impl Status {
             sys::CA_ERROR_INTERNAL => Status::Internal,
             sys::CA_ERROR_NO_CANDIDATES => Status::NoCandidates,
             sys::CA_ERROR_TIME_LIMIT => Status::TimeLimit,
+            sys::CA_ERROR_TARGET_NOT_REACHED => Status::TargetNotReached,
             other => Status::Unknown(other),
         }
     }
@@ -103,6 +106,7 @@ impl Status {
             Status::Internal => sys::CA_ERROR_INTERNAL,
             Status::NoCandidates => sys::CA_ERROR_NO_CANDIDATES,
             Status::TimeLimit => sys::CA_ERROR_TIME_LIMIT,
+            Status::TargetNotReached => sys::CA_ERROR_TARGET_NOT_REACHED,
             Status::Unknown(code) => code,
         }
     }
@@ -669,6 +673,16 @@ impl Context {
     /// not the set's sample count (ignorable_samples) or ball count (forced_in, forced_out) is
     /// `Status::InvalidInput`.
     pub fn select(&self, set: &CandidateSet, options: &SelectOptions<'_>) -> Result<Selection> {
+        match self.select_best(set, options)? {
+            (selection, None) => Ok(selection),
+            (_, Some(missed)) => Err(missed),
+        }
+    }
+
+    /// Step 2, keeping the result of a `target_error` search that did not reach its target: the
+    /// selection of lowest HD found, with the `TargetNotReached` error beside it (`None` when the
+    /// target was reached or not set). Other failures are errors as in `select`.
+    pub fn select_best(&self, set: &CandidateSet, options: &SelectOptions<'_>) -> Result<(Selection, Option<Error>)> {
         let raw = &options.raw;
         let samples = unsafe { sys::ca_candidate_set_sample_count(set.raw) };
         for (name, array, count, want, per) in [
@@ -682,8 +696,14 @@ impl Context {
             }
         }
         let mut out = ptr::null_mut();
-        self.check(unsafe { sys::ca_select(self.ptr(), set.raw, &options.raw, &mut out) })?;
-        Ok(Selection { raw: out })
+        let status = unsafe { sys::ca_select(self.ptr(), set.raw, &options.raw, &mut out) };
+        if status == sys::CA_ERROR_TARGET_NOT_REACHED && !out.is_null() {
+            // the one failure with a result: the selection is owned (and freed) like any other
+            let missed = self.check(status).unwrap_err();
+            return Ok((Selection { raw: out }, Some(missed)));
+        }
+        self.check(status)?;
+        Ok((Selection { raw: out }, None))
     }
 
     /// Step 3: edges and faces between the selected balls (`set` is the selection's own set).

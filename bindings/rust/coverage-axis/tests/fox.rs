@@ -104,6 +104,23 @@ fn results_outlive_context_and_set() {
 }
 
 #[test]
+fn target_error_not_reached_keeps_the_best_selection() {
+    let (v, f) = read_obj(&data("fox.obj"));
+    let ctx = Context::new().unwrap();
+    let set = ctx.candidates(&Surface::mesh(&v, &f), &CandidateOptions::new().cover_samples(300)).unwrap();
+    let unreachable = SelectOptions::new().target_error(1e-4);
+    let e = ctx.select(&set, &unreachable).err().unwrap();
+    assert_eq!(e.status, Status::TargetNotReached);
+    assert!(e.message.contains("not reached"), "{}", e);
+    let (best, missed) = ctx.select_best(&set, &unreachable).unwrap();
+    assert_eq!(missed.unwrap().status, Status::TargetNotReached);
+    assert!(best.len() > 0 && best.stats().hd_reached > 1e-4);
+    assert!(ctx.connect(&set, &best, &ConnectOptions::default()).unwrap().len() == best.len());
+    let (_, reached) = ctx.select_best(&set, &SelectOptions::new().target_error(50.0)).unwrap();
+    assert!(reached.is_none());
+}
+
+#[test]
 fn defaults_come_from_the_library() {
     let o = SelectOptions::new();
     assert_eq!(o.raw().delta, 0.02);
@@ -126,7 +143,7 @@ fn errors_carry_status_and_message() {
     let e = Context::builder().threads(-1).build().err().unwrap();
     assert_eq!(e.status, Status::InvalidArgument);
     assert_eq!(e.status.code(), coverage_axis_sys::CA_ERROR_INVALID_ARGUMENT);
-    for code in 1..=14 {
+    for code in 1..=15 {
         assert_eq!(Status::from_code(code).code(), code);
         assert_ne!(Status::from_code(code), Status::Unknown(code));
     }
