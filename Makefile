@@ -43,9 +43,10 @@ test-distributed: build
 	@bash scripts/install-deps.sh python3-distributed python3-cryptography
 	@bash examples/distributed/tests/run_test.sh $(BUILD) .
 
-# every bench program, its output written to docs/benchmarks.md (stamped with date, machine, commit)
+# every bench program, its output written to docs/benchmarks.md (stamped with date, machine, commit);
+# BENCH_ONLY="bench_a bench_b" reruns only those and keeps the other sections
 bench: build
-	@bash scripts/bench_report.sh $(BUILD) $(DATA) docs/benchmarks.md
+	@BENCH_ONLY="$(BENCH_ONLY)" bash scripts/bench_report.sh $(BUILD) $(DATA) docs/benchmarks.md
 
 install: build
 	@cmake --install $(BUILD) $(if $(PREFIX),--prefix $(PREFIX),)

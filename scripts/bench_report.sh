@@ -3,8 +3,11 @@
 # (docs/benchmarks.md by `make bench`), stamped with the date, the machine and the commit.
 # usage: scripts/bench_report.sh BUILD_DIR DATA_ROOT OUT.md
 # Each program's output goes under its own heading in a closed code fence, so the file renders
-# whatever the programs print. The file is written to a temporary name and moved into place at
-# the end: a second run replaces it, a failed run leaves the previous file alone.
+# whatever the programs print; the heading's first line names the commit, date and load it ran
+# at. The file is written to a temporary name and moved into place at the end: a second run
+# replaces it, a failed run leaves the previous file alone.
+# BENCH_ONLY="bench_a bench_b" (`make bench BENCH_ONLY=...`) runs only those programs and keeps the
+# other programs' sections of OUT.md as they were (a program without one runs too).
 set -euo pipefail
 build=${1:?usage: bench_report.sh BUILD_DIR DATA_ROOT OUT.md}
 data=${2:?usage: bench_report.sh BUILD_DIR DATA_ROOT OUT.md}
@@ -30,17 +33,32 @@ fence_for() {
   printf '%*s' "$longest" '' | tr ' ' '`'
 }
 
+# The previous file's section of a program (from its heading to the next), for BENCH_ONLY.
+old_section() {
+  [ -f "$out" ] || return 0
+  awk -v h="## $1" '$0 == h { on = 1; print; next } on && /^## bench_/ { exit } on { print }' "$out"
+}
+
+only=" ${BENCH_ONLY:-} "
 body=""
 for b in "$build"/bench_*; do
   [ -x "$b" ] && [ -f "$b" ] || continue
   name=$(basename "$b")
+  if [ -n "${BENCH_ONLY:-}" ] && [[ "$only" != *" $name "* ]]; then
+    kept=$(old_section "$name")
+    if [ -n "$kept" ]; then
+      body+=$'\n'"$kept"$'\n'
+      continue
+    fi
+  fi
   echo "== $name" >&2
   s0=$(date +%s)
+  load0=$(cut -d' ' -f1 /proc/loadavg 2>/dev/null || echo "?")
   status=0
   "$b" "$data" | tee "$tmp.run" || status=$?
   secs=$(( $(date +%s) - s0 ))
   f=$(fence_for "$tmp.run")
-  body+=$'\n'"## $name"$'\n\n'"\`$name $data\`: exit status $status, $secs s wall."$'\n\n'"$f"$'\n'
+  body+=$'\n'"## $name"$'\n\n'"\`$name $data\`: exit status $status, $secs s wall; commit $commit, $(date -u '+%Y-%m-%d %H:%M UTC'), load $load0 at the start."$'\n\n'"$f"$'\n'
   body+=$(cat "$tmp.run")
   body+=$'\n'"$f"$'\n'
   [ "$status" -eq 0 ] || { echo "bench_report: $name failed (status $status); $out not written" >&2; exit 1; }
@@ -62,7 +80,11 @@ fi
   echo "- machine: $cores cores, ${cpu:-unknown CPU}, $mem memory"
   echo "- commit: $commit"
   echo "- load average (1, 5, 15 min): $load_start at the start, $load_end at the end.$busy"
-  echo "- duration: $total s for all programs"
+  if [ -n "${BENCH_ONLY:-}" ]; then
+    echo "- duration: $total s for $BENCH_ONLY; the other sections were kept from an earlier run (each names its commit)"
+  else
+    echo "- duration: $total s for all programs"
+  fi
   printf '%s\n' "$body"
 } > "$tmp"
 mv "$tmp" "$out"
