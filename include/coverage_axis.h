@@ -372,6 +372,10 @@ typedef struct ca_select_stats {
 CA_API ca_status ca_selection_stats(const ca_selection* selection, ca_select_stats* stats);
 
 /* ---- step 3: connectivity ------------------------------------------------------------------ */
+#define CA_FIT_AUTO     (-1) /* ABI 3: the thorough fit for a target_count selection on a mesh, else off */
+#define CA_FIT_OFF      0
+#define CA_FIT_ONCE     1
+#define CA_FIT_THOROUGH 2
 #define CA_CONNECT_POWER  0 /* regular triangulation of selected balls and dense surface samples */
 #define CA_CONNECT_MEDIAL 1 /* regions of the selected balls on the inner Voronoi medial mesh (meshes, point clouds) */
 #define CA_CONNECT_AUTO   2 /* MEDIAL for meshes and clean point clouds, POWER for noisy clouds and caller arrays */
@@ -382,12 +386,14 @@ typedef struct ca_connect_options {
     int32_t remove_outside;      /* 1 (default): drop edges/triangles whose interior leaves the shape */
     int32_t fill_holes;          /* 1 (default): fill 3- and 4-edge holes whose triangles stay inside */
     int32_t reconnect;           /* 1 (default): join components by the shortest inside edges */
-    int32_t fit;                 /* ABI 2. 1: after connecting, move each ball's centre and radius to fit
-                                    the surface, edges and faces unchanged (meshes; docs/fidelity.md);
-                                    2: the thorough fit, that fit and a second one with twice its
-                                    boundary samples, of which the one of lower two-sided HD as
-                                    ca_evaluate measures it at its defaults is kept (4-6x the
-                                    CPU time); other values are CA_ERROR_INVALID_ARGUMENT; default 0 */
+    int32_t fit;                 /* ABI 2. CA_FIT_*. ONCE: after connecting, move each ball's centre and
+                                    radius to fit the surface, edges and faces unchanged (meshes;
+                                    docs/fidelity.md); THOROUGH: that fit and a second one with twice
+                                    its boundary samples, of which the one of lower two-sided HD as
+                                    ca_evaluate measures it at its defaults is kept (4-6x the CPU
+                                    time); AUTO (default, ABI 3): THOROUGH for a selection sized by
+                                    target_count on a mesh, else OFF; other values are
+                                    CA_ERROR_INVALID_ARGUMENT */
     int32_t fit_iterations;      /* ABI 2. Fitting steps; default 10 */
 } ca_connect_options;
 

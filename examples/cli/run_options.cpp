@@ -158,7 +158,9 @@ void add_run_options(CLI::App& app, RunOptions& o) {
                  "--target-count searches then measure fitted skeletons (docs/fidelity.md)")
         ->group(connect);
     app.add_flag("--fit-thorough", "--fit, and a second fit with twice the boundary samples; the one of lower two-sided HD "
-                 "is written (3-6x the fit's time; docs/fidelity.md)")
+                 "is written (3-6x the fit's time; docs/fidelity.md). The default with --target-count on a mesh")
+        ->group(connect);
+    app.add_flag("--no-fit", "no fit, also with --target-count (whose skeleton the library fits thoroughly by default)")
         ->group(connect);
 
     app.add_option("--ignore-samples", o.ignore_samples_file, "indices (0-based) of samples that need not be covered")->group(control);
@@ -191,10 +193,17 @@ bool finish_run_options(const CLI::App& app, RunOptions& o, std::string& error) 
     o.point_normals = value_of(kNormals, o.normals);
     o.select.effort = value_of(kEfforts, o.effort);
     o.connect.method = value_of(kRoutes, o.connect_route);
-    o.connect.fit = app.count("--fit-thorough") ? 2 : app.count("--fit") ? 1 : 0;
+    if (app.count("--no-fit") && (app.count("--fit") || app.count("--fit-thorough"))) {
+        error = "--no-fit cannot be combined with --fit or --fit-thorough";
+        return false;
+    }
+    // no flag: the library's default (CA_FIT_AUTO)
+    if (app.count("--fit-thorough")) o.connect.fit = CA_FIT_THOROUGH;
+    else if (app.count("--fit")) o.connect.fit = CA_FIT_ONCE;
+    else if (app.count("--no-fit")) o.connect.fit = CA_FIT_OFF;
     // the delta searches measure the default connection, fitted with --fit; with --fit-thorough the
     // probes take the regular fit, which the written (thorough) one is never farther than
-    o.select.probe_fit = o.connect.fit ? 1 : 0;
+    o.select.probe_fit = o.connect.fit == CA_FIT_ONCE || o.connect.fit == CA_FIT_THOROUGH ? 1 : 0;
     if (o.select.target_error > 0 && o.connect.method != CA_CONNECT_AUTO) {
         error = "--target-error measures the default connection: it does not take --connect " + o.connect_route;
         return false;
@@ -261,7 +270,7 @@ Json options_json(const RunOptions& o) {
                 {"force_in", file(o.force_in_file)},
                 {"force_out", file(o.force_out_file)},
                 {"connect", o.connect_route},
-                {"fit", o.connect.fit != 0},
+                {"fit", o.connect.fit},
                 {"remove_outside", o.connect.remove_outside},
                 {"fill_holes", o.connect.fill_holes},
                 {"reconnect", o.connect.reconnect},

@@ -1,16 +1,17 @@
 // connect_step.cpp: step 3 as one request: the selection connected on the route the request
-// names (automatic: resolve_method's choice), then fitted when the request asks and the set has a
-// triangle mesh to fit to.
+// names (automatic: resolve_method's choice), then fitted when the request asks (automatic: a
+// selection sized by target_count) and the set has a triangle mesh to fit to.
 #include "steps.h"
 
 namespace ca {
 
-std::optional<FitOptions> fit_options(const ConnectRequest& request, const CandidateSet& set) {
+std::optional<FitOptions> fit_options(const ConnectRequest& request, const CandidateSet& set, bool sized) {
     const bool mesh = !set.surface.point_cloud && !set.surface.mesh.triangles.empty();
-    if (request.fit == FitMode::off || !mesh || request.fit_iterations <= 0) return std::nullopt;
+    const FitMode mode = request.fit != FitMode::automatic ? request.fit : sized ? FitMode::thorough : FitMode::off;
+    if (mode == FitMode::off || !mesh || request.fit_iterations <= 0) return std::nullopt;
     FitOptions fo;
     fo.iterations = uint32_t(request.fit_iterations);
-    fo.thorough = request.fit == FitMode::thorough;
+    fo.thorough = mode == FitMode::thorough;
     fo.threads = request.connect.threads;
     return fo;
 }
@@ -21,13 +22,14 @@ Status connect_step(const CandidateSet& set, const Selection& selection, const C
     const ConnectMethod method = request.connect.method;
     if (method != ConnectMethod::power && method != ConnectMethod::medial && method != ConnectMethod::automatic)
         return fail(Code::invalid_argument, "unknown connection method " + std::to_string(int32_t(method)));
-    if (request.fit != FitMode::off && request.fit != FitMode::once && request.fit != FitMode::thorough)
-        return fail(Code::invalid_argument, "fit must be 0, 1 or 2, not " + std::to_string(int32_t(request.fit)));
+    if (request.fit != FitMode::automatic && request.fit != FitMode::off && request.fit != FitMode::once &&
+        request.fit != FitMode::thorough)
+        return fail(Code::invalid_argument, "fit must be -1 (auto), 0, 1 or 2, not " + std::to_string(int32_t(request.fit)));
     if (request.fit_iterations < 0) return fail(Code::invalid_argument, "fit_iterations must be >= 0");
     const auto t0 = Clock::now();
     Status st = connect_balls(set, selection, request.connect, monitor, out.skeleton, &out.report);
     if (!st.ok()) return st;
-    const std::optional<FitOptions> fo = fit_options(request, set);
+    const std::optional<FitOptions> fo = fit_options(request, set, selection.sized_by_count);
     if (fo) {
         st = fit_skeleton(set, selection, *fo, monitor, out.skeleton, out.fit);
         if (!st.ok()) return st;

@@ -94,6 +94,7 @@ Status select_step(const CandidateSet& set, const SelectRequest& request, const 
         st = select_balls(set, so, monitor, out.selection);
         if (!st.ok()) return st;
     }
+    out.selection.sized_by_count = so.target_count > 0;
     if (!out.selection.cover.uncovered.empty())
         monitor.note(2, std::to_string(out.selection.cover.uncovered.size()) +
                             " samples are covered by no ball and were skipped");

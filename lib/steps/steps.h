@@ -44,18 +44,21 @@ Status candidates_from_arrays(const std::vector<Vec3>& samples, const std::vecto
 
 // ---- step 3: connection (connect_step.cpp); before step 2, whose searches connect probes ----
 
-// How the balls are fitted after connecting (fit.h): not at all, one fit, or the thorough fit.
-enum class FitMode : int32_t { off = 0, once = 1, thorough = 2 };
+// How the balls are fitted after connecting (fit.h): not at all, one fit, or the thorough fit;
+// automatic: the thorough fit for a selection sized by target_count (few balls, which the fit
+// brings closest to the shape), else none; a plain selection stays unfitted, so its balls keep
+// covering every sample.
+enum class FitMode : int32_t { automatic = -1, off = 0, once = 1, thorough = 2 };
 
 struct ConnectRequest {
     ConnectOptions connect;       // the route (automatic by default) and the repairs
-    FitMode fit = FitMode::off;
+    FitMode fit = FitMode::automatic;
     int32_t fit_iterations = int32_t(FitOptions{}.iterations);  // >= 0
 };
 
-// The fit options of a request on `set`, or none when it does not fit: the fit needs a triangle
-// mesh, and fit on with 0 iterations is no fit.
-std::optional<FitOptions> fit_options(const ConnectRequest& request, const CandidateSet& set);
+// The fit options of a request on `set` for a selection (sized: made by target_count), or none
+// when it does not fit: the fit needs a triangle mesh, and fit on with 0 iterations is no fit.
+std::optional<FitOptions> fit_options(const ConnectRequest& request, const CandidateSet& set, bool sized = false);
 
 struct ConnectResult {
     Skeleton skeleton;            // internal units

@@ -332,7 +332,7 @@ static void test_connect_layouts(void) {
     ca_skeleton_destroy(sk);
     sk = NULL;
     ca_connect_options_init(&cop);
-    CHECK(cop.fit == 0 && cop.fit_iterations == 10);
+    CHECK(cop.fit == CA_FIT_AUTO && cop.fit_iterations == 10);
     cop.fit = 1;
     CHECK(ca_connect(ctx, set, sel, &cop, &sk) == CA_OK);
     CHECK(ca_skeleton_stats_get(sk, &ks) == CA_OK && ks.fitted == 1 && ks.fit_error_after <= ks.fit_error_before);

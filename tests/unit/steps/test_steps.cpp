@@ -8,6 +8,7 @@
 #include "support/shapes.h"
 #include "target_count_hd.h"
 #include "target_error.h"
+#include <algorithm>
 
 TEST_CASE("defaults: every field of the C option structs is the C++ option structs' default") {
     ca_candidate_options c;
@@ -86,7 +87,24 @@ TEST_CASE("steps: the automatic route, the fit on meshes only, and requests chec
     ca::ConnectResult k;
     REQUIRE(ca::connect_step(set, sel.selection, kr, ca::Monitor{}, k).ok());
     CHECK(k.report.method == ca::ConnectMethod::medial);  // a mesh has its winding number
-    CHECK(!k.fitted);
+    CHECK(kr.fit == ca::FitMode::automatic);
+    CHECK(!k.fitted);  // automatic: a plain cover stays unfitted, its balls cover every sample
+    CHECK(!sel.selection.sized_by_count);
+    {   // automatic: a selection sized by target_count is fitted thoroughly (two fits, one kept)
+        ca::SelectRequest sized = sr;
+        sized.select.target_count = uint32_t(std::max<size_t>(2, sel.selection.indices.size() - 1));
+        ca::SelectResult small;
+        REQUIRE(ca::select_step(set, sized, ca::Monitor{}, small).ok());
+        CHECK(small.selection.sized_by_count);
+        ca::ConnectResult f;
+        REQUIRE(ca::connect_step(set, small.selection, kr, ca::Monitor{}, f).ok());
+        CHECK(f.fitted);
+        CHECK(f.fit.hd_first > 0);  // the thorough fit measured both of its fits
+        ca::ConnectRequest off;
+        off.fit = ca::FitMode::off;
+        REQUIRE(ca::connect_step(set, small.selection, off, ca::Monitor{}, f).ok());
+        CHECK(!f.fitted);
+    }
     kr.fit = ca::FitMode::once;
     kr.fit_iterations = 2;
     REQUIRE(ca::connect_step(set, sel.selection, kr, ca::Monitor{}, k).ok());
