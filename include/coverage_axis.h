@@ -307,7 +307,10 @@ typedef struct ca_select_options {
                                     with its defaults, has a two-sided Hausdorff distance <= E % of the
                                     bbox diagonal, by a search over delta from the delta above (offset
                                     dilation only, not with target_count; docs/fidelity.md: what it
-                                    guarantees). The stats give the HD reached and the delta. When no
+                                    guarantees). On a mesh, unfitted probes that all miss E are
+                                    searched again fitted, and ca_connect's default fit (CA_FIT_AUTO)
+                                    then fits the result as judged. The stats give the HD reached and
+                                    the delta. When no
                                     probe reaches E: CA_ERROR_TARGET_NOT_REACHED, and *out is the
                                     selection of lowest HD found (destroy it as on success) */
     int32_t probe_fit;           /* ABI 2 (appended after target_error). How the target_error search and

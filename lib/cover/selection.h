@@ -56,6 +56,7 @@ struct Selection {
     uint32_t probes = 0;                // target size: number of set-cover solves
     uint32_t parts = 0;                 // divide and conquer: number of parts (0 = not used)
     bool sized_by_count = false;        // made by target_count (select_step): few balls, fitted by default
+    bool judged_fitted = false;         // a target_error search judged it by its fitted skeleton (fitted by default)
     double time_coverage_s = 0, time_total_s = 0;
 };
 

@@ -1,13 +1,19 @@
 // connect_step.cpp: step 3 as one request: the selection connected on the route the request
 // names (automatic: resolve_method's choice), then fitted when the request asks (automatic: a
-// selection sized by target_count) and the set has a triangle mesh to fit to.
+// selection sized by target_count, thoroughly, or one a target_error search judged fitted, once)
+// and the set has a triangle mesh to fit to.
 #include "steps.h"
 
 namespace ca {
 
-std::optional<FitOptions> fit_options(const ConnectRequest& request, const CandidateSet& set, bool sized) {
+std::optional<FitOptions> fit_options(const ConnectRequest& request, const CandidateSet& set, const Selection* selection) {
     const bool mesh = !set.surface.point_cloud && !set.surface.mesh.triangles.empty();
-    const FitMode mode = request.fit != FitMode::automatic ? request.fit : sized ? FitMode::thorough : FitMode::off;
+    FitMode mode = request.fit;
+    if (mode == FitMode::automatic)
+        mode = !selection                     ? FitMode::off
+               : selection->sized_by_count    ? FitMode::thorough
+               : selection->judged_fitted     ? FitMode::once
+                                              : FitMode::off;
     if (mode == FitMode::off || !mesh || request.fit_iterations <= 0) return std::nullopt;
     FitOptions fo;
     fo.iterations = uint32_t(request.fit_iterations);
@@ -29,7 +35,7 @@ Status connect_step(const CandidateSet& set, const Selection& selection, const C
     const auto t0 = Clock::now();
     Status st = connect_balls(set, selection, request.connect, monitor, out.skeleton, &out.report);
     if (!st.ok()) return st;
-    const std::optional<FitOptions> fo = fit_options(request, set, selection.sized_by_count);
+    const std::optional<FitOptions> fo = fit_options(request, set, &selection);
     if (fo) {
         st = fit_skeleton(set, selection, *fo, monitor, out.skeleton, out.fit);
         if (!st.ok()) return st;

@@ -70,7 +70,31 @@ Status select_step(const CandidateSet& set, const SelectRequest& request, const 
         TargetErrorResult ter;
         st = select_target_error(set, so, te, monitor, ter);
         if (!st.ok()) return st;
+        bool fitted = te.fit.has_value();
+        // Searching further: unfitted probes that all miss E are searched again fitted (a mesh),
+        // and the selection is marked so that connect's automatic fit fits it as judged. The
+        // better of the two searches is kept: a reached one, else the lower HD.
+        ConnectRequest fitted_probe = probe;
+        fitted_probe.fit = FitMode::once;
+        const std::optional<FitOptions> further = fit_options(fitted_probe, set);
+        if (!ter.reached && !fitted && further) {
+            TargetErrorOptions tf = te;
+            tf.fit = further;
+            TargetErrorResult second;
+            st = select_target_error(set, so, tf, monitor, second);
+            // the first search's result stands when the second cannot run to a probe (time limit)
+            if (!st.ok() && st.code != Code::time_limit) return st;
+            if (st.ok()) {
+                const uint32_t probes = ter.selection.probes + second.selection.probes;
+                if (second.reached || second.evaluation.hd_two_sided < ter.evaluation.hd_two_sided) {
+                    ter = std::move(second);
+                    fitted = true;
+                }
+                ter.selection.probes = probes;
+            }
+        }
         out.selection = std::move(ter.selection);
+        out.selection.judged_fitted = fitted;
         out.hd_reached = ter.evaluation.hd_two_sided;
         if (!ter.reached) {
             // the caller gets the best probe with a status of its own, never a silent success

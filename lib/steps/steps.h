@@ -46,8 +46,9 @@ Status candidates_from_arrays(const std::vector<Vec3>& samples, const std::vecto
 
 // How the balls are fitted after connecting (fit.h): not at all, one fit, or the thorough fit;
 // automatic: the thorough fit for a selection sized by target_count (few balls, which the fit
-// brings closest to the shape), else none; a plain selection stays unfitted, so its balls keep
-// covering every sample.
+// brings closest to the shape), one fit for a selection a target_error search judged fitted (so
+// the HD it reported is the one connected), else none: a plain selection stays unfitted, so its
+// balls keep covering every sample.
 enum class FitMode : int32_t { automatic = -1, off = 0, once = 1, thorough = 2 };
 
 struct ConnectRequest {
@@ -56,9 +57,11 @@ struct ConnectRequest {
     int32_t fit_iterations = int32_t(FitOptions{}.iterations);  // >= 0
 };
 
-// The fit options of a request on `set` for a selection (sized: made by target_count), or none
-// when it does not fit: the fit needs a triangle mesh, and fit on with 0 iterations is no fit.
-std::optional<FitOptions> fit_options(const ConnectRequest& request, const CandidateSet& set, bool sized = false);
+// The fit options of a request on `set` for a selection (FitMode::automatic reads how it was
+// made; none given: automatic is off), or none when it does not fit: the fit needs a triangle
+// mesh, and fit on with 0 iterations is no fit.
+std::optional<FitOptions> fit_options(const ConnectRequest& request, const CandidateSet& set,
+                                      const Selection* selection = nullptr);
 
 struct ConnectResult {
     Skeleton skeleton;            // internal units
@@ -90,8 +93,9 @@ struct SelectResult {
     double hd_reached = -1;       // the searches: the HD of the returned selection; -1 not measured
 };
 
-// Checks the request and runs its strategy: target_error's search when set (when no probe
-// reaches it: Code::target_not_reached with `out` holding the probe of lowest HD); target_count with the
+// Checks the request and runs its strategy: target_error's search when set (unfitted probes that
+// all miss are searched again fitted, on a mesh; when no probe reaches it:
+// Code::target_not_reached with `out` holding the probe of lowest HD); target_count with the
 // offset dilation on a set with a surface: the lowest HD within the count (target_count_hd.h); else
 // select_balls (which handles target_count by bisection alone). Each search probe is connected as
 // connect_step would with the default ConnectRequest (fit = probe_fit) and measured as

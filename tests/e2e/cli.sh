@@ -73,6 +73,14 @@ hd_te=$(json_field hd_reached "$tmp/te.json")
 check "target error: HD reached $hd_te <= 2.6" awk -v h="$hd_te" 'BEGIN{exit !(h >= 0 && h <= 2.6)}'
 check "target error: --evaluate measures the same HD" awk -v h="$hd_te" -v e="$(json_field hd_two_sided "$tmp/te.json")" 'BEGIN{d=h-e; if(d<0)d=-d; exit !(d < 1e-9)}'
 check "target error: several probes" test "$(json_field probes "$tmp/te.json")" -ge 2
+# searching further: a target the unfitted probes miss on the fox is reached by fitted ones, and
+# the skeleton written is fitted as judged (its evaluation is the HD reached)
+"$tool" "$data/fox.obj" -o "$tmp/tf.ma" --samples 800 --voronoi-samples 2000 --target-error 2.2 --evaluate --json > "$tmp/tf.json"
+check "target error 2.2 on the fox: reached (exit 0)" test $? -eq 0
+check "target error 2.2: target_reached true" grep -q '"target_reached":true' "$tmp/tf.json"
+check "target error 2.2: the written skeleton is fitted" grep -q '"fit":{' "$tmp/tf.json"
+check "target error 2.2: more than one search's probes" test "$(json_field probes "$tmp/tf.json")" -gt 14
+check "target error 2.2: --evaluate measures the HD reached" awk -v h="$(json_field hd_reached "$tmp/tf.json")" -v e="$(json_field hd_two_sided "$tmp/tf.json")" 'BEGIN{d=h-e; if(d<0)d=-d; exit !(h <= 2.2 && d < 1e-9)}'
 # a target no probe reaches: exit 4, the best skeleton written, the JSON says what was reached
 "$tool" "$data/fox.obj" -o "$tmp/tn.ma" --samples 800 --voronoi-samples 2000 --target-error 0.01 --json > "$tmp/tn.json"
 check "unreachable target error: exit 4" test $? -eq 4
