@@ -1,11 +1,14 @@
 // bench_target_error.cpp: the error-bounded selection (ca_select_options.target_error) on every
 // mesh of <data>/meshes/paper: at --target-error 2, the balls, the two-sided Hausdorff distance
-// it reached (% of the bbox diagonal), the delta, the probes and the CPU time, once with the
-// default connection and once with the fit (probe_fit = 1: each probe is fitted); beside them a
-// sweep of fixed deltas (each selected, then connected at the defaults and, separately, with the
-// fit, and evaluated) and the smallest ball count of each sweep that reaches HD <= 2 %. Summary,
-// without and with the fit: how many closed models reach 2 %, and on how many the search needs
-// fewer, as many or more balls than its sweep's best.
+// it reached (% of the bbox diagonal), the HD of the .ma written from the skeleton ca_connect gives
+// at its defaults (read back and measured as `coverage-axis evaluate` does), the probes and the CPU
+// time, once without probe_fit (the search fits its probes only when the unfitted ones all miss)
+// and once with it (probe_fit = 1: each probe is fitted); beside them a sweep of fixed deltas (each
+// selected, then connected unfitted and, separately, with the fit, and evaluated) and the smallest
+// ball count of each sweep that reaches HD <= 2 %. Summary, without and with probe_fit: how many
+// closed models reach 2 %, how many end with CA_ERROR_TARGET_NOT_REACHED, and on how many the
+// search needs fewer, as many or more balls than its sweep's best. Then the same searches at
+// --target-error 1.5, without the sweep.
 // usage: bench_target_error [DATA_ROOT] [--only NAME[,NAME...]]   (default ../shared/data; skipped when
 // missing; --only keeps the meshes whose file stem starts with one of the names)
 #include "bench_common.h"
@@ -14,19 +17,55 @@
 #include "support/mesh_convert.h"
 
 #include <cmath>
+#include <cstdlib>
+#include <unistd.h>
 #include <vector>
 
 namespace {
 
-constexpr double kTarget = 2.0;
+constexpr double kTarget = 2.0, kTighter = 1.5;
 const double kSweep[] = {0.005, 0.0075, 0.01, 0.0125, 0.015, 0.02, 0.025, 0.03, 0.04};
 
 struct Probe {
     ca_status status = CA_OK;
     size_t balls = 0;
     double hd = 0, delta = 0, cpu_s = 0;
+    double ma_hd = -1;  // searches: the HD of the written .ma, read back
     uint64_t probes = 0;
+    bool has_result() const { return status == CA_OK || status == CA_ERROR_TARGET_NOT_REACHED; }
 };
+
+// The .ma of `sel` connected at ca_connect's defaults, written, read back and measured with
+// ca_evaluate's defaults (what `coverage-axis evaluate MESH SKELETON.ma` does).
+double written_ma_hd(ca_context* ctx, const ca_surface_view& v, const ca_candidate_set* set, const ca_selection* sel) {
+    ca_skeleton* sk = nullptr;
+    if (ca_connect(ctx, set, sel, nullptr, &sk) != CA_OK) return -1;
+    caio::SkeletonData sd;
+    const size_t n = ca_skeleton_vertex_count(sk);
+    sd.centers.assign(ca_skeleton_centers(sk), ca_skeleton_centers(sk) + 3 * n);
+    sd.radii.assign(ca_skeleton_radii(sk), ca_skeleton_radii(sk) + n);
+    sd.edges.assign(ca_skeleton_edges(sk), ca_skeleton_edges(sk) + 2 * ca_skeleton_edge_count(sk));
+    sd.faces.assign(ca_skeleton_faces(sk), ca_skeleton_faces(sk) + 3 * ca_skeleton_face_count(sk));
+    ca_skeleton_destroy(sk);
+    const std::string path = "/tmp/bench_target_error." + std::to_string(getpid()) + ".ma";
+    std::string err;
+    caio::SkeletonData back;
+    const bool ok = caio::write_ma(path, sd, err) && caio::read_ma(path, back, err);
+    std::remove(path.c_str());
+    if (!ok) return -1;
+    ca_skeleton_view view;
+    ca_skeleton_view_init(&view);
+    view.centers = back.centers.data();
+    view.radii = back.radii.data();
+    view.vertex_count = back.radii.size();
+    view.edges = back.edges.data();
+    view.edge_count = back.edges.size() / 2;
+    view.faces = back.faces.data();
+    view.face_count = back.faces.size() / 3;
+    ca_evaluation ev{};
+    ev.struct_size = sizeof ev;
+    return ca_evaluate(ctx, &v, &view, nullptr, &ev) == CA_OK ? ev.hd_two_sided : -1;
+}
 
 // The two-sided HD of `sel` connected with `fit` (0/1) at the defaults otherwise.
 ca_status connected_hd(ca_context* ctx, const ca_surface_view& v, const ca_candidate_set* set, const ca_selection* sel,
@@ -45,13 +84,15 @@ ca_status connected_hd(ca_context* ctx, const ca_surface_view& v, const ca_candi
     return st;
 }
 
-// The search with `so` (target_error set): balls, the HD it measured, delta, probes, CPU time.
-Probe search(ca_context* ctx, const ca_candidate_set* set, const ca_select_options& so) {
+// The search with `so` (target_error set): balls, the HD it measured, delta, probes, CPU time
+// (the search's), and the HD of the .ma written from its result (also when not reached).
+Probe search(ca_context* ctx, const ca_surface_view& v, const ca_candidate_set* set, const ca_select_options& so) {
     Probe p;
     const double c0 = bench::cpu_seconds();
     ca_selection* sel = nullptr;
     p.status = ca_select(ctx, set, &so, &sel);
-    if (p.status == CA_OK) {
+    p.cpu_s = bench::cpu_seconds() - c0;
+    if (p.has_result()) {
         ca_select_stats ss;
         ss.struct_size = sizeof ss;
         ca_selection_stats(sel, &ss);
@@ -59,8 +100,8 @@ Probe search(ca_context* ctx, const ca_candidate_set* set, const ca_select_optio
         p.delta = ss.delta_absolute / ca_candidate_set_reference_length(set);
         p.probes = ss.probes;
         p.hd = ss.hd_reached;
+        p.ma_hd = written_ma_hd(ctx, v, set, sel);
     }
-    p.cpu_s = bench::cpu_seconds() - c0;
     ca_selection_destroy(sel);
     return p;
 }
@@ -88,13 +129,16 @@ void sweep_delta(ca_context* ctx, const ca_surface_view& v, const ca_candidate_s
 }
 
 struct Tally {
-    int closed_models = 0, closed_reached = 0, fewer = 0, same = 0, more = 0, sweep_none = 0;
+    double target = kTarget;
+    int closed_models = 0, closed_reached = 0, not_reached = 0, failed = 0, fewer = 0, same = 0, more = 0, sweep_none = 0;
     double search_s = 0, sweep_s = 0;
     void add(bool closed, const Probe& te, bool found, const Probe& best, double sweep_cpu) {
-        const bool reached = te.status == CA_OK && te.hd <= kTarget;
+        const bool reached = te.status == CA_OK && te.hd <= target;
         if (closed) {
             ++closed_models;
             closed_reached += reached;
+            not_reached += te.status == CA_ERROR_TARGET_NOT_REACHED;
+            failed += !te.has_result();
         }
         search_s += te.cpu_s;
         sweep_s += sweep_cpu;
@@ -103,19 +147,27 @@ struct Tally {
         else if (reached && te.balls == best.balls) ++same;
         else ++more;
     }
-    void print(const char* what) const {
-        std::printf("%s: closed models reaching HD <= %.0f %%: %d of %d. Against the sweep's best (models where a swept "
-                    "delta reaches it): fewer balls on %d, as many on %d, more (or target not reached) on %d; no swept "
-                    "delta reaches it on %d. CPU time: search %.0f s, sweep %.0f s in all.\n",
-                    what, kTarget, closed_reached, closed_models, fewer, same, more, sweep_none, search_s, sweep_s);
+    void print(const char* what, bool sweep) const {
+        std::printf("%s: closed models reaching HD <= %.3g %%: %d of %d; ended with CA_ERROR_TARGET_NOT_REACHED: %d; "
+                    "other failures: %d.",
+                    what, target, closed_reached, closed_models, not_reached, failed);
+        if (sweep)
+            std::printf(" Against the sweep's best (models where a swept delta reaches it): fewer balls on %d, as many "
+                        "on %d, more (or target not reached) on %d; no swept delta reaches it on %d. CPU time: search "
+                        "%.0f s, sweep %.0f s in all.",
+                        fewer, same, more, sweep_none, search_s, sweep_s);
+        else std::printf(" CPU time: search %.0f s in all.", search_s);
+        std::printf("\n");
     }
 };
 
-void print_search(const Probe& te) {
-    if (te.status != CA_OK) std::printf(" failed (%d) | | | %.1f |", te.status, te.cpu_s);
+void print_search(const Probe& te, double target) {
+    if (!te.has_result()) std::printf(" failed (%d) | | | | %.1f |", te.status, te.cpu_s);
     else
-        std::printf(" %zu | %.3f%s | %llu | %.1f |", te.balls, te.hd, te.hd <= kTarget ? "" : " (not reached)",
-                    (unsigned long long)te.probes, te.cpu_s);
+        std::printf(" %zu | %.3f%s | %.3f | %llu | %.1f |", te.balls, te.hd,
+                    te.status == CA_OK ? "" : " (CA_ERROR_TARGET_NOT_REACHED)", te.ma_hd, (unsigned long long)te.probes,
+                    te.cpu_s);
+    (void)target;
 }
 
 void print_best(bool found, const Probe& best) {
@@ -136,16 +188,21 @@ int main(int argc, char** argv) {
     std::printf("\n## Error-bounded selection: --target-error %.0f against a delta sweep, without and with the fit\n\n",
                 kTarget);
     std::printf("Defaults otherwise (|S| 1500, Voronoi candidates, exact cover, fast effort, medial route, evaluation "
-                "30 000 / 100 000 samples). \"fit\": probe_fit = 1 (each probe connected with fit = 1, 10 "
-                "iterations), and the sweep connected with fit = 1. Sweep deltas:");
+                "30 000 / 100 000 samples). \"target\": probe_fit = 0 (unfitted probes; on a mesh, searched again "
+                "fitted when all miss). \"fit\": probe_fit = 1 (each probe connected with fit = 1, 10 "
+                "iterations), and the sweep connected with fit = 1. \".ma HD\": the result connected at ca_connect's "
+                "defaults, written as .ma, read back and evaluated. Sweep deltas:");
     for (double d : kSweep) std::printf(" %g", d);
     std::printf("; \"sweep best\" is the fewest balls among them with HD <= %.0f %%. CPU s: user + system of the "
                 "process, all threads.\n\n",
                 kTarget);
-    std::printf("| model | closed | target: balls | HD %% | probes | CPU s | fit target: balls | HD %% | probes | CPU s "
-                "| sweep best: balls | HD %% | delta | fit sweep best: balls | HD %% | delta |\n");
-    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
-    Tally plain, fitted;
+    std::printf("| model | closed | target: balls | HD %% | .ma HD %% | probes | CPU s | fit target: balls | HD %% | .ma HD %% "
+                "| probes | CPU s | sweep best: balls | HD %% | delta | fit sweep best: balls | HD %% | delta |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    Tally plain, fitted, plain15, fitted15;
+    plain15.target = fitted15.target = kTighter;
+    struct Tight { std::string name; bool closed; Probe te, te_fit; };
+    std::vector<Tight> tight;
     for (const std::string& path : models) {
         if (!bench::selected(only, bench::stem(path))) continue;
         caio::MeshData mesh;
@@ -168,9 +225,15 @@ int main(int argc, char** argv) {
         ca_select_options so;
         ca_select_options_init(&so);
         so.target_error = kTarget;
-        const Probe te = search(ctx, set, so);
+        const Probe te = search(ctx, v, set, so);
         so.probe_fit = 1;
-        const Probe te_fit = search(ctx, set, so);
+        const Probe te_fit = search(ctx, v, set, so);
+        so.target_error = kTighter;
+        so.probe_fit = 0;
+        Tight t{bench::stem(path), closed, search(ctx, v, set, so), {}};
+        so.probe_fit = 1;
+        t.te_fit = search(ctx, v, set, so);
+        tight.push_back(t);
         so.target_error = 0;
         so.probe_fit = 0;
         Probe best[2];
@@ -192,16 +255,30 @@ int main(int argc, char** argv) {
         ca_context_destroy(ctx);
         plain.add(closed, te, found[0], best[0], sweep_s[0]);
         fitted.add(closed, te_fit, found[1], best[1], sweep_s[1]);
+        plain15.add(closed, t.te, false, Probe{}, 0);
+        fitted15.add(closed, t.te_fit, false, Probe{}, 0);
         std::printf("| %s | %s |", bench::stem(path).c_str(), closed ? "yes" : "no");
-        print_search(te);
-        print_search(te_fit);
+        print_search(te, kTarget);
+        print_search(te_fit, kTarget);
         print_best(found[0], best[0]);
         print_best(found[1], best[1]);
         std::printf("\n");
         std::fflush(stdout);
     }
     std::printf("\n");
-    plain.print("Without the fit");
-    fitted.print("With the fit");
+    plain.print("Without probe_fit", true);
+    fitted.print("With probe_fit", true);
+    std::printf("\n## --target-error %.3g, without and with probe_fit (no sweep)\n\n", kTighter);
+    std::printf("| model | closed | target: balls | HD %% | .ma HD %% | probes | CPU s | fit target: balls | HD %% | .ma HD %% "
+                "| probes | CPU s |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    for (const Tight& t : tight) {
+        std::printf("| %s | %s |", t.name.c_str(), t.closed ? "yes" : "no");
+        print_search(t.te, kTighter);
+        print_search(t.te_fit, kTighter);
+        std::printf("\n");
+    }
+    std::printf("\n");
+    plain15.print("Without probe_fit", false);
+    fitted15.print("With probe_fit", false);
     return 0;
 }
