@@ -534,8 +534,9 @@ typedef struct ca_rig_options {
                                     spacing); default 64 */
     double joint_spacing;        /* joints about this far apart along a branch, fraction of the longest
                                     side of the balls' bounding box, > 0; default 0.1 */
-    double min_branch;           /* a branch is kept when it reaches past the ball where it joins by
-                                    more than this many times that ball's radius, >= 0; default 0.5 */
+    double min_branch;           /* a branch is kept when its tip's ball reaches past every ball of the
+                                    tree by more than this many times that ball's radius and it is
+                                    longer than this many tip radii, >= 0; default 1.5 */
     double smoothing;            /* the ball weights' blend, as ca_correspondence_options; default 0.5 */
 } ca_rig_options;
 

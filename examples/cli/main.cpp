@@ -154,7 +154,7 @@ int single_run(int argc, char** argv) {
     app.add_option("--max-joints", o.rig.max_joints, "at most this many joints")->capture_default_str()->group(rig);
     app.add_option("--joint-spacing", o.rig.joint_spacing, "joints this far apart along branches (fraction of the longest side)")
         ->capture_default_str()->group(rig);
-    app.add_option("--min-branch", o.rig.min_branch, "keep branches reaching past their junction ball by this x its radius")
+    app.add_option("--min-branch", o.rig.min_branch, "keep branches whose tip reaches past every tree ball by this x its radius")
         ->capture_default_str()->group(rig);
     app.add_option("--smoothing", o.rig.smoothing, "the weights' blend width, in median ball radii")->capture_default_str()->group(rig);
     cli::add_run_options(app, o);

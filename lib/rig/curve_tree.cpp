@@ -2,9 +2,10 @@
 // shortest paths from the root, where a step costs its length over the balls' mean radius, run
 // along the fattest balls, so across a sheet they take its middle. The ends of those paths (the
 // balls no neighbour is farther than) are tips; the farthest first, each tip's path is kept up to
-// the tree built so far when it reaches past the ball it joins at by more than min_branch times
-// that ball's radius (a limb does, a sheet's rim does not), while the joints stay within
-// max_joints. The kept paths, cut at junctions, are the branches.
+// the tree built so far when the tip's ball reaches past every ball of that tree by more than
+// min_branch times the ball's radius and the new path is longer than min_branch times the tip's
+// radius (a limb does both; a sheet's rim, a bump or a fat ball in a crevice does not), while the
+// joints stay within max_joints. The kept paths, cut at junctions, are the branches.
 #include "rig.h"
 
 #include <algorithm>
@@ -142,17 +143,26 @@ Status curve_tree(const Skeleton& s, const RigOptions& opt, CurveTree& out) {
     out.in_tree[root] = 1;
     std::vector<uint32_t> children(n, 0);
     size_t keys = 1;   // joints the kept branches need: the root, the junctions and the tips
+    std::vector<uint32_t> tree_balls{root};
     for (uint32_t tip : tips) {
         uint32_t j = tip;
         while (!out.in_tree[j]) j = uint32_t(up[j]);
-        const double reach = length[tip] - length[j] + s.balls[tip].radius - s.balls[j].radius;
-        if (!(length[tip] > length[j]) || !(reach > opt.min_branch * s.balls[j].radius)) continue;
+        // how far the tip's ball reaches past each tree ball, in that ball's radii: the least
+        const Ball& t = s.balls[tip];
+        double reach = std::numeric_limits<double>::infinity();
+        for (uint32_t b : tree_balls) {
+            const Ball& a = s.balls[b];
+            if (a.radius > 0) reach = std::min(reach, ((t.center - a.center).norm() + t.radius - a.radius) / a.radius);
+        }
+        // and the branch is longer than that many of the tip's radii (a fat ball in a crevice is not)
+        if (!(reach > opt.min_branch) || !(length[tip] - length[j] > opt.min_branch * t.radius)) continue;
         // a new tip, and a new junction where the path joins a ball with one child already
         const size_t more = 1 + (j != root && children[j] == 1 ? 1 : 0) - (j != root && children[j] == 0 ? 1 : 0);
         if (keys + more > opt.max_joints) continue;
         keys += more;
         for (uint32_t v = tip; !out.in_tree[v]; v = uint32_t(up[v])) {
             out.in_tree[v] = 1;
+            tree_balls.push_back(v);
             out.parent[v] = up[v];
             ++children[uint32_t(up[v])];
         }

@@ -16,9 +16,10 @@ struct RigOptions {
     // Joints along a branch about this far apart, a fraction of the longest side of the balls'
     // bounding box (> 0); junctions and tips are always joints.
     double joint_spacing = 0.1;
-    // A branch is kept when it reaches past the ball it joins the tree at by more than this many
-    // times that ball's radius (>= 0): sheets' rims and bumps do not, limbs do.
-    double min_branch = 0.5;
+    // A branch is kept when its tip's ball reaches past every ball of the tree by more than this
+    // many times that ball's radius, and the branch is longer than this many tip radii (>= 0):
+    // sheets' rims, bumps and crevices do not, limbs do.
+    double min_branch = 1.5;
     CorrespondOptions correspond;  // the ball weights the joint weights are made from
 };
 
