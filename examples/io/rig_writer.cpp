@@ -1,7 +1,7 @@
 // rig_writer.cpp: the skinned mesh as glTF 2.0 (see rig_writer.h). The binary buffer holds, in
 // order, the mesh's positions, its triangle indices, JOINTS_0 (unsigned bytes up to 256 joints,
 // else shorts), WEIGHTS_0 (floats, renormalised after rounding) and the inverse bind matrices.
-// A weight-0 slot names a joint the vertex does not use, as joint indices may not repeat.
+// A weight-0 slot names joint 0, as the validator expects of unused slots.
 #include "rig_writer.h"
 
 #include "gltf_builder.h"
@@ -41,29 +41,16 @@ json build(const MeshData& mesh, const RigData& rig, std::string& bin) {
     json primitive = {{"mode", mesh.triangles.empty() ? kModePoints : kModeTriangles}};
     if (!mesh.triangles.empty()) primitive["indices"] = b.indices(mesh.triangles, gltf::kUnsignedInt);
 
-    // joints and weights: float weights summing to 1 as floats; unused slots get distinct unused joints
-    std::vector<uint16_t> joints(4 * nv);
-    std::vector<float> weights(4 * nv);
+    // joints and weights: float weights summing to 1 as floats; an unused slot is joint 0, weight 0
+    std::vector<uint16_t> joints(4 * nv, 0);
+    std::vector<float> weights(4 * nv, 0.0f);
     for (size_t i = 0; i < nv; ++i) {
-        uint32_t used[4];
-        int n = 0;
-        for (int k = 0; k < 4; ++k)
-            if (rig.vertex_weights[4 * i + k] > 0) used[n++] = rig.vertex_joints[4 * i + k];
-        uint32_t spare = 0;
-        auto is_used = [&](uint32_t j) { return std::find(used, used + n, j) != used + n; };
         float rest = 0;
         for (int k = 0; k < 4; ++k) {
             const double w = rig.vertex_weights[4 * i + k];
-            if (w > 0) {
-                joints[4 * i + k] = uint16_t(rig.vertex_joints[4 * i + k]);
-                weights[4 * i + k] = float(w);
-            } else {
-                while (is_used(spare) || std::find(joints.begin() + 4 * i, joints.begin() + 4 * i + k, spare) !=
-                                             joints.begin() + 4 * i + k)
-                    ++spare;
-                joints[4 * i + k] = uint16_t(spare < nj ? spare : 0);
-                weights[4 * i + k] = 0;
-            }
+            if (w <= 0) continue;
+            joints[4 * i + k] = uint16_t(rig.vertex_joints[4 * i + k]);
+            weights[4 * i + k] = float(w);
             if (k > 0) rest += weights[4 * i + k];
         }
         weights[4 * i] = 1.0f - rest;   // slot 0 holds the largest weight
