@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <map>
+#include <string>
 
 namespace {
 
@@ -247,4 +248,85 @@ TEST_CASE("rig: the C options' defaults are the C++ ones") {
     CHECK(c.smoothing == ca::CorrespondOptions{}.smoothing);
     CHECK(ca_rig_options_defaults(&r, 3) == CA_ERROR_STRUCT_SIZE);
     CHECK(ca_correspondence_options_defaults(nullptr, sizeof c) == CA_ERROR_NULL_POINTER);
+}
+
+TEST_CASE("rig: the C ABI checks its arguments and gives the core's arrays") {
+    ca::Skeleton s;
+    s.balls = {{ca::Vec3(0, 0, 0), 1.0}, {ca::Vec3(3, 0, 0), 0.8}, {ca::Vec3(6, 0, 0), 0.6}};
+    s.edges = {{0, 1}, {1, 2}};
+    const std::vector<double> xyz = {0, 1, 0, 1.5, 0.9, 0, 3, 0.8, 0, 4.5, 0.7, 0, 6, 0.6, 0, 6.6, 0, 0};
+    const std::vector<double> centers = {0, 0, 0, 3, 0, 0, 6, 0, 0}, radii = {1.0, 0.8, 0.6};
+    const std::vector<uint32_t> edges = {0, 1, 1, 2};
+    ca_context* ctx = nullptr;
+    REQUIRE(ca_context_create(nullptr, &ctx) == CA_OK);
+    ca_surface_view surface;
+    ca_surface_view_init(&surface);
+    surface.positions = xyz.data();
+    surface.vertex_count = xyz.size() / 3;
+    ca_skeleton_view view;
+    ca_skeleton_view_init(&view);
+    view.centers = centers.data();
+    view.radii = radii.data();
+    view.vertex_count = 3;
+    view.edges = edges.data();
+    view.edge_count = 2;
+
+    ca_correspondence* c = reinterpret_cast<ca_correspondence*>(1);
+    CHECK(ca_correspond(ctx, nullptr, &view, nullptr, &c) == CA_ERROR_NULL_POINTER);
+    CHECK(c == nullptr);
+    ca_correspondence_options co;
+    ca_correspondence_options_init(&co);
+    co.struct_size = 4;
+    CHECK(ca_correspond(ctx, &surface, &view, &co, &c) == CA_ERROR_STRUCT_SIZE);
+    CHECK(std::string(ca_context_last_error(ctx)).find("ca_correspondence_options") != std::string::npos);
+    co.struct_size = sizeof co;
+    co.smoothing = -1;
+    CHECK(ca_correspond(ctx, &surface, &view, &co, &c) == CA_ERROR_INVALID_ARGUMENT);
+    ca_skeleton_view bad = view;
+    bad.edge_count = 1;
+    const uint32_t far_edge[2] = {0, 3};
+    bad.edges = far_edge;
+    CHECK(ca_correspond(ctx, &surface, &bad, nullptr, &c) == CA_ERROR_INVALID_INPUT);
+    REQUIRE(ca_correspond(ctx, &surface, &view, nullptr, &c) == CA_OK);
+    ca::SurfaceInput in;
+    for (size_t i = 0; i < xyz.size(); i += 3) in.mesh.vertices.emplace_back(xyz[i], xyz[i + 1], xyz[i + 2]);
+    ca::Correspondence core;
+    REQUIRE(ca::correspondence_step(in, s, {}, ca::Monitor{}, core).ok());
+    REQUIRE(ca_correspondence_vertex_count(c) == 6);
+    for (size_t i = 0; i < 6; ++i) {
+        for (int k = 0; k < 4; ++k) {
+            CHECK(ca_correspondence_balls(c)[4 * i + k] == core.balls[i][k]);
+            CHECK(ca_correspondence_weights(c)[4 * i + k] == core.weights[i][k]);
+        }
+        CHECK(ca_correspondence_nearest_kinds(c)[i] == int32_t(core.nearest_kind[i]));
+        CHECK(ca_correspondence_nearest_indices(c)[i] == core.nearest_index[i]);
+    }
+    ca_correspondence_destroy(c);
+    ca_correspondence_destroy(nullptr);
+
+    ca_rig* r = nullptr;
+    ca_rig_options ro;
+    ca_rig_options_init(&ro);
+    ro.root = 3;
+    CHECK(ca_rig_build(ctx, &surface, &view, &ro, &r) == CA_ERROR_INVALID_ARGUMENT);
+    CHECK(r == nullptr);
+    ro.root = -1;
+    REQUIRE(ca_rig_build(ctx, &surface, &view, &ro, &r) == CA_OK);
+    ca::Rig rig;
+    REQUIRE(ca::rig_step(in, s, ca::RigOptions{}, ca::Monitor{}, rig).ok());
+    REQUIRE(ca_rig_joint_count(r) == rig.joints.size());
+    CHECK(ca_rig_joint_parents(r)[0] == -1);
+    CHECK(ca_rig_joint_balls(r)[0] == 0);   // the largest ball
+    CHECK(ca_rig_branch_count(r) == rig.branch_count);
+    REQUIRE(ca_rig_vertex_count(r) == 6);
+    for (size_t i = 0; i < 6; ++i)
+        for (int k = 0; k < 4; ++k) {
+            CHECK(ca_rig_vertex_joints(r)[4 * i + k] == rig.vertex_joints[i][k]);
+            CHECK(ca_rig_vertex_weights(r)[4 * i + k] == rig.vertex_weights[i][k]);
+        }
+    ca_rig_destroy(r);
+    ca_rig_destroy(nullptr);
+    CHECK(ca_rig_joint_count(nullptr) == 0);
+    CHECK(ca_correspondence_balls(nullptr) == nullptr);
+    ca_context_destroy(ctx);
 }
