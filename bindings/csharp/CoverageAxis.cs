@@ -159,11 +159,27 @@ namespace CoverageAxis
             public double time_s;
         }
 
+        [StructLayout(LayoutKind.Sequential)]
+        public struct CorrespondenceOptions
+        {
+            public uint struct_size;
+            public double smoothing;
+        }
+
+        [StructLayout(LayoutKind.Sequential)]
+        public struct RigOptions
+        {
+            public uint struct_size;
+            public long root;
+            public uint max_joints;
+            public double joint_spacing, min_branch, smoothing;
+        }
+
         /// <summary>Every struct declared here, in header order (for the layout check).</summary>
         public static readonly Type[] Structs = {
             typeof(ContextDesc), typeof(SurfaceView), typeof(CandidateOptions), typeof(SelectOptions),
             typeof(SelectStats), typeof(ConnectOptions), typeof(SkeletonStats), typeof(SkeletonView),
-            typeof(EvaluateOptions), typeof(Evaluation),
+            typeof(EvaluateOptions), typeof(Evaluation), typeof(CorrespondenceOptions), typeof(RigOptions),
         };
 
         [DllImport(Lib)] public static extern uint ca_version();
