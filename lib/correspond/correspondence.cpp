@@ -41,22 +41,23 @@ Status check_points(const std::vector<Vec3>& points) {
 
 Status check_skeleton(const Skeleton& s) {
     const size_t nv = s.balls.size();
-    if (nv == 0) return fail(Code::degenerate_input, "the skeleton has no balls");
-    if (nv > UINT32_MAX - 1) return fail(Code::invalid_argument, "the skeleton has more than 2^32 - 2 balls");
+    if (nv == 0) return fail(Code::degenerate_input, "the skeleton has no vertices");
+    if (nv > UINT32_MAX - 1) return fail(Code::invalid_argument, "the skeleton has more than 2^32 - 2 vertices");
     for (size_t i = 0; i < nv; ++i) {
         const Ball& b = s.balls[i];
         if (!b.center.allFinite() || !(std::isfinite(b.radius) && b.radius >= 0))
             return fail(Code::invalid_input, at_ball(i) + " has a NaN, infinite or negative value");
     }
-    for (size_t e = 0; e < s.edges.size(); ++e)
-        for (uint32_t v : s.edges[e])
-            if (v >= nv)
-                return fail(Code::invalid_input, "skeleton edge " + std::to_string(e) + " references ball " +
-                                                     std::to_string(v) + " of " + std::to_string(nv));
+    for (size_t e = 0; e < s.edges.size(); ++e) {
+        const auto& edge = s.edges[e];
+        if (edge[0] >= nv || edge[1] >= nv)
+            return fail(Code::invalid_input, "skeleton edge " + std::to_string(e) + " references vertex " +
+                                                 std::to_string(std::max(edge[0], edge[1])) + " of " + std::to_string(nv));
+    }
     for (size_t f = 0; f < s.faces.size(); ++f)
         for (uint32_t v : s.faces[f])
             if (v >= nv)
-                return fail(Code::invalid_input, "skeleton face " + std::to_string(f) + " references ball " +
+                return fail(Code::invalid_input, "skeleton face " + std::to_string(f) + " references vertex " +
                                                      std::to_string(v) + " of " + std::to_string(nv));
     return Status::success();
 }

@@ -42,7 +42,8 @@ using SparseWeights = std::vector<std::pair<uint32_t, double>>;
 Status check_options(const CorrespondOptions& opt);
 Status check_points(const std::vector<Vec3>& points);
 
-// The skeleton's values finite, radii >= 0, edge and face indices in range, at least one ball.
+// The skeleton's values finite, radii >= 0, edge and face indices in range, at least one ball
+// (every step that takes the caller's skeleton checks it so).
 Status check_skeleton(const Skeleton& s);
 
 // The blend at any point: every primitive near p weighs exp(-(d - d_min) / sigma) (less a cut so
