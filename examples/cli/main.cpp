@@ -104,6 +104,9 @@ void print_summary(const cli::Json& j, const cli::RunOptions& o) {
     if (o.evaluate)
         std::printf("hausdorff   surface->skeleton %.3f %%, skeleton->surface %.3f %%, two-sided %.3f %% of the bbox diagonal\n",
                     j["hd_surface_to_recon"].get<double>(), j["hd_recon_to_surface"].get<double>(), j["hd_two_sided"].get<double>());
+    if (j.contains("rig"))
+        std::printf("rig         %llu joints, %llu branches\n", j["rig"]["joints"].get<unsigned long long>(),
+                    j["rig"]["branches"].get<unsigned long long>());
     const cli::Json& t = j["time_s"];
     std::printf("time        read %.3f s, candidates %.3f s, select %.3f s, connect %.3f s, total %.3f s\n", t["read"].get<double>(),
                 t["candidates"].get<double>(), t["select"].get<double>(), t["connect"].get<double>(), t["total"].get<double>());
