@@ -60,6 +60,10 @@ ca::Status read_points(const double* base, size_t count, size_t stride, const ch
 // strides checked). Normals are read for point clouds when want_normals.
 ca::Status read_surface(const ca_surface_view* surface, bool want_normals, ca::SurfaceInput& out);
 
+// A skeleton view's arrays in the caller's units (pointers and counts checked; values are checked
+// by the core's steps).
+ca::Status read_skeleton(const ca_skeleton_view* in, ca::Skeleton& out);
+
 // Points in the caller's units, x y z per point, in memory from the result's allocator.
 void fill(Array<double>& a, const Allocator& al, const std::vector<ca::Vec3>& pts, const ca::Normalization& n);
 

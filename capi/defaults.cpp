@@ -43,4 +43,6 @@ ca_status ca_select_options_defaults(ca_select_options* o, uint32_t size) { retu
 ca_status ca_connect_options_defaults(ca_connect_options* o, uint32_t size) { return capi::fill_defaults(o, size); }
 ca_status ca_skeleton_view_defaults(ca_skeleton_view* v, uint32_t size) { return capi::fill_defaults(v, size); }
 ca_status ca_evaluate_options_defaults(ca_evaluate_options* o, uint32_t size) { return capi::fill_defaults(o, size); }
+ca_status ca_correspondence_options_defaults(ca_correspondence_options* o, uint32_t size) { return capi::fill_defaults(o, size); }
+ca_status ca_rig_options_defaults(ca_rig_options* o, uint32_t size) { return capi::fill_defaults(o, size); }
 }

@@ -149,6 +149,9 @@ CA_PUBLISHED(ca_skeleton_stats, {1, sizeof(abi1::ca_skeleton_stats)}, {2, sizeof
 CA_PUBLISHED(ca_skeleton_view, {1, sizeof(ca_skeleton_view)})
 CA_PUBLISHED(ca_evaluate_options, {1, sizeof(ca_evaluate_options)})
 CA_PUBLISHED(ca_evaluation, {1, sizeof(ca_evaluation)})
+// correspondence and rig
+CA_PUBLISHED(ca_correspondence_options, {3, sizeof(ca_correspondence_options)})
+CA_PUBLISHED(ca_rig_options, {3, sizeof(ca_rig_options)})
 #undef CA_PUBLISHED
 
 static_assert(offsetof(ca_context_desc, threads) == offsetof(abi1::ca_context_desc, threads) &&
@@ -224,6 +227,8 @@ template <> ca_select_options defaults<ca_select_options>();
 template <> ca_connect_options defaults<ca_connect_options>();
 template <> ca_skeleton_view defaults<ca_skeleton_view>();
 template <> ca_evaluate_options defaults<ca_evaluate_options>();
+template <> ca_correspondence_options defaults<ca_correspondence_options>();  // ca_correspondence.cpp
+template <> ca_rig_options defaults<ca_rig_options>();                        // ca_rig.cpp
 
 // A struct of all zero bytes but its struct_size (sizeof T): the start of every default and result.
 template <class T>

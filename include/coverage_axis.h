@@ -501,6 +501,83 @@ typedef struct ca_evaluation {
 CA_API ca_status ca_evaluate(ca_context* ctx, const ca_surface_view* surface, const ca_skeleton_view* skeleton,
                              const ca_evaluate_options* options, ca_evaluation* result);
 
+/* ---- correspondence and rig ---------------------------------------------------------------- */
+/* docs/rig.md. For every vertex of a surface (ca_surface_view: the positions are used; triangles
+   and normals are checked as ca_evaluate checks them) and a skeleton in the same units
+   (ca_skeleton_view: from ca_skeleton_get_view or the caller's arrays):
+   . the correspondence: the nearest skeleton primitive (the envelope of a ball, of an edge's medial
+     cone or of a face's medial slab) and up to CA_INFLUENCES balls with weights that sum to 1 and
+     change continuously over the surface (a blend of the primitives near the vertex);
+   . the rig: a curve skeleton (a tree of joints: sheets crossed along their middle, junctions and
+     the branches that reach out of the shape kept, joints spaced along long branches), and per
+     vertex CA_INFLUENCES joints with weights (sum 1), the ball weights mapped to the joints. */
+#define CA_INFLUENCES 4
+#define CA_NEAREST_BALL 0 /* ca_correspondence_nearest_kinds: the index is a ball's */
+#define CA_NEAREST_EDGE 1 /* an edge's (of ca_skeleton_view.edges) */
+#define CA_NEAREST_FACE 2 /* a face's (also for an edge of a face not among the view's edges) */
+
+typedef struct ca_correspondence_options {
+    uint32_t struct_size;        /* sizeof(ca_correspondence_options) */
+    double smoothing;            /* the blend's width, in median ball radii: a primitive farther than
+                                    the nearest by that much weighs e^-1 of it; > 0; default 0.5 */
+} ca_correspondence_options;
+
+CA_API ca_status ca_correspondence_options_defaults(ca_correspondence_options* options, uint32_t struct_size); /* the defaults named above */
+static inline void ca_correspondence_options_init(ca_correspondence_options* options) {
+    if (options) { options->struct_size = (uint32_t)sizeof *options; (void)ca_correspondence_options_defaults(options, (uint32_t)sizeof *options); }
+}
+
+typedef struct ca_correspondence ca_correspondence;
+
+CA_API ca_status ca_correspond(ca_context* ctx, const ca_surface_view* surface, const ca_skeleton_view* skeleton,
+                               const ca_correspondence_options* options, ca_correspondence** out);
+CA_API void ca_correspondence_destroy(ca_correspondence* correspondence);
+
+CA_API size_t ca_correspondence_vertex_count(const ca_correspondence* correspondence);
+/* CA_INFLUENCES per vertex, by decreasing weight; an unused slot has weight 0 and repeats the
+   first ball. */
+CA_API const uint32_t* ca_correspondence_balls(const ca_correspondence* correspondence);
+CA_API const double* ca_correspondence_weights(const ca_correspondence* correspondence);
+CA_API const int32_t* ca_correspondence_nearest_kinds(const ca_correspondence* correspondence);    /* CA_NEAREST_* */
+CA_API const uint32_t* ca_correspondence_nearest_indices(const ca_correspondence* correspondence); /* ball, edge or face */
+
+typedef struct ca_rig_options {
+    uint32_t struct_size;        /* sizeof(ca_rig_options) */
+    int64_t root;                /* the root joint's ball; default -1: the largest ball */
+    uint32_t max_joints;         /* at most this many joints, >= 1 (fewer branches kept, then wider
+                                    spacing); default 64 */
+    double joint_spacing;        /* joints about this far apart along a branch, fraction of the longest
+                                    side of the balls' bounding box, > 0; default 0.1 */
+    double min_branch;           /* a branch is kept when its tip's ball reaches past every ball of the
+                                    tree by more than this many times that ball's radius and it is
+                                    longer than this many tip radii, >= 0; default 1.5 */
+    double smoothing;            /* the ball weights' blend, as ca_correspondence_options; default 0.5 */
+} ca_rig_options;
+
+CA_API ca_status ca_rig_options_defaults(ca_rig_options* options, uint32_t struct_size); /* the defaults named above */
+static inline void ca_rig_options_init(ca_rig_options* options) {
+    if (options) { options->struct_size = (uint32_t)sizeof *options; (void)ca_rig_options_defaults(options, (uint32_t)sizeof *options); }
+}
+
+typedef struct ca_rig ca_rig;
+
+CA_API ca_status ca_rig_build(ca_context* ctx, const ca_surface_view* surface, const ca_skeleton_view* skeleton,
+                              const ca_rig_options* options, ca_rig** out);
+CA_API void ca_rig_destroy(ca_rig* rig);
+
+/* Joints in an order where a parent comes before its children; joint 0 is the root. */
+CA_API size_t ca_rig_joint_count(const ca_rig* rig);
+CA_API const double* ca_rig_joint_positions(const ca_rig* rig);  /* x y z per joint (a ball's centre) */
+CA_API const int32_t* ca_rig_joint_parents(const ca_rig* rig);   /* -1 for the root */
+CA_API const uint32_t* ca_rig_joint_balls(const ca_rig* rig);    /* the ball each joint sits on */
+CA_API const uint32_t* ca_rig_joint_branches(const ca_rig* rig); /* the branch each joint is on (root: 0) */
+CA_API size_t ca_rig_branch_count(const ca_rig* rig);            /* branches between root, junctions, tips */
+CA_API size_t ca_rig_vertex_count(const ca_rig* rig);
+/* CA_INFLUENCES per vertex, by decreasing weight (sum 1; unused: weight 0, the first joint). */
+CA_API const uint32_t* ca_rig_vertex_joints(const ca_rig* rig);
+CA_API const double* ca_rig_vertex_weights(const ca_rig* rig);
+CA_API const uint32_t* ca_rig_vertex_branches(const ca_rig* rig); /* the branch of the vertex's heaviest ball */
+
 #ifdef __cplusplus
 }
 #endif

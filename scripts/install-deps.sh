@@ -9,6 +9,11 @@ set -euo pipefail
 # compiler, runtime, LINQ).
 packages=(build-essential cmake pkg-config libeigen3-dev libnanoflann-dev coinor-libcbc-dev libqhull-dev doctest-dev
           python3 python3-numpy python3-setuptools python3-pip cargo mono-mcs mono-runtime libmono-system-core4.0-cil)
+# the rig's test (tests/e2e/rig.sh) runs node and installs npm's gltf-validator under the build
+# folder: Debian's nodejs and npm, unless node and npm are there already (another distribution's
+# nodejs brings its own npm, which Debian's npm package would conflict with)
+command -v node > /dev/null || packages+=(nodejs)
+command -v npm > /dev/null || packages+=(npm)
 # the command-line tool (examples/): libcli11-dev (arguments), nlohmann-json3-dev (JSON, glTF),
 # libstb-dev (PNG), libtinygltf-dev (glTF reader) and libassimp-dev (FBX, DAE, 3DS, ...)
 packages+=(libcli11-dev nlohmann-json3-dev libstb-dev libtinygltf-dev libassimp-dev)

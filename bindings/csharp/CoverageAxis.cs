@@ -160,11 +160,27 @@ namespace CoverageAxis
             public double time_s;
         }
 
+        [StructLayout(LayoutKind.Sequential)]
+        public struct CorrespondenceOptions
+        {
+            public uint struct_size;
+            public double smoothing;
+        }
+
+        [StructLayout(LayoutKind.Sequential)]
+        public struct RigOptions
+        {
+            public uint struct_size;
+            public long root;
+            public uint max_joints;
+            public double joint_spacing, min_branch, smoothing;
+        }
+
         /// <summary>Every struct declared here, in header order (for the layout check).</summary>
         public static readonly Type[] Structs = {
             typeof(ContextDesc), typeof(SurfaceView), typeof(CandidateOptions), typeof(SelectOptions),
             typeof(SelectStats), typeof(ConnectOptions), typeof(SkeletonStats), typeof(SkeletonView),
-            typeof(EvaluateOptions), typeof(Evaluation),
+            typeof(EvaluateOptions), typeof(Evaluation), typeof(CorrespondenceOptions), typeof(RigOptions),
         };
 
         [DllImport(Lib)] public static extern uint ca_version();
@@ -224,6 +240,28 @@ namespace CoverageAxis
         [DllImport(Lib)] public static extern int ca_evaluate(ContextHandle ctx, ref SurfaceView surface,
             ref SkeletonView skeleton, ref EvaluateOptions options, ref Evaluation result);
 
+        [DllImport(Lib)] public static extern int ca_correspondence_options_defaults(ref CorrespondenceOptions o, uint size);
+        [DllImport(Lib)] public static extern int ca_correspond(ContextHandle ctx, ref SurfaceView surface,
+            ref SkeletonView skeleton, ref CorrespondenceOptions options, out CorrespondenceHandle result);
+        [DllImport(Lib)] public static extern void ca_correspondence_destroy(IntPtr c);
+        [DllImport(Lib)] public static extern UIntPtr ca_correspondence_vertex_count(CorrespondenceHandle c);
+        [DllImport(Lib)] public static extern IntPtr ca_correspondence_balls(CorrespondenceHandle c);
+        [DllImport(Lib)] public static extern IntPtr ca_correspondence_weights(CorrespondenceHandle c);
+        [DllImport(Lib)] public static extern IntPtr ca_correspondence_nearest_kinds(CorrespondenceHandle c);
+        [DllImport(Lib)] public static extern IntPtr ca_correspondence_nearest_indices(CorrespondenceHandle c);
+        [DllImport(Lib)] public static extern int ca_rig_options_defaults(ref RigOptions o, uint size);
+        [DllImport(Lib)] public static extern int ca_rig_build(ContextHandle ctx, ref SurfaceView surface,
+            ref SkeletonView skeleton, ref RigOptions options, out RigHandle result);
+        [DllImport(Lib)] public static extern void ca_rig_destroy(IntPtr r);
+        [DllImport(Lib)] public static extern UIntPtr ca_rig_joint_count(RigHandle r);
+        [DllImport(Lib)] public static extern IntPtr ca_rig_joint_positions(RigHandle r);
+        [DllImport(Lib)] public static extern IntPtr ca_rig_joint_parents(RigHandle r);
+        [DllImport(Lib)] public static extern UIntPtr ca_rig_branch_count(RigHandle r);
+        [DllImport(Lib)] public static extern UIntPtr ca_rig_vertex_count(RigHandle r);
+        [DllImport(Lib)] public static extern IntPtr ca_rig_vertex_joints(RigHandle r);
+        [DllImport(Lib)] public static extern IntPtr ca_rig_vertex_weights(RigHandle r);
+        [DllImport(Lib)] public static extern IntPtr ca_rig_vertex_branches(RigHandle r);
+
         public static uint SizeOf<T>() { return (uint)Marshal.SizeOf(typeof(T)); }
 
         /// <summary>Throws unless the library knows this binding's layout of a struct.</summary>
@@ -260,6 +298,16 @@ namespace CoverageAxis
     public sealed class SkeletonHandle : OwnedHandle
     {
         protected override bool ReleaseHandle() { Native.ca_skeleton_destroy(handle); return true; }
+    }
+
+    public sealed class CorrespondenceHandle : OwnedHandle
+    {
+        protected override bool ReleaseHandle() { Native.ca_correspondence_destroy(handle); return true; }
+    }
+
+    public sealed class RigHandle : OwnedHandle
+    {
+        protected override bool ReleaseHandle() { Native.ca_rig_destroy(handle); return true; }
     }
 
     /// <summary>Pins managed arrays for the duration of one call.</summary>
@@ -422,6 +470,22 @@ namespace CoverageAxis
         public ulong Seed { get { return Raw.seed; } set { Raw.seed = value; } }
     }
 
+    /// <summary>Options of Context.Rig (ca_rig_options; docs/rig.md): the library's defaults.</summary>
+    public sealed class RigOptions
+    {
+        internal Native.RigOptions Raw;
+        public RigOptions()
+        {
+            Native.CheckDefaults(Native.ca_rig_options_defaults(ref Raw, Native.SizeOf<Native.RigOptions>()), "ca_rig_options");
+        }
+        /// <summary>The root joint's ball; -1: the largest ball.</summary>
+        public long Root { get { return Raw.root; } set { Raw.root = value; } }
+        public uint MaxJoints { get { return Raw.max_joints; } set { Raw.max_joints = value; } }
+        public double JointSpacing { get { return Raw.joint_spacing; } set { Raw.joint_spacing = value; } }
+        public double MinBranch { get { return Raw.min_branch; } set { Raw.min_branch = value; } }
+        public double Smoothing { get { return Raw.smoothing; } set { Raw.smoothing = value; } }
+    }
+
     public sealed class ProgressEventArgs : EventArgs
     {
         public string Stage { get; internal set; }
@@ -562,6 +626,44 @@ namespace CoverageAxis
             GC.KeepAlive(skeleton);
             return done;
         }
+
+        Native.SkeletonView ViewOf(Skeleton skeleton)
+        {
+            var view = new Native.SkeletonView();
+            Native.CheckDefaults(Native.ca_skeleton_view_defaults(ref view, Native.SizeOf<Native.SkeletonView>()), "ca_skeleton_view");
+            Native.CheckDefaults(Native.ca_skeleton_get_view(skeleton.Handle, ref view), "ca_skeleton_view");
+            return view;
+        }
+
+        /// <summary>Each surface vertex's nearest skeleton primitive and up to 4 ball weights that sum to 1
+        /// (docs/rig.md); smoothing null keeps the library's default.</summary>
+        public Correspondence Correspond(Surface surface, Skeleton skeleton, double? smoothing = null,
+                                         CancellationToken token = default(CancellationToken))
+        {
+            var o = new Native.CorrespondenceOptions();
+            Native.CheckDefaults(Native.ca_correspondence_options_defaults(ref o, Native.SizeOf<Native.CorrespondenceOptions>()),
+                                 "ca_correspondence_options");
+            if (smoothing.HasValue) o.smoothing = smoothing.Value;
+            var view = ViewOf(skeleton);
+            CorrespondenceHandle h = null;
+            var done = Run(token, () => surface.With(v => Native.ca_correspond(handle, ref v, ref view, ref o, out h)),
+                           () => new Correspondence(h));
+            GC.KeepAlive(skeleton);
+            return done;
+        }
+
+        /// <summary>The skeleton's curve skeleton as a tree of joints and each surface vertex's joint weights.</summary>
+        public Rig Rig(Surface surface, Skeleton skeleton, RigOptions options = null,
+                       CancellationToken token = default(CancellationToken))
+        {
+            var o = (options ?? new RigOptions()).Raw;
+            var view = ViewOf(skeleton);
+            RigHandle h = null;
+            var done = Run(token, () => surface.With(v => Native.ca_rig_build(handle, ref v, ref view, ref o, out h)),
+                           () => new Rig(h));
+            GC.KeepAlive(skeleton);
+            return done;
+        }
     }
 
     /// <summary>Copies getter arrays out of the C objects.</summary>
@@ -656,5 +758,46 @@ namespace CoverageAxis
                 return s;
             }
         }
+    }
+
+    /// <summary>Per surface vertex: 4 balls and weights (decreasing, sum 1; an unused slot has weight 0
+    /// and repeats the first ball) and the nearest primitive (0 ball, 1 edge, 2 face; an index into the
+    /// skeleton's balls, edges or faces).</summary>
+    public sealed class Correspondence : IDisposable
+    {
+        internal readonly CorrespondenceHandle Handle;
+        internal Correspondence(CorrespondenceHandle h) { Handle = h; }
+        public void Dispose() { Handle.Dispose(); }
+        public int Count { get { return (int)Native.ca_correspondence_vertex_count(Handle); } }
+        public uint[] Balls { get { return Copy.UInts(Native.ca_correspondence_balls(Handle), 4 * (ulong)Count); } }
+        public double[] Weights { get { return Copy.Doubles(Native.ca_correspondence_weights(Handle), 4 * (ulong)Count); } }
+        public uint[] NearestKinds { get { return Copy.UInts(Native.ca_correspondence_nearest_kinds(Handle), (ulong)Count); } }
+        public uint[] NearestIndices { get { return Copy.UInts(Native.ca_correspondence_nearest_indices(Handle), (ulong)Count); } }
+    }
+
+    /// <summary>A tree of joints (parents before children; joint 0 the root, parent -1) and per
+    /// surface vertex 4 joints and weights (decreasing, sum 1).</summary>
+    public sealed class Rig : IDisposable
+    {
+        internal readonly RigHandle Handle;
+        internal Rig(RigHandle h) { Handle = h; }
+        public void Dispose() { Handle.Dispose(); }
+        public int Count { get { return (int)Native.ca_rig_joint_count(Handle); } }
+        public int BranchCount { get { return (int)Native.ca_rig_branch_count(Handle); } }
+        public int VertexCount { get { return (int)Native.ca_rig_vertex_count(Handle); } }
+        /// <summary>x y z per joint.</summary>
+        public double[] Positions { get { return Copy.Doubles(Native.ca_rig_joint_positions(Handle), 3 * (ulong)Count); } }
+        public int[] Parents
+        {
+            get
+            {
+                var a = new int[Count];
+                if (a.Length > 0) Marshal.Copy(Native.ca_rig_joint_parents(Handle), a, 0, a.Length);
+                return a;
+            }
+        }
+        public uint[] Joints { get { return Copy.UInts(Native.ca_rig_vertex_joints(Handle), 4 * (ulong)VertexCount); } }
+        public double[] Weights { get { return Copy.Doubles(Native.ca_rig_vertex_weights(Handle), 4 * (ulong)VertexCount); } }
+        public uint[] Branches { get { return Copy.UInts(Native.ca_rig_vertex_branches(Handle), (ulong)VertexCount); } }
     }
 }

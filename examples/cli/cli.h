@@ -30,6 +30,7 @@ struct RunOptions {
     ca_select_options select;
     ca_connect_options connect;
     ca_evaluate_options evaluation;
+    ca_rig_options rig;                      // --rig and --correspondence (its smoothing too)
     std::string format;                      // input format name; "" = by extension
     std::string candidate_kind = "voronoi";  // voronoi | random | a ball file
     std::string normals = "given";           // a point cloud's normals: given | unoriented | estimate
@@ -48,6 +49,7 @@ struct RunOptions {
 // Where one run writes (empty = not written).
 struct Outputs {
     std::string ma, obj, ply, gltf, preview, export_samples, export_candidates;
+    std::string correspondence, rig;   // --correspondence FILE.json, --rig OUT.glb
 };
 
 // A failed run: a library status (CA_ERROR_*, exit 1) or a tool error (FILE_ERROR exit 3,
@@ -111,6 +113,11 @@ bool is_mesh_file(const std::string& path);
 // Parses a command line: -1 to go on; the exit code after --help or --version (printed); or 2
 // for a bad command line, with a one-line `error` (unknown option, a second input, a bad value).
 int parse_command_line(CLI::App& app, int argc, char** argv, std::string& error);
+
+// --correspondence and --rig (rig_outputs.cpp): nothing when neither is asked for; adds "rig"
+// (joints, branches) to the report.
+bool write_rig_outputs(ca_context* ctx, const caio::MeshData& mesh, const ca_skeleton* sk, const RunOptions& o,
+                       const Outputs& out, Json& report, Failure& failure);
 
 int evaluate_command(int argc, char** argv);
 int batch_command(int argc, char** argv);

@@ -104,6 +104,9 @@ void print_summary(const cli::Json& j, const cli::RunOptions& o) {
     if (o.evaluate)
         std::printf("hausdorff   surface->skeleton %.3f %%, skeleton->surface %.3f %%, two-sided %.3f %% of the bbox diagonal\n",
                     j["hd_surface_to_recon"].get<double>(), j["hd_recon_to_surface"].get<double>(), j["hd_two_sided"].get<double>());
+    if (j.contains("rig"))
+        std::printf("rig         %llu joints, %llu branches\n", j["rig"]["joints"].get<unsigned long long>(),
+                    j["rig"]["branches"].get<unsigned long long>());
     const cli::Json& t = j["time_s"];
     std::printf("time        read %.3f s, candidates %.3f s, select %.3f s, connect %.3f s, total %.3f s\n", t["read"].get<double>(),
                 t["candidates"].get<double>(), t["select"].get<double>(), t["connect"].get<double>(), t["total"].get<double>());
@@ -145,6 +148,18 @@ int single_run(int argc, char** argv) {
     app.add_option("--preview", out.preview, "also draw the mesh and the skeleton: OUT.png or OUT.svg")->group(files);
     app.add_option("--export-samples", out.export_samples, "write the covered surface samples (v x y z)")->group(files);
     app.add_option("--export-candidates", out.export_candidates, "write the candidate balls (v x y z r)")->group(files);
+    app.add_option("--correspondence", out.correspondence,
+                   "also write each input vertex's skeleton balls and weights, nearest primitive and branch: FILE.json")
+        ->group(files);
+    app.add_option("--rig", out.rig, "also write the input skinned to a rig of the skeleton: OUT.glb")->group(files);
+    const std::string rig = "Rig (--rig, --correspondence; docs/rig.md)";
+    app.add_option("--rig-root", o.rig.root, "the root joint's ball (-1: the largest)")->capture_default_str()->group(rig);
+    app.add_option("--max-joints", o.rig.max_joints, "at most this many joints")->capture_default_str()->group(rig);
+    app.add_option("--joint-spacing", o.rig.joint_spacing, "joints this far apart along branches (fraction of the longest side)")
+        ->capture_default_str()->group(rig);
+    app.add_option("--min-branch", o.rig.min_branch, "keep branches whose tip reaches past every tree ball by this x its radius")
+        ->capture_default_str()->group(rig);
+    app.add_option("--smoothing", o.rig.smoothing, "the weights' blend width, in median ball radii")->capture_default_str()->group(rig);
     cli::add_run_options(app, o);
     app.add_flag("--json", json, "print one JSON object on stdout (on failure too: {\"error\": ...})");
     app.add_flag("--quiet", quiet, "no summary, no progress bar");

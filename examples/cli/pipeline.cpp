@@ -255,7 +255,8 @@ bool write_outputs(const caio::MeshData& mesh, const caio::SkeletonData& sd, con
 Json outputs_json(const Outputs& out) {
     Json j = {{"ma", out.ma}};
     for (const auto& [key, path] : {std::pair<const char*, const std::string&>{"obj", out.obj}, {"ply", out.ply},
-                                    {"gltf", out.gltf}, {"preview", out.preview}})
+                                    {"gltf", out.gltf}, {"preview", out.preview},
+                                    {"correspondence", out.correspondence}, {"rig", out.rig}})
         if (!path.empty()) j[key] = path;
     return j;
 }
@@ -305,6 +306,11 @@ Outcome run_pipeline(const std::string& input, const RunOptions& o, const Output
     t0 = Clock::now();
     const caio::SkeletonData sd = skeleton_data(owned.sk);
     if (!write_outputs(mesh, sd, o, out, r.failure)) return r;
+    Json rig_report = Json::object();
+    if (!(out.correspondence.empty() && out.rig.empty()) &&
+        (!context_for(owned, desc, o.time_limit_s, t_start, "rig", r.failure) ||
+         !write_rig_outputs(owned.ctx, mesh, owned.sk, o, out, rig_report, r.failure)))
+        return r;
     const double t_write = since(t0);
 
     // --target-count: the tool measures the HD it reached (--target-error: the library did)
@@ -364,6 +370,7 @@ Outcome run_pipeline(const std::string& input, const RunOptions& o, const Output
                       {"cols_after", ss.cols_after}, {"forced", ss.forced}};
     j["output"] = out.ma;
     j["outputs"] = outputs_json(out);
+    for (auto& [key, value] : rig_report.items()) j[key] = value;
     if (evaluate_run) add_evaluation(j, ev);
     // --target-count: the HD of what was written (the library's search measured the default
     // connection, fitted with --fit, which --connect changes)

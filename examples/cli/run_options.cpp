@@ -84,6 +84,7 @@ RunOptions::RunOptions() {
     ca_select_options_init(&select);
     ca_connect_options_init(&connect);
     ca_evaluate_options_init(&evaluation);
+    ca_rig_options_init(&rig);
     ca_context_desc desc;
     ca_context_desc_init(&desc);
     threads = desc.threads;

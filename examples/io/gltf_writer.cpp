@@ -3,6 +3,7 @@
 // indices), the skeleton's vertex positions and radii, its edge and its face indices.
 #include "gltf_writer.h"
 
+#include "gltf_builder.h"
 #include "output_file.h"
 
 #include <nlohmann/json.hpp>
@@ -19,53 +20,12 @@ namespace caio {
 namespace {
 
 using nlohmann::json;
+using gltf::Builder;
+using gltf::kFloat;
+using gltf::kUnsignedShort;
+using gltf::kUnsignedInt;
 
-constexpr int kFloat = 5126, kUnsignedShort = 5123, kUnsignedInt = 5125;
-constexpr int kArrayBuffer = 34962, kElementArrayBuffer = 34963;
 constexpr int kModeLines = 1, kModeTriangles = 4;
-
-// The binary buffer and the bufferViews/accessors that describe it.
-struct Builder {
-    std::string bin;
-    json views = json::array(), accessors = json::array();
-
-    // Appends raw bytes as a new bufferView (4-byte aligned) and returns its index.
-    int view(const void* data, size_t bytes, int target) {
-        while (bin.size() % 4) bin.push_back('\0');
-        json v = {{"buffer", 0}, {"byteOffset", bin.size()}, {"byteLength", bytes}};
-        if (target) v["target"] = target;
-        bin.append(static_cast<const char*>(data), bytes);
-        views.push_back(v);
-        return int(views.size()) - 1;
-    }
-    // float32 VEC3 / SCALAR data with min/max per component.
-    int floats(const std::vector<float>& data, int components) {
-        const size_t count = data.size() / size_t(components);
-        json lo = json::array(), hi = json::array();
-        for (int c = 0; c < components; ++c) {
-            float a = std::numeric_limits<float>::infinity(), b = -a;
-            for (size_t i = 0; i < count; ++i) {
-                a = std::min(a, data[i * components + c]);
-                b = std::max(b, data[i * components + c]);
-            }
-            lo.push_back(a);
-            hi.push_back(b);
-        }
-        const int v = view(data.data(), data.size() * sizeof(float), kArrayBuffer);
-        accessors.push_back({{"bufferView", v}, {"componentType", kFloat}, {"count", count},
-                             {"type", components == 3 ? "VEC3" : "SCALAR"}, {"min", lo}, {"max", hi}});
-        return int(accessors.size()) - 1;
-    }
-    template <class Index>
-    int indices(const std::vector<Index>& data, int component_type) {
-        const int v = view(data.data(), data.size() * sizeof(Index), kElementArrayBuffer);
-        const Index hi = data.empty() ? 0 : *std::max_element(data.begin(), data.end());
-        const Index lo = data.empty() ? 0 : *std::min_element(data.begin(), data.end());
-        accessors.push_back({{"bufferView", v}, {"componentType", component_type}, {"count", data.size()},
-                             {"type", "SCALAR"}, {"min", {lo}}, {"max", {hi}}});
-        return int(accessors.size()) - 1;
-    }
-};
 
 // A UV sphere of radius 1 around the origin (its normals equal its positions).
 void unit_sphere(std::vector<float>& positions, std::vector<uint16_t>& triangles) {
@@ -109,12 +69,6 @@ std::string base64(const std::string& bytes) {
         out += i + 2 < bytes.size() ? table[v & 63] : '=';
     }
     return out;
-}
-
-void append_u32(std::string& s, uint32_t v) {
-    char b[4];
-    std::memcpy(b, &v, 4);  // glTF is little-endian, as is every platform this tool builds on
-    s.append(b, 4);
 }
 
 // The glTF document (without its buffer's uri) and the binary buffer.
@@ -210,18 +164,7 @@ bool write_gltf(const std::string& path, const SkeletonData& s, std::string& err
             doc["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64(bin);
             return write_bytes(path, doc.dump(1) + "\n", error);
         }
-        std::string text = doc.dump();
-        while (text.size() % 4) text.push_back(' ');
-        std::string out;
-        append_u32(out, 0x46546C67u);  // "glTF"
-        append_u32(out, 2);
-        append_u32(out, uint32_t(12 + 8 + text.size() + 8 + bin.size()));
-        append_u32(out, uint32_t(text.size()));
-        append_u32(out, 0x4E4F534Au);  // "JSON"
-        out += text;
-        append_u32(out, uint32_t(bin.size()));
-        append_u32(out, 0x004E4942u);  // "BIN\0"
-        out += bin;
+        const std::string out = gltf::glb(doc, bin);
         return write_bytes(path, out, error);
     } catch (const std::exception& e) {
         error = path + ": " + e.what();

@@ -20,27 +20,11 @@ Status evaluate_step(SurfaceInput surface, const Skeleton& skeleton, const Evalu
     if (!st.ok()) return st;
     if (monitor.stopped()) return monitor.stop_status("surface");
 
-    const size_t nv = skeleton.balls.size();
-    if (nv == 0) return fail(Code::degenerate_input, "the skeleton has no vertices");
+    st = check_skeleton(skeleton);
+    if (!st.ok()) return st;
     const Normalization& n = surf.norm;
     Skeleton sk;
-    for (size_t i = 0; i < nv; ++i) {
-        const Ball& b = skeleton.balls[i];
-        if (!b.center.allFinite() || !(std::isfinite(b.radius) && b.radius >= 0))
-            return fail(Code::invalid_input, "skeleton ball " + std::to_string(i) + " has a NaN, infinite or negative value");
-        sk.balls.push_back({n.to_internal(b.center), b.radius / n.scale});
-    }
-    for (size_t e = 0; e < skeleton.edges.size(); ++e) {
-        const auto& edge = skeleton.edges[e];
-        if (edge[0] >= nv || edge[1] >= nv)
-            return fail(Code::invalid_input, "skeleton edge " + std::to_string(e) + " references vertex " +
-                                                 std::to_string(std::max(edge[0], edge[1])) + " of " + std::to_string(nv));
-    }
-    for (size_t f = 0; f < skeleton.faces.size(); ++f)
-        for (uint32_t v : skeleton.faces[f])
-            if (v >= nv)
-                return fail(Code::invalid_input, "skeleton face " + std::to_string(f) + " references vertex " +
-                                                     std::to_string(v) + " of " + std::to_string(nv));
+    for (const Ball& b : skeleton.balls) sk.balls.push_back({n.to_internal(b.center), b.radius / n.scale});
     sk.edges = skeleton.edges;
     sk.faces = skeleton.faces;
     st = evaluate(surf.mesh, sk, opt, monitor, out);

@@ -7,8 +7,10 @@
 #pragma once
 #include "candidates.h"
 #include "connect.h"
+#include "correspondence.h"
 #include "evaluate.h"
 #include "fit.h"
+#include "rig.h"
 #include "selection.h"
 #include "skeleton.h"
 
@@ -108,5 +110,17 @@ Status select_step(const CandidateSet& set, const SelectRequest& request, const 
 // are not used) and a skeleton in the same units; out.diagonal in those units.
 Status evaluate_step(SurfaceInput surface, const Skeleton& skeleton, const EvaluateOptions& opt,
                      const Monitor& monitor, EvaluateResult& out);
+
+// ---- correspondence and rig (correspondence_step.cpp, rig_step.cpp) ----
+
+// The correspondence of the surface's vertices (its units; triangles and normals are not used)
+// to a skeleton in the same units (correspondence.h).
+Status correspondence_step(const SurfaceInput& surface, const Skeleton& skeleton, const CorrespondOptions& opt,
+                           const Monitor& monitor, Correspondence& out);
+
+// The rig of a skeleton (rig.h: curve skeleton, joints, the joint weights of the surface's vertices),
+// the skeleton and the surface in the same units.
+Status rig_step(const SurfaceInput& surface, const Skeleton& skeleton, const RigOptions& opt, const Monitor& monitor,
+                Rig& out);
 
 }  // namespace ca

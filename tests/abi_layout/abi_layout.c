@@ -152,5 +152,17 @@ int main(void) {
     FIELD(ca_evaluation, surface_samples_used);
     FIELD(ca_evaluation, envelope_samples_used);
     FIELD(ca_evaluation, time_s);
+
+    STRUCT(ca_correspondence_options);
+    FIELD(ca_correspondence_options, struct_size);
+    FIELD(ca_correspondence_options, smoothing);
+
+    STRUCT(ca_rig_options);
+    FIELD(ca_rig_options, struct_size);
+    FIELD(ca_rig_options, root);
+    FIELD(ca_rig_options, max_joints);
+    FIELD(ca_rig_options, joint_spacing);
+    FIELD(ca_rig_options, min_branch);
+    FIELD(ca_rig_options, smoothing);
     return 0;
 }

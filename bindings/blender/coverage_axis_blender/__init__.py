@@ -3,7 +3,8 @@ Object > Skeletonize (Coverage Axis): skeletonizes the selected mesh objects (mo
 transform applied) on a worker thread, with Blender's progress bar and Esc to cancel, and adds each
 skeleton as a mesh object (vertices, edges, faces, a `radius` attribute; optionally a sphere empty
 per ball). Object > Coverage Axis Reconstruction Error measures a skeleton object against its
-source mesh. The library is the one bundled in the add-on, else the preference's path, else the
+source mesh. Object > Create Armature (Coverage Axis) rigs the active mesh: an armature of the
+skeleton's curve skeleton and a vertex group per bone (docs/rig.md). The library is the one bundled in the add-on, else the preference's path, else the
 binding's own search (CA_LIBRARY, `make install`'s path, the system's)."""
 import bpy
 from bpy.props import BoolProperty, EnumProperty, FloatProperty, IntProperty, StringProperty
@@ -172,6 +173,41 @@ class OBJECT_OT_coverage_axis_error(bpy.types.Operator):
         return {"FINISHED"}
 
 
+class OBJECT_OT_coverage_axis_armature(bpy.types.Operator):
+    """Rig the active mesh: an armature along its Coverage Axis skeleton, a vertex group per bone"""
+    bl_idname = "object.coverage_axis_armature"
+    bl_label = "Create Armature (Coverage Axis)"
+    bl_options = {"REGISTER", "UNDO"}
+
+    max_joints: IntProperty(name="Joints", min=1, default=64, description="At most this many bones")
+    joint_spacing: FloatProperty(name="Spacing", min=0.001, max=1.0, default=0.1, precision=3,
+                                 description="Bones along a branch about this long (fraction of the longest side)")
+
+    @classmethod
+    def poll(cls, context):
+        o = context.active_object
+        return o is not None and o.type == "MESH" and context.mode == "OBJECT"
+
+    def execute(self, context):
+        ca = _binding(self)
+        if ca is None:
+            return {"CANCELLED"}
+        source = context.active_object
+        vertices, triangles = job.base_mesh_arrays(source)
+        prefs = _preferences()
+        try:
+            with ca.Context(threads=prefs.threads if prefs else 0) as ctx:
+                skeleton = ca.skeletonize(vertices, triangles, context=ctx)
+                rig = ca.rig(vertices, triangles, skeleton, context=ctx, max_joints=self.max_joints,
+                             joint_spacing=self.joint_spacing)
+        except ca.CoverageAxisError as err:
+            self.report({"ERROR"}, "Coverage Axis: %s" % err)
+            return {"CANCELLED"}
+        obj = job.add_armature(bpy, context, source, rig)
+        self.report({"INFO"}, "%s: %d bones, %d branches" % (obj.name, len(rig), rig.branch_count))
+        return {"FINISHED"}
+
+
 class VIEW3D_PT_coverage_axis(bpy.types.Panel):
     bl_label = "Coverage Axis"
     bl_space_type = "VIEW_3D"
@@ -181,6 +217,7 @@ class VIEW3D_PT_coverage_axis(bpy.types.Panel):
     def draw(self, context):
         self.layout.operator(OBJECT_OT_coverage_axis_skeletonize.bl_idname)
         self.layout.operator(OBJECT_OT_coverage_axis_error.bl_idname)
+        self.layout.operator(OBJECT_OT_coverage_axis_armature.bl_idname)
         o = context.active_object
         if o is not None and "coverage_axis_hd_two_sided" in o:
             self.layout.label(text="Hausdorff: %.3f %%" % o["coverage_axis_hd_two_sided"])
@@ -189,10 +226,11 @@ class VIEW3D_PT_coverage_axis(bpy.types.Panel):
 def _menu(self, context):
     self.layout.operator(OBJECT_OT_coverage_axis_skeletonize.bl_idname)
     self.layout.operator(OBJECT_OT_coverage_axis_error.bl_idname)
+    self.layout.operator(OBJECT_OT_coverage_axis_armature.bl_idname)
 
 
 CLASSES = (CoverageAxisPreferences, OBJECT_OT_coverage_axis_skeletonize, OBJECT_OT_coverage_axis_error,
-           VIEW3D_PT_coverage_axis)
+           OBJECT_OT_coverage_axis_armature, VIEW3D_PT_coverage_axis)
 
 
 def register():

@@ -1,6 +1,7 @@
 """job.py: the add-on's work outside Blender's UI: the evaluated mesh of an object in world space as
-numpy arrays, a background job that skeletonizes meshes on a worker thread (progress, cancel), and
-the skeleton's Blender objects (a mesh with a `radius` attribute, optionally sphere empties)."""
+numpy arrays, a background job that skeletonizes meshes on a worker thread (progress, cancel), the
+skeleton's Blender objects (a mesh with a `radius` attribute, optionally sphere empties), and a rig
+as an armature with a vertex group per joint (docs/rig.md)."""
 import threading
 
 import numpy as np
@@ -126,3 +127,64 @@ def skeleton_of_object(ca, obj):
     centers = np.array(obj["coverage_axis_centers"], dtype=np.float64).reshape(-1, 3)
     return ca.Skeleton(centers, np.array(obj["coverage_axis_radii"], dtype=np.float64),
                        edges.reshape(-1, 2), np.array(faces, dtype=np.uint32).reshape(-1, 3))
+
+
+def base_mesh_arrays(obj):
+    """The object's own mesh (no modifiers: its vertices are the ones vertex groups weight) in world
+    coordinates: vertices (n, 3) float64 and triangles (m, 3) uint32."""
+    mesh = obj.data
+    mesh.calc_loop_triangles()
+    co = np.empty(3 * len(mesh.vertices), dtype=np.float32)
+    mesh.vertices.foreach_get("co", co)
+    tri = np.empty(3 * len(mesh.loop_triangles), dtype=np.int32)
+    mesh.loop_triangles.foreach_get("vertices", tri)
+    m = np.array(obj.matrix_world, dtype=np.float64)
+    vertices = co.reshape(-1, 3).astype(np.float64) @ m[:3, :3].T + m[:3, 3]
+    return np.ascontiguousarray(vertices), tri.reshape(-1, 3).astype(np.uint32)
+
+
+def add_armature(bpy, context, source, rig):
+    """An armature object (world space) with a bone per joint of `rig` (a coverage_axis.Rig of the
+    source's own vertices in world space): named joint_<j>, its head at the joint (the point it
+    turns about, as in the glTF skin), its tail towards its children (a tip: on along its parent's
+    direction), parented as the joints are; on the source, a vertex group per joint with the rig's
+    weights and an Armature modifier."""
+    positions, parents = np.asarray(rig.positions), np.asarray(rig.parents).reshape(-1)
+    n = len(parents)
+    extent = float(np.ptp(positions, axis=0).max()) if n > 1 else 1.0
+    children = [[] for _ in range(n)]
+    for j in range(1, n):
+        children[parents[j]].append(j)
+    armature = bpy.data.armatures.new(source.name + "_rig")
+    obj = bpy.data.objects.new(source.name + "_rig", armature)
+    context.collection.objects.link(obj)
+    previous = context.view_layer.objects.active
+    context.view_layer.objects.active = obj
+    bpy.ops.object.mode_set(mode="EDIT")
+    bones = []
+    for j in range(n):
+        bone = armature.edit_bones.new("joint_%d" % j)
+        head = positions[j]
+        if children[j]:
+            tail = positions[children[j]].mean(axis=0)
+        elif parents[j] >= 0:
+            tail = head + 0.5 * (head - positions[parents[j]])
+        else:
+            tail = head
+        if np.linalg.norm(tail - head) < 1e-3 * extent:
+            tail = head + np.array([0.0, 0.0, 0.05 * extent])
+        bone.head, bone.tail = head.tolist(), tail.tolist()
+        if parents[j] >= 0:
+            bone.parent = bones[parents[j]]
+        bones.append(bone)
+    bpy.ops.object.mode_set(mode="OBJECT")
+    joints, weights = np.asarray(rig.joints), np.asarray(rig.weights)
+    groups = [source.vertex_groups.new(name="joint_%d" % j) for j in range(n)]
+    for i in range(len(joints)):
+        for j, w in zip(joints[i].tolist(), weights[i].tolist()):
+            if w > 0:
+                groups[j].add([i], w, "REPLACE")
+    modifier = source.modifiers.new("Coverage Axis rig", "ARMATURE")
+    modifier.object = obj
+    context.view_layer.objects.active = previous
+    return obj

@@ -5,7 +5,9 @@ torus with a modifier and on the fox imported from OBJ runs the operator and che
 object against the coverage-axis tool on the same world-space mesh: ball count, b1, centres and
 radii (within the .ma file's 9 significant digits; within 1e-9 of the bbox diagonal against the
 binding itself), the radius attribute, the ball empties; that a cancelled job leaves the scene
-unchanged; and the reconstruction-error operator."""
+unchanged; and the reconstruction-error operator. The rig: the tool's skinned fox (--rig OUT.glb)
+imported, and the add-on's Create Armature on the fox: turning one leaf bone moves the vertices
+weighted to it and no other vertex; the armature's bones and vertex groups are the binding's rig."""
 import json
 import math
 import os
@@ -78,6 +80,99 @@ def compare(name, source, tmp):
     return sk_obj, vertices, triangles
 
 
+def posed_positions(mesh_obj):
+    """The mesh's vertices after its modifiers and armature (object space)."""
+    depsgraph = bpy.context.evaluated_depsgraph_get()
+    evaluated = mesh_obj.evaluated_get(depsgraph)
+    mesh = evaluated.to_mesh()
+    co = np.empty(3 * len(mesh.vertices))
+    mesh.vertices.foreach_get("co", co)
+    evaluated.to_mesh_clear()
+    return co.reshape(-1, 3)
+
+
+def turn_one_bone(name, armature_obj, mesh_obj):
+    """Turns the leaf bone with the most weighted vertices: those with weight >= 0.05 on it move,
+    those with none stay (every other bone is at rest)."""
+    names = {g.index: g.name for g in mesh_obj.vertex_groups}
+    weights = {}
+    for v in mesh_obj.data.vertices:
+        for g in v.groups:
+            if g.weight > 0:
+                weights.setdefault(names[g.group], {})[v.index] = g.weight
+    leaves = sorted(b.name for b in armature_obj.data.bones if not b.children and b.name in weights)
+    check(len(leaves) > 0, name + ": leaf bones with weighted vertices")
+    if not leaves:
+        return
+    bone = max(leaves, key=lambda b: len(weights[b]))
+    rest = posed_positions(mesh_obj)
+    pose_bone = armature_obj.pose.bones[bone]
+    pose_bone.rotation_mode = "XYZ"
+    pose_bone.rotation_euler = (0.7, 0.4, 0.2)
+    bpy.context.view_layer.update()
+    posed = posed_positions(mesh_obj)
+    pose_bone.rotation_euler = (0.0, 0.0, 0.0)
+    bpy.context.view_layer.update()
+    moved = np.linalg.norm(posed - rest, axis=1)
+    diagonal = float(np.linalg.norm(rest.max(0) - rest.min(0)))
+    w = np.array([weights[bone].get(i, 0.0) for i in range(len(moved))])
+    heavy, free = moved[w >= 0.05], moved[w == 0]
+    check(len(heavy) > 0 and bool(np.all(heavy > 1e-4 * diagonal)),
+          "%s: turning %s moves its %d vertices of weight >= 0.05" % (name, bone, len(heavy)))
+    check(len(free) > 0 and float(free.max()) < 1e-5 * diagonal,
+          "%s: and none of the %d vertices not weighted to it (largest move %.2g of the diagonal)" %
+          (name, len(free), float(free.max()) / diagonal if len(free) else 0.0))
+
+
+def check_rig(tmp, fox_path):
+    # the tool's skinned glTF
+    glb = os.path.join(tmp, "fox_rig.glb")
+    subprocess.run([cli, fox_path, "-o", os.path.join(tmp, "fox_rig.ma"), "--rig", glb, "--quiet"], check=True)
+    before = set(bpy.data.objects.keys())
+    if "bool" not in np.__dict__:
+        np.bool = bool  # Blender 3.4's glTF importer uses this alias, which numpy 1.24 removed
+    bpy.ops.import_scene.gltf(filepath=glb)
+    added = [bpy.data.objects[n] for n in set(bpy.data.objects.keys()) - before]
+    armatures = [o for o in added if o.type == "ARMATURE"]
+    meshes = [o for o in added if o.type == "MESH"]
+    check(len(armatures) == 1 and len(meshes) == 1, "--rig glb: imports as one armature and one mesh")
+    if len(armatures) == 1 and len(meshes) == 1:
+        turn_one_bone("--rig glb", armatures[0], meshes[0])
+
+    # the add-on's Create Armature on the fox from OBJ
+    from coverage_axis_blender import job
+    ca = job.binding()
+    bpy.ops.object.select_all(action="DESELECT")
+    bpy.ops.wm.obj_import(filepath=fox_path)
+    fox = [o for o in bpy.context.selected_objects if o.type == "MESH"][0]
+    bpy.context.view_layer.objects.active = fox
+    check(bpy.ops.object.coverage_axis_armature() == {"FINISHED"}, "Create Armature finished")
+    armature = bpy.data.objects.get(fox.name + "_rig")
+    check(armature is not None and armature.type == "ARMATURE", "Create Armature: an armature object")
+    if armature is None:
+        return
+    v, t = job.base_mesh_arrays(fox)
+    rig = ca.rig(v, t, ca.skeletonize(v, t))
+    check(len(armature.data.bones) == len(rig) and len(fox.vertex_groups) == len(rig),
+          "Create Armature: %d bones and vertex groups, the binding's rig %d joints" %
+          (len(armature.data.bones), len(rig)))
+    parents = np.asarray(rig.parents).reshape(-1)
+    check(all((armature.data.bones["joint_%d" % j].parent.name if parents[j] >= 0 else None) ==
+              ("joint_%d" % parents[j] if parents[j] >= 0 else None) for j in range(len(rig))),
+          "Create Armature: bones parented as the joints")
+    joints, weights = np.asarray(rig.joints), np.asarray(rig.weights)
+    names = {g.index: g.name for g in fox.vertex_groups}
+    same = True
+    for vert in fox.data.vertices:
+        mine = {names[g.group]: g.weight for g in vert.groups}
+        want = {"joint_%d" % j: w for j, w in zip(joints[vert.index], weights[vert.index]) if w > 0}
+        same = same and set(mine) == set(want) and all(abs(mine[k] - want[k]) < 1e-6 for k in want)
+    check(same, "Create Armature: vertex groups hold the rig's weights")
+    check(any(m.type == "ARMATURE" and m.object == armature for m in fox.modifiers),
+          "Create Armature: an Armature modifier on the mesh")
+    turn_one_bone("Create Armature", armature, fox)
+
+
 def main():
     bpy.ops.preferences.addon_install(filepath=zip_path)
     bpy.ops.preferences.addon_enable(module="coverage_axis_blender")
@@ -129,6 +224,7 @@ def main():
         bpy.ops.wm.obj_import(filepath=os.path.join(data, "fox.obj"))
         fox = [o for o in bpy.context.selected_objects if o.type == "MESH"][0]
         compare("fox", fox, tmp)
+        check_rig(tmp, os.path.join(data, "fox.obj"))
 
     print("blender: %d failed" % len(failures))
     if failures:

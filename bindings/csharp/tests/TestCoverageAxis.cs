@@ -273,6 +273,34 @@ static class TestCoverageAxis
         }
     }
 
+    static void RigMatchesTheCli()
+    {
+        var surface = ReadObj(Path.Combine(dataDir, "fox.obj"));
+        using (var ctx = new Context())
+        using (var skeleton = ctx.Skeletonize(surface))
+        using (var c = ctx.Correspond(surface, skeleton))
+        using (var rig = ctx.Rig(surface, skeleton))
+        {
+            var w = c.Weights;
+            Check(c.Count * 3 == surface.Positions.Length, "one correspondence per vertex");
+            bool sums = true;
+            for (int i = 0; i < c.Count; ++i) sums &= Math.Abs(w[4 * i] + w[4 * i + 1] + w[4 * i + 2] + w[4 * i + 3] - 1) < 1e-12;
+            Check(sums, "ball weights sum to 1");
+            Check(c.Balls.All(b => b < skeleton.Count), "balls in range");
+            var parents = rig.Parents;
+            Check(parents[0] == -1 && Enumerable.Range(1, parents.Length - 1).All(j => parents[j] >= 0 && parents[j] < j),
+                  "parents before children");
+            Check(rig.VertexCount * 3 == surface.Positions.Length, "joint weights per vertex");
+            var tmp = Path.Combine(Path.GetTempPath(), "coverage_axis_cs_rig_" + System.Diagnostics.Process.GetCurrentProcess().Id);
+            var report = Run(cliExe, "\"" + Path.Combine(dataDir, "fox.obj") + "\" -o \"" + tmp + ".ma\" --rig \"" + tmp +
+                                     ".glb\" --json");
+            var want = "\"rig\":{\"joints\":" + rig.Count + ",\"branches\":" + rig.BranchCount + "}";
+            Check(report.Contains(want), "the CLI's report has " + want);
+            try { ctx.Rig(surface, skeleton, new RigOptions { MaxJoints = 0 }); Check(false, "max_joints 0 refused"); }
+            catch (CoverageAxisException e) { Check(e.Status == Status.InvalidArgument, "max_joints 0: InvalidArgument"); }
+        }
+    }
+
     static void Test(string name, Action body)
     {
         try { body(); ++passed; Console.WriteLine("ok   " + name); }
@@ -290,6 +318,7 @@ static class TestCoverageAxis
         Test("fox matches the CLI", FoxMatchesTheCli);
         Test("progress event and cancellation", ProgressEventAndCancellation);
         Test("results outlive context and set", ResultsOutliveContextAndSet);
+        Test("rig and correspondence match the CLI", RigMatchesTheCli);
         Console.WriteLine("{0} passed, {1} failed", passed, failed);
         return failed == 0 ? 0 : 1;
     }

@@ -174,6 +174,20 @@ struct Evaluation
     time_s::Float64
 end
 
+struct CorrespondenceOptions
+    struct_size::UInt32
+    smoothing::Float64
+end
+
+struct RigOptions
+    struct_size::UInt32
+    root::Int64
+    max_joints::UInt32
+    joint_spacing::Float64
+    min_branch::Float64
+    smoothing::Float64
+end
+
 # ---- errors, defaults -------------------------------------------------------------------------
 """A failed call: the library's status code and its message."""
 struct CoverageAxisError <: Exception

@@ -108,7 +108,7 @@ def view(address, count, width, ctype, owner):
             return []
         flat = (ctype * n).from_address(address)
         return list(flat) if width == 1 else [tuple(flat[i:i + width]) for i in range(0, n, width)]
-    dtype = np.float64 if ctype is ctypes.c_double else np.uint32
+    dtype = {ctypes.c_double: np.float64, ctypes.c_int32: np.int32}.get(ctype, np.uint32)
     shape = (count,) if width == 1 else (count, width)
     if n == 0:
         return np.zeros(shape, dtype=dtype)

@@ -15,8 +15,9 @@ import os
 import threading
 from ctypes import POINTER, CFUNCTYPE, c_char_p, c_double, c_int32, c_size_t, c_uint32, c_uint64, c_void_p
 
-from ._structs import (_CandidateOptions, _ConnectOptions, _ContextDesc, _EvaluateOptions, _Evaluation,
-                       _SelectOptions, _SelectStats, _SkeletonStats, _SkeletonView, _SurfaceView)
+from ._structs import (_CandidateOptions, _ConnectOptions, _ContextDesc, _CorrespondenceOptions, _EvaluateOptions,
+                       _Evaluation, _RigOptions, _SelectOptions, _SelectStats, _SkeletonStats, _SkeletonView,
+                       _SurfaceView)
 
 ABI_VERSION = 3
 
@@ -93,6 +94,19 @@ _SIGNATURES = {
     "ca_evaluate_options_defaults": (c_int32, [POINTER(_EvaluateOptions), c_uint32]),
     "ca_evaluate": (c_int32, [P, POINTER(_SurfaceView), POINTER(_SkeletonView), POINTER(_EvaluateOptions),
                               POINTER(_Evaluation)]),
+    # correspondence and rig
+    "ca_correspondence_options_defaults": (c_int32, [POINTER(_CorrespondenceOptions), c_uint32]),
+    "ca_correspond": (c_int32, [P, POINTER(_SurfaceView), POINTER(_SkeletonView), POINTER(_CorrespondenceOptions),
+                                POINTER(P)]),
+    "ca_correspondence_destroy": (None, [P]), "ca_correspondence_vertex_count": (c_size_t, [P]),
+    "ca_correspondence_balls": (P, [P]), "ca_correspondence_weights": (P, [P]),
+    "ca_correspondence_nearest_kinds": (P, [P]), "ca_correspondence_nearest_indices": (P, [P]),
+    "ca_rig_options_defaults": (c_int32, [POINTER(_RigOptions), c_uint32]),
+    "ca_rig_build": (c_int32, [P, POINTER(_SurfaceView), POINTER(_SkeletonView), POINTER(_RigOptions), POINTER(P)]),
+    "ca_rig_destroy": (None, [P]), "ca_rig_joint_count": (c_size_t, [P]), "ca_rig_joint_positions": (P, [P]),
+    "ca_rig_joint_parents": (P, [P]), "ca_rig_joint_balls": (P, [P]), "ca_rig_joint_branches": (P, [P]),
+    "ca_rig_branch_count": (c_size_t, [P]), "ca_rig_vertex_count": (c_size_t, [P]),
+    "ca_rig_vertex_joints": (P, [P]), "ca_rig_vertex_weights": (P, [P]), "ca_rig_vertex_branches": (P, [P]),
 }
 
 _lock = threading.Lock()

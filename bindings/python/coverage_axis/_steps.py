@@ -10,9 +10,9 @@ import ctypes
 from . import _arrays
 from ._context import Context
 from ._library import (CA_ERROR_INVALID_ARGUMENT, CA_ERROR_INVALID_INPUT, CA_ERROR_TARGET_NOT_REACHED,
-                       CoverageAxisError, TargetNotReachedError, _CandidateOptions,
-                       _ConnectOptions, _EvaluateOptions, _Evaluation, _SelectOptions, _SelectStats, _SkeletonStats,
-                       _SkeletonView, _SurfaceView, fill_defaults, lib, output_struct, struct_dict)
+                       CoverageAxisError, TargetNotReachedError, _CandidateOptions, _ConnectOptions,
+                       _CorrespondenceOptions, _EvaluateOptions, _Evaluation, _RigOptions, _SelectOptions, _SelectStats,
+                       _SkeletonStats, _SkeletonView, _SurfaceView, fill_defaults, lib, output_struct, struct_dict)
 from ._structs import _ContextDesc
 
 # the header's #define values, by name
@@ -30,6 +30,8 @@ _STEPS = {
     "select": ("ca_select_options_defaults", _SelectOptions),
     "connect": ("ca_connect_options_defaults", _ConnectOptions),
     "evaluate": ("ca_evaluate_options_defaults", _EvaluateOptions),
+    "correspond": ("ca_correspondence_options_defaults", _CorrespondenceOptions),
+    "rig": ("ca_rig_options_defaults", _RigOptions),
 }
 _NOT_OPTIONS = {"struct_size", "alloc", "free", "alloc_user", "log", "log_user", "progress", "progress_user",
                 "reserved_abi2_tail",  # padding, never read
@@ -49,7 +51,7 @@ def _named(name, value):
 
 def defaults(step):
     """The library's defaults of a step's options ("context", "candidates", "select", "connect",
-    "evaluate") as a dict, enumerations by name."""
+    "evaluate", "correspond", "rig") as a dict, enumerations by name."""
     s = fill_defaults(*_STEPS[step])
     return {name: _named(name, getattr(s, name)) for name in _option_names(step)}
 
@@ -255,6 +257,16 @@ def evaluate(vertices, triangles, skeleton, *, context=None, **options):
     cones and slabs), in % of the bounding-box diagonal, as a dict.
     Options: surface_samples, envelope_samples, seed."""
     view, keep = _surface(vertices, triangles, None)
+    sv, keep_skeleton = _skeleton_view(skeleton)
+    opts = _options("evaluate", options)
+    out = output_struct(_Evaluation)
+    _run(context, lib().ca_evaluate, ctypes.byref(view), ctypes.byref(sv), ctypes.byref(opts), ctypes.byref(out))
+    del keep, keep_skeleton
+    return struct_dict(out)
+
+
+def _skeleton_view(skeleton):
+    """A ca_skeleton_view over a Skeleton's arrays (lengths checked), and the buffers it borrows."""
     c = _arrays.points(skeleton.centers, "skeleton.centers", packed=True)  # ca_skeleton_view has no strides
     r = _arrays.points(_column(skeleton.radii), "skeleton.radii", 1, packed=True)
     e = _arrays.indices(skeleton.edges, "skeleton.edges", 2)
@@ -264,11 +276,7 @@ def evaluate(vertices, triangles, skeleton, *, context=None, **options):
     sv = fill_defaults("ca_skeleton_view_defaults", _SkeletonView)
     sv.centers, sv.radii, sv.vertex_count = c.address, r.address, c.count
     sv.edges, sv.edge_count, sv.faces, sv.face_count = e.address, e.count, f.address, f.count
-    opts = _options("evaluate", options)
-    out = output_struct(_Evaluation)
-    _run(context, lib().ca_evaluate, ctypes.byref(view), ctypes.byref(sv), ctypes.byref(opts), ctypes.byref(out))
-    del keep
-    return struct_dict(out)
+    return sv, [c, r, e, f]
 
 
 def _column(values):

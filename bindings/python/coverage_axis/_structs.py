@@ -76,3 +76,12 @@ class _Evaluation(Structure):
                 ("hd_recon_to_surface", c_double), ("mean_recon_to_surface", c_double), ("hd_two_sided", c_double),
                 ("diagonal", c_double), ("surface_samples_used", c_uint64), ("envelope_samples_used", c_uint64),
                 ("time_s", c_double)]
+
+
+class _CorrespondenceOptions(Structure):
+    _fields_ = [("struct_size", c_uint32), ("smoothing", c_double)]
+
+
+class _RigOptions(Structure):
+    _fields_ = [("struct_size", c_uint32), ("root", c_int64), ("max_joints", c_uint32), ("joint_spacing", c_double),
+                ("min_branch", c_double), ("smoothing", c_double)]

@@ -354,6 +354,47 @@ class CommonTest(unittest.TestCase):
                 # the .ma file prints 9 significant digits: at most half a unit of the 9th off
                 self.assertLessEqual(abs(mine - printed), 5e-9 * abs(printed), (mine, printed))
 
+    def test_correspondence_and_rig_equal_the_cli(self):
+        import json
+        import tempfile
+        fox = os.path.join(DATA, "fox.obj")
+        with tempfile.TemporaryDirectory() as tmp:
+            ma, cj = os.path.join(tmp, "fox.ma"), os.path.join(tmp, "fox.json")
+            report = json.loads(subprocess.run([os.environ["CA_CLI"], fox, "-o", ma, "--correspondence", cj, "--json"],
+                                               check=True, capture_output=True, text=True).stdout)
+            with open(cj) as fh:
+                cli = json.load(fh)["vertices"]
+        v, f = read_obj(fox)
+        sk = ca.skeletonize(v, f)
+        c = ca.correspond(v, f, sk)
+        self.assertEqual(len(c), len(v))
+        self.assertEqual(len(cli), len(v))
+        for i, entry in enumerate(cli):
+            balls, weights = rows(c.balls)[i], rows(c.weights)[i]
+            used = [k for k in range(ca.INFLUENCES) if weights[k] > 0]
+            self.assertEqual([balls[k] for k in used], entry["balls"], i)
+            for k, w in zip(used, entry["weights"]):
+                self.assertAlmostEqual(weights[k], w, delta=1e-9)
+            self.assertEqual(ca.NEAREST_KINDS[rows(c.nearest_kinds)[i]], entry["nearest"]["kind"])
+            self.assertEqual(rows(c.nearest_indices)[i], entry["nearest"]["index"])
+        r = ca.rig(v, f, sk)
+        self.assertEqual((len(r), r.branch_count), (report["rig"]["joints"], report["rig"]["branches"]))
+        self.assertEqual(rows(r.branches), [e["branch"] for e in cli])
+        parents = rows(r.parents)
+        self.assertEqual(parents[0], -1)
+        self.assertTrue(all(0 <= p < j for j, p in enumerate(parents) if j > 0))
+        for w in rows(r.weights):
+            self.assertAlmostEqual(sum(w), 1.0, delta=1e-12)
+        self.assertEqual(ca.defaults("rig")["max_joints"], 64)
+        few = ca.rig(v, f, sk, max_joints=5)
+        self.assertLessEqual(len(few), 5)
+        with self.assertRaises(ca.CoverageAxisError) as e:
+            ca.rig(v, f, sk, max_joints=0)
+        self.assertEqual(e.exception.status, ca.CA_ERROR_INVALID_ARGUMENT)
+        with self.assertRaises(ca.CoverageAxisError) as e:
+            ca.correspond(v, f, ca.Skeleton([(0, 0, 0)], [1.0, 2.0]))
+        self.assertEqual(e.exception.status, ca.CA_ERROR_INVALID_ARGUMENT)
+
 
 class NumpyTest(unittest.TestCase):
     """numpy in and out; runs where numpy is installed, which this run requires."""

@@ -57,6 +57,20 @@ pub struct ca_selection {
 pub struct ca_skeleton {
     _opaque: [u8; 0],
 }
+#[repr(C)]
+pub struct ca_correspondence {
+    _opaque: [u8; 0],
+}
+#[repr(C)]
+pub struct ca_rig {
+    _opaque: [u8; 0],
+}
+
+/// Balls (joints) per vertex of a correspondence (rig).
+pub const CA_INFLUENCES: usize = 4;
+pub const CA_NEAREST_BALL: i32 = 0;
+pub const CA_NEAREST_EDGE: i32 = 1;
+pub const CA_NEAREST_FACE: i32 = 2;
 
 pub type ca_log_fn = Option<unsafe extern "C" fn(user: *mut c_void, level: i32, message: *const c_char)>;
 pub type ca_progress_fn =
@@ -278,6 +292,20 @@ ca_struct!(#[derive(Debug, Default)] ca_evaluation {
     time_s: f64,
 });
 
+ca_struct!(ca_correspondence_options {
+    struct_size: u32,
+    smoothing: f64,
+});
+
+ca_struct!(ca_rig_options {
+    struct_size: u32,
+    root: i64,
+    max_joints: u32,
+    joint_spacing: f64,
+    min_branch: f64,
+    smoothing: f64,
+});
+
 /// Every struct this crate declares, in header order.
 pub fn layouts() -> Vec<StructLayout> {
     vec![
@@ -291,6 +319,8 @@ pub fn layouts() -> Vec<StructLayout> {
         ca_skeleton_view::layout(),
         ca_evaluate_options::layout(),
         ca_evaluation::layout(),
+        ca_correspondence_options::layout(),
+        ca_rig_options::layout(),
     ]
 }
 
@@ -390,4 +420,39 @@ extern "C" {
         options: *const ca_evaluate_options,
         result: *mut ca_evaluation,
     ) -> ca_status;
+
+    pub fn ca_correspondence_options_defaults(options: *mut ca_correspondence_options, struct_size: u32) -> ca_status;
+    pub fn ca_correspond(
+        ctx: *mut ca_context,
+        surface: *const ca_surface_view,
+        skeleton: *const ca_skeleton_view,
+        options: *const ca_correspondence_options,
+        out: *mut *mut ca_correspondence,
+    ) -> ca_status;
+    pub fn ca_correspondence_destroy(correspondence: *mut ca_correspondence);
+    pub fn ca_correspondence_vertex_count(correspondence: *const ca_correspondence) -> usize;
+    pub fn ca_correspondence_balls(correspondence: *const ca_correspondence) -> *const u32;
+    pub fn ca_correspondence_weights(correspondence: *const ca_correspondence) -> *const f64;
+    pub fn ca_correspondence_nearest_kinds(correspondence: *const ca_correspondence) -> *const i32;
+    pub fn ca_correspondence_nearest_indices(correspondence: *const ca_correspondence) -> *const u32;
+
+    pub fn ca_rig_options_defaults(options: *mut ca_rig_options, struct_size: u32) -> ca_status;
+    pub fn ca_rig_build(
+        ctx: *mut ca_context,
+        surface: *const ca_surface_view,
+        skeleton: *const ca_skeleton_view,
+        options: *const ca_rig_options,
+        out: *mut *mut ca_rig,
+    ) -> ca_status;
+    pub fn ca_rig_destroy(rig: *mut ca_rig);
+    pub fn ca_rig_joint_count(rig: *const ca_rig) -> usize;
+    pub fn ca_rig_joint_positions(rig: *const ca_rig) -> *const f64;
+    pub fn ca_rig_joint_parents(rig: *const ca_rig) -> *const i32;
+    pub fn ca_rig_joint_balls(rig: *const ca_rig) -> *const u32;
+    pub fn ca_rig_joint_branches(rig: *const ca_rig) -> *const u32;
+    pub fn ca_rig_branch_count(rig: *const ca_rig) -> usize;
+    pub fn ca_rig_vertex_count(rig: *const ca_rig) -> usize;
+    pub fn ca_rig_vertex_joints(rig: *const ca_rig) -> *const u32;
+    pub fn ca_rig_vertex_weights(rig: *const ca_rig) -> *const f64;
+    pub fn ca_rig_vertex_branches(rig: *const ca_rig) -> *const u32;
 }

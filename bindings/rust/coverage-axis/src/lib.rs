@@ -454,6 +454,45 @@ pub struct EvaluateOptions {
     raw: sys::ca_evaluate_options,
 }
 
+/// Options of `Context::rig` (ca_rig_options; docs/rig.md); the library's defaults.
+#[derive(Clone, Copy)]
+pub struct RigOptions {
+    raw: sys::ca_rig_options,
+}
+
+impl Default for RigOptions {
+    fn default() -> Self {
+        RigOptions { raw: defaults!(sys::ca_rig_options, sys::ca_rig_options_defaults) }
+    }
+}
+
+impl RigOptions {
+    pub fn new() -> Self {
+        Self::default()
+    }
+    /// The root joint's ball; -1: the largest ball.
+    pub fn root(mut self, ball: i64) -> Self {
+        self.raw.root = ball;
+        self
+    }
+    pub fn max_joints(mut self, n: u32) -> Self {
+        self.raw.max_joints = n;
+        self
+    }
+    pub fn joint_spacing(mut self, fraction: f64) -> Self {
+        self.raw.joint_spacing = fraction;
+        self
+    }
+    pub fn min_branch(mut self, ratio: f64) -> Self {
+        self.raw.min_branch = ratio;
+        self
+    }
+    pub fn smoothing(mut self, width: f64) -> Self {
+        self.raw.smoothing = width;
+        self
+    }
+}
+
 impl Default for EvaluateOptions {
     fn default() -> Self {
         EvaluateOptions { raw: defaults!(sys::ca_evaluate_options, sys::ca_evaluate_options_defaults) }
@@ -729,6 +768,29 @@ impl Context {
         self.check(unsafe { sys::ca_evaluate(self.ptr(), &surface.raw, &view, &options.raw, &mut result) })?;
         Ok(result)
     }
+
+    /// Each surface vertex's nearest skeleton primitive and up to 4 ball weights that sum to 1
+    /// (docs/rig.md); `smoothing` None keeps the library's default.
+    pub fn correspond(&self, surface: &Surface<'_>, skeleton: &Skeleton, smoothing: Option<f64>) -> Result<Correspondence> {
+        let mut view: sys::ca_skeleton_view = defaults!(sys::ca_skeleton_view, sys::ca_skeleton_view_defaults);
+        check(unsafe { sys::ca_skeleton_get_view(skeleton.raw, &mut view) })?;
+        let mut options = defaults!(sys::ca_correspondence_options, sys::ca_correspondence_options_defaults);
+        if let Some(width) = smoothing {
+            options.smoothing = width;
+        }
+        let mut out = ptr::null_mut();
+        self.check(unsafe { sys::ca_correspond(self.ptr(), &surface.raw, &view, &options, &mut out) })?;
+        Ok(Correspondence { raw: out })
+    }
+
+    /// The skeleton's curve skeleton as a tree of joints and each surface vertex's joint weights.
+    pub fn rig(&self, surface: &Surface<'_>, skeleton: &Skeleton, options: &RigOptions) -> Result<Rig> {
+        let mut view: sys::ca_skeleton_view = defaults!(sys::ca_skeleton_view, sys::ca_skeleton_view_defaults);
+        check(unsafe { sys::ca_skeleton_get_view(skeleton.raw, &mut view) })?;
+        let mut out = ptr::null_mut();
+        self.check(unsafe { sys::ca_rig_build(self.ptr(), &surface.raw, &view, &options.raw, &mut out) })?;
+        Ok(Rig { raw: out })
+    }
 }
 
 // ---- results ---------------------------------------------------------------------------------
@@ -859,5 +921,89 @@ impl Skeleton {
         let mut stats = SkeletonStats { struct_size: std::mem::size_of::<SkeletonStats>() as u32, ..Default::default() };
         check(unsafe { sys::ca_skeleton_stats_get(self.raw, &mut stats) }).expect("stats of a live skeleton");
         stats
+    }
+}
+
+/// Per surface vertex: 4 balls and weights (decreasing, sum 1; an unused slot has weight 0 and
+/// repeats the first ball) and the nearest primitive (`sys::CA_NEAREST_*`, an index into the
+/// skeleton's balls, edges or faces).
+pub struct Correspondence {
+    raw: *mut sys::ca_correspondence,
+}
+
+/// A tree of joints (parents before children; joint 0 the root, parent -1) and per surface
+/// vertex 4 joints and weights (decreasing, sum 1).
+pub struct Rig {
+    raw: *mut sys::ca_rig,
+}
+
+// SAFETY: results are immutable and may be read from several threads at once (docs/abi.md).
+unsafe impl Send for Correspondence {}
+unsafe impl Sync for Correspondence {}
+unsafe impl Send for Rig {}
+unsafe impl Sync for Rig {}
+
+impl Drop for Correspondence {
+    fn drop(&mut self) {
+        unsafe { sys::ca_correspondence_destroy(self.raw) }
+    }
+}
+impl Drop for Rig {
+    fn drop(&mut self) {
+        unsafe { sys::ca_rig_destroy(self.raw) }
+    }
+}
+
+impl Correspondence {
+    pub fn len(&self) -> usize {
+        unsafe { sys::ca_correspondence_vertex_count(self.raw) }
+    }
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+    pub fn balls(&self) -> &[[u32; 4]] {
+        unsafe { items(sys::ca_correspondence_balls(self.raw), self.len()) }
+    }
+    pub fn weights(&self) -> &[[f64; 4]] {
+        unsafe { items(sys::ca_correspondence_weights(self.raw), self.len()) }
+    }
+    pub fn nearest_kinds(&self) -> &[i32] {
+        unsafe { values(sys::ca_correspondence_nearest_kinds(self.raw), self.len()) }
+    }
+    pub fn nearest_indices(&self) -> &[u32] {
+        unsafe { values(sys::ca_correspondence_nearest_indices(self.raw), self.len()) }
+    }
+}
+
+impl Rig {
+    pub fn len(&self) -> usize {
+        unsafe { sys::ca_rig_joint_count(self.raw) }
+    }
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+    pub fn branch_count(&self) -> usize {
+        unsafe { sys::ca_rig_branch_count(self.raw) }
+    }
+    pub fn positions(&self) -> &[[f64; 3]] {
+        unsafe { items(sys::ca_rig_joint_positions(self.raw), self.len()) }
+    }
+    pub fn parents(&self) -> &[i32] {
+        unsafe { values(sys::ca_rig_joint_parents(self.raw), self.len()) }
+    }
+    pub fn joint_balls(&self) -> &[u32] {
+        unsafe { values(sys::ca_rig_joint_balls(self.raw), self.len()) }
+    }
+    pub fn vertex_count(&self) -> usize {
+        unsafe { sys::ca_rig_vertex_count(self.raw) }
+    }
+    pub fn joints(&self) -> &[[u32; 4]] {
+        unsafe { items(sys::ca_rig_vertex_joints(self.raw), self.vertex_count()) }
+    }
+    pub fn weights(&self) -> &[[f64; 4]] {
+        unsafe { items(sys::ca_rig_vertex_weights(self.raw), self.vertex_count()) }
+    }
+    pub fn branches(&self) -> &[u32] {
+        unsafe { values(sys::ca_rig_vertex_branches(self.raw), self.vertex_count()) }
     }
 }

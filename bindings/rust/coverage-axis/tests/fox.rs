@@ -215,3 +215,45 @@ fn progress_closure_and_cancel() {
     ctx.cancel_handle().clear();
     assert!(ctx.candidates(&Surface::mesh(&v, &f), &CandidateOptions::new().cover_samples(300)).is_ok());
 }
+
+/// The rig and correspondence of the fox: the joint and branch counts of the CLI's report
+/// (`--rig`), weights summing to 1 over at most 4 balls (joints), parents before children, and the
+/// options checked.
+#[test]
+fn rig_and_correspondence() {
+    let fox = data("fox.obj");
+    let (v, f) = read_obj(&fox);
+    let ctx = Context::new().unwrap();
+    let surface = Surface::mesh(&v, &f);
+    let skeleton = ctx.skeletonize(&surface).unwrap();
+    let c = ctx.correspond(&surface, &skeleton, None).unwrap();
+    assert_eq!(c.len(), v.len());
+    for (balls, weights) in c.balls().iter().zip(c.weights()) {
+        assert!((weights.iter().sum::<f64>() - 1.0).abs() < 1e-12);
+        assert!(balls.iter().all(|&b| (b as usize) < skeleton.len()));
+    }
+    assert!(c.nearest_kinds().iter().all(|&k| (0..3).contains(&k)));
+    let rig = ctx.rig(&surface, &skeleton, &RigOptions::new()).unwrap();
+    assert_eq!(rig.vertex_count(), v.len());
+    assert_eq!(rig.parents()[0], -1);
+    assert!(rig.parents().iter().enumerate().skip(1).all(|(j, &p)| p >= 0 && (p as usize) < j));
+    for w in rig.weights() {
+        assert!((w.iter().sum::<f64>() - 1.0).abs() < 1e-12);
+    }
+    // the CLI's report of the same rig
+    let cli = std::env::var("CA_CLI").expect("CA_CLI: the coverage-axis tool");
+    let dir = std::env::temp_dir();
+    let out = Command::new(cli).arg(&fox).arg("-o").arg(dir.join(format!("coverage_axis_rust_rig_{}.ma", std::process::id())))
+        .arg("--rig").arg(dir.join(format!("coverage_axis_rust_rig_{}.glb", std::process::id()))).arg("--json")
+        .output().unwrap();
+    assert!(out.status.success());
+    let report = String::from_utf8(out.stdout).unwrap();
+    let want = format!("\"rig\":{{\"joints\":{},\"branches\":{}}}", rig.len(), rig.branch_count());
+    assert!(report.contains(&want), "{} not in {}", want, report);
+    let few = ctx.rig(&surface, &skeleton, &RigOptions::new().max_joints(5)).unwrap();
+    assert!(few.len() <= 5);
+    let err = ctx.rig(&surface, &skeleton, &RigOptions::new().max_joints(0)).err().unwrap();
+    assert_eq!(err.status, Status::InvalidArgument);
+    let err = ctx.correspond(&surface, &skeleton, Some(0.0)).err().unwrap();
+    assert_eq!(err.status, Status::InvalidArgument);
+}
