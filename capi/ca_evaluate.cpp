@@ -7,32 +7,6 @@ using ca::Status;
 using ca::Vec3;
 using namespace capi;
 
-namespace {
-
-// The skeleton view's arrays in the caller's units (pointers and counts checked; values are
-// checked by the core's step).
-Status read_skeleton(const ca_skeleton_view* in, ca::Skeleton& out) {
-    ca_skeleton_view v;
-    Status st = read_input(in, v);
-    if (!st.ok()) return st;
-    if (v.vertex_count && !v.centers) return null_pointer("skeleton->centers");
-    if (v.vertex_count && !v.radii) return null_pointer("skeleton->radii");
-    if (v.edge_count && !v.edges) return null_pointer("skeleton->edges");
-    if (v.face_count && !v.faces) return null_pointer("skeleton->faces");
-    if (v.vertex_count > UINT32_MAX || v.edge_count > UINT32_MAX || v.face_count > UINT32_MAX)
-        return ca::fail(ca::Code::invalid_argument, "skeleton: more than 2^32 - 1 vertices, edges or faces");
-    out.balls.resize(v.vertex_count);
-    for (size_t i = 0; i < v.vertex_count; ++i)
-        out.balls[i] = {Vec3(v.centers[3 * i], v.centers[3 * i + 1], v.centers[3 * i + 2]), v.radii[i]};
-    out.edges.resize(v.edge_count);
-    for (size_t e = 0; e < v.edge_count; ++e) out.edges[e] = {v.edges[2 * e], v.edges[2 * e + 1]};
-    out.faces.resize(v.face_count);
-    for (size_t f = 0; f < v.face_count; ++f) out.faces[f] = {v.faces[3 * f], v.faces[3 * f + 1], v.faces[3 * f + 2]};
-    return Status::success();
-}
-
-}  // namespace
-
 extern "C" {
 
 ca_status ca_evaluate(ca_context* ctx, const ca_surface_view* surface, const ca_skeleton_view* skeleton,

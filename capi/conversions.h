@@ -60,6 +60,10 @@ ca::Status read_points(const double* base, size_t count, size_t stride, const ch
 // strides checked). Normals are read for point clouds when want_normals.
 ca::Status read_surface(const ca_surface_view* surface, bool want_normals, ca::SurfaceInput& out);
 
+// A skeleton view's arrays in the caller's units (struct size, pointers and counts checked; the
+// values are checked by the core's steps).
+ca::Status read_skeleton(const ca_skeleton_view* in, ca::Skeleton& out);
+
 // Points in the caller's units, x y z per point, in memory from the result's allocator.
 void fill(Array<double>& a, const Allocator& al, const std::vector<ca::Vec3>& pts, const ca::Normalization& n);
 
@@ -70,9 +74,11 @@ ca::CandidateOptions to_core(const ca_candidate_options& o, int32_t threads);
 ca::SelectRequest to_core(const ca_select_options& o, int32_t threads);
 ca::ConnectRequest to_core(const ca_connect_options& o, int32_t threads);
 ca::EvaluateOptions to_core(const ca_evaluate_options& o, int32_t threads);
+ca::ProxyOptions to_core(const ca_proxy_options& o, int32_t threads);
 ca_candidate_options to_c(const ca::CandidateOptions& o);
 ca_select_options to_c(const ca::SelectRequest& o);
 ca_connect_options to_c(const ca::ConnectRequest& o);
 ca_evaluate_options to_c(const ca::EvaluateOptions& o);
+ca_proxy_options to_c(const ca::ProxyOptions& o);
 
 }  // namespace capi

@@ -149,6 +149,8 @@ CA_PUBLISHED(ca_skeleton_stats, {1, sizeof(abi1::ca_skeleton_stats)}, {2, sizeof
 CA_PUBLISHED(ca_skeleton_view, {1, sizeof(ca_skeleton_view)})
 CA_PUBLISHED(ca_evaluate_options, {1, sizeof(ca_evaluate_options)})
 CA_PUBLISHED(ca_evaluation, {1, sizeof(ca_evaluation)})
+CA_PUBLISHED(ca_proxy_options, {3, sizeof(ca_proxy_options)})
+CA_PUBLISHED(ca_proxy_stats, {3, sizeof(ca_proxy_stats)})
 #undef CA_PUBLISHED
 
 static_assert(offsetof(ca_context_desc, threads) == offsetof(abi1::ca_context_desc, threads) &&
@@ -224,6 +226,7 @@ template <> ca_select_options defaults<ca_select_options>();
 template <> ca_connect_options defaults<ca_connect_options>();
 template <> ca_skeleton_view defaults<ca_skeleton_view>();
 template <> ca_evaluate_options defaults<ca_evaluate_options>();
+template <> ca_proxy_options defaults<ca_proxy_options>();
 
 // A struct of all zero bytes but its struct_size (sizeof T): the start of every default and result.
 template <class T>

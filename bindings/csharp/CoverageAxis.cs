@@ -159,11 +159,31 @@ namespace CoverageAxis
             public double time_s;
         }
 
+        [StructLayout(LayoutKind.Sequential)]
+        public struct ProxyOptions
+        {
+            public uint struct_size;
+            public int shapes, mode;
+            public uint count, surface_samples, evaluate_samples, volume_samples;
+            public ulong seed;
+        }
+
+        [StructLayout(LayoutKind.Sequential)]
+        public struct ProxyStats
+        {
+            public uint struct_size;
+            public double hd_surface_to_proxies, mean_surface_to_proxies, hd_proxies_to_surface, mean_proxies_to_surface;
+            public double hd_two_sided, outside_bound, skeleton_outside_bound, union_volume, outside_volume;
+            public double radius_change, diagonal;
+            public ulong candidates, surface_cells;
+            public double time_s;
+        }
+
         /// <summary>Every struct declared here, in header order (for the layout check).</summary>
         public static readonly Type[] Structs = {
             typeof(ContextDesc), typeof(SurfaceView), typeof(CandidateOptions), typeof(SelectOptions),
             typeof(SelectStats), typeof(ConnectOptions), typeof(SkeletonStats), typeof(SkeletonView),
-            typeof(EvaluateOptions), typeof(Evaluation),
+            typeof(EvaluateOptions), typeof(Evaluation), typeof(ProxyOptions), typeof(ProxyStats),
         };
 
         [DllImport(Lib)] public static extern uint ca_version();

@@ -9,6 +9,7 @@
 #include "connect.h"
 #include "evaluate.h"
 #include "fit.h"
+#include "proxies.h"
 #include "selection.h"
 #include "skeleton.h"
 
@@ -100,5 +101,14 @@ Status select_step(const CandidateSet& set, const SelectRequest& request, const 
 // are not used) and a skeleton in the same units; out.diagonal in those units.
 Status evaluate_step(SurfaceInput surface, const Skeleton& skeleton, const EvaluateOptions& opt,
                      const Monitor& monitor, EvaluateResult& out);
+
+// ---- engine proxies (proxies_step.cpp) ----
+
+// Spheres and tapered capsules from a skeleton in the caller's units (as ca_skeleton holds it) over
+// the candidate set's surface, a triangle mesh (proxies.h, docs/proxies.md). The skeleton is
+// checked and brought to the set's internal units; the proxies, the diagonal and the volumes of
+// the result are in the caller's units (the errors are percent of the diagonal).
+Status proxies_step(const CandidateSet& set, const Skeleton& skeleton, const ProxyOptions& opt,
+                    const Monitor& monitor, ProxyResult& out);
 
 }  // namespace ca

@@ -76,3 +76,16 @@ class _Evaluation(Structure):
                 ("hd_recon_to_surface", c_double), ("mean_recon_to_surface", c_double), ("hd_two_sided", c_double),
                 ("diagonal", c_double), ("surface_samples_used", c_uint64), ("envelope_samples_used", c_uint64),
                 ("time_s", c_double)]
+
+
+class _ProxyOptions(Structure):
+    _fields_ = [("struct_size", c_uint32), ("shapes", c_int32), ("mode", c_int32), ("count", c_uint32),
+                ("surface_samples", c_uint32), ("evaluate_samples", c_uint32), ("volume_samples", c_uint32),
+                ("seed", c_uint64)]
+
+
+class _ProxyStats(Structure):
+    _fields_ = [("struct_size", c_uint32)] + [(name, c_double) for name in (
+        "hd_surface_to_proxies", "mean_surface_to_proxies", "hd_proxies_to_surface", "mean_proxies_to_surface",
+        "hd_two_sided", "outside_bound", "skeleton_outside_bound", "union_volume", "outside_volume", "radius_change",
+        "diagonal")] + [("candidates", c_uint64), ("surface_cells", c_uint64), ("time_s", c_double)]
