@@ -34,7 +34,7 @@ void publish(ca_proxy_set& r, const ca::ProxyResult& p) {
     o.mean_proxies_to_surface = s.mean_proxies_to_surface;
     o.hd_two_sided = s.hd_two_sided;
     o.outside_bound = s.outside_bound;
-    o.skeleton_outside_bound = s.skeleton_outside_bound;
+    o.skeleton_outside = s.skeleton_outside;
     o.union_volume = s.union_volume;
     o.outside_volume = s.outside_volume;
     o.radius_change = s.radius_change;

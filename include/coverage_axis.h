@@ -492,9 +492,9 @@ CA_API ca_status ca_evaluate(ca_context* ctx, const ca_surface_view* surface, co
    the two spheres), the primitives game engines take as colliders, broad-phase volumes and shadow
    casters: at most `count` of them chosen from a skeleton's balls, edges and chains of edges, at
    the least two-sided Hausdorff distance to the surface (docs/proxies.md). Modes:
-   - INSCRIBED: every primitive inside the shape, up to the skeleton's own excess: no primitive
-     reaches farther outside than the skeleton's balls and edges can (a proven bound, from the depth
-     of the balls' centres);
+   - INSCRIBED: every primitive inside the shape, up to the skeleton's own excess: a proven bound
+     (from the depth of the balls' centres) of how far each primitive reaches outside is at most
+     how far the skeleton's balls and edges are measured to reach;
    - CONSERVATIVE: the union contains every point of the surface (not only samples: the surface is
      cut into small triangles and each primitive, being convex, is grown until it holds all three
      corners of the triangles it is given). */
@@ -545,8 +545,9 @@ typedef struct ca_proxy_stats {
     double mean_proxies_to_surface;
     double hd_two_sided;
     double outside_bound;        /* proven bound of how far any primitive reaches outside the shape, % */
-    double skeleton_outside_bound; /* the same bound for the skeleton's balls and edges, % (INSCRIBED:
-                                      outside_bound is at most this) */
+    double skeleton_outside;     /* how far the skeleton's balls and edges reach outside the shape at
+                                    least (measured at points of them), % (INSCRIBED: outside_bound
+                                    is at most this) */
     double union_volume;         /* Monte Carlo volume of the union of the primitives, caller's units^3 */
     double outside_volume;       /* of which outside the shape (winding-number inside test) */
     double radius_change;        /* CONSERVATIVE: the most a primitive grew; INSCRIBED: the most a

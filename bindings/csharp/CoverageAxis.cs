@@ -173,7 +173,7 @@ namespace CoverageAxis
         {
             public uint struct_size;
             public double hd_surface_to_proxies, mean_surface_to_proxies, hd_proxies_to_surface, mean_proxies_to_surface;
-            public double hd_two_sided, outside_bound, skeleton_outside_bound, union_volume, outside_volume;
+            public double hd_two_sided, outside_bound, skeleton_outside, union_volume, outside_volume;
             public double radius_change, diagonal;
             public ulong candidates, surface_cells;
             public double time_s;

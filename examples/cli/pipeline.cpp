@@ -267,7 +267,7 @@ Json proxy_stats_json(const ca_proxy_stats& s, const RunOptions& o, size_t count
                 {"mean_surface_to_proxies", s.mean_surface_to_proxies},
                 {"mean_proxies_to_surface", s.mean_proxies_to_surface},
                 {"outside_bound", s.outside_bound},
-                {"skeleton_outside_bound", s.skeleton_outside_bound},
+                {"skeleton_outside", s.skeleton_outside},
                 {"union_volume", s.union_volume},
                 {"outside_volume", s.outside_volume},
                 {"radius_change", s.radius_change},

@@ -1,6 +1,7 @@
 // proxies.cpp: the engine-proxy step (proxies.h). Candidates from the skeleton, each with its
-// outside bound; inscribed: each shrunk until that bound is within the skeleton's own (the largest
-// over its balls and edges); the choice on the costs at surface points (inscribed: the distance
+// outside bound; inscribed: each shrunk until that bound is within how far the skeleton's own balls
+// and edges are measured to reach outside (so no proxy reaches farther out than the skeleton does);
+// the choice on the costs at surface points (inscribed: the distance
 // from the point to the primitive; conservative: how much the primitive must grow to hold the
 // point, plus how far it already reaches out); conservative: every surface cell given to the
 // chosen primitive that needs the least growth for it, and each primitive grown to hold all of
@@ -83,15 +84,15 @@ Status make_proxies(const Mesh& mesh, ShapeQueries shape, const Skeleton& skelet
         for (const auto& e : sk.edges)
             own.push_back({ProxyKind::capsule, sk.balls[e[0]], sk.balls[e[1]]});
     }
-    std::vector<double> bound(candidates.size()), own_bound(own.size());
+    std::vector<double> bound(candidates.size()), own_reach(own.size());
     if (!parallel_for(own.size(), threads, 16, monitor, "proxies", 0.0, 0.1, [&](size_t b, size_t e) {
-            for (size_t i = b; i < e; ++i) own_bound[i] = outside_bound(own[i], shape);
+            for (size_t i = b; i < e; ++i) own_reach[i] = outside_measured(own[i], shape);
         }) ||
         !parallel_for(candidates.size(), threads, 16, monitor, "proxies", 0.1, 0.3, [&](size_t b, size_t e) {
             for (size_t i = b; i < e; ++i) bound[i] = outside_bound(candidates[i], shape);
         }))
         return monitor.stop_status("proxies");
-    const double allowed = *std::max_element(own_bound.begin(), own_bound.end());
+    const double allowed = *std::max_element(own_reach.begin(), own_reach.end());
     double radius_change = 0;
     if (opt.mode == ProxyMode::inscribed)
         for (size_t c = 0; c < candidates.size(); ++c)
@@ -122,29 +123,31 @@ Status make_proxies(const Mesh& mesh, ShapeQueries shape, const Skeleton& skelet
     // ---- conservative: each cell to the primitive that needs the least growth for its three
     // corners; each primitive grown by the most its cells need (convex: it then holds them) ----
     if (opt.mode == ProxyMode::conservative) {
-        const size_t k = proxies.size(), npts = cells.points.size();
-        std::vector<double> sd(k * npts);
-        if (!parallel_for(npts, threads, 4096, monitor, "proxies", 0.7, 0.8, [&](size_t b, size_t e) {
-                for (size_t i = b; i < e; ++i)
-                    for (size_t j = 0; j < k; ++j) sd[i * k + j] = proxy_distance(proxies[j], cells.points[i]);
+        const size_t k = proxies.size(), ncells = cells.cells.size();
+        std::vector<uint32_t> owner(ncells);
+        std::vector<double> need(ncells);
+        if (!parallel_for(ncells, threads, 4096, monitor, "proxies", 0.7, 0.8, [&](size_t b, size_t e) {
+                for (size_t i = b; i < e; ++i) {
+                    const Tri& cell = cells.cells[i];
+                    double best_key = std::numeric_limits<double>::infinity();
+                    for (size_t j = 0; j < k; ++j) {
+                        double n = -std::numeric_limits<double>::infinity();
+                        for (uint32_t v : cell) n = std::max(n, proxy_distance(proxies[j], cells.points[v]));
+                        const double key = n + bound[chosen[j]];
+                        if (key < best_key) {
+                            best_key = key;
+                            owner[i] = uint32_t(j);
+                            need[i] = n;
+                        }
+                    }
+                }
             }))
             return monitor.stop_status("proxies");
         std::vector<double> grow(k, -std::numeric_limits<double>::infinity());
         std::vector<uint8_t> used(k, 0);
-        for (const Tri& cell : cells.cells) {
-            size_t best = 0;
-            double best_key = std::numeric_limits<double>::infinity(), best_need = 0;
-            for (size_t j = 0; j < k; ++j) {
-                const double need = std::max({sd[cell[0] * k + j], sd[cell[1] * k + j], sd[cell[2] * k + j]});
-                const double key = need + bound[chosen[j]];
-                if (key < best_key) {
-                    best = j;
-                    best_key = key;
-                    best_need = need;
-                }
-            }
-            grow[best] = std::max(grow[best], best_need);
-            used[best] = 1;
+        for (size_t i = 0; i < ncells; ++i) {
+            grow[owner[i]] = std::max(grow[owner[i]], need[i]);
+            used[owner[i]] = 1;
         }
         std::vector<Proxy> grown;
         for (size_t j = 0; j < k; ++j) {
@@ -158,7 +161,7 @@ Status make_proxies(const Mesh& mesh, ShapeQueries shape, const Skeleton& skelet
     out.proxies = proxies;
     st = proxy_stats(mesh, proxies, shape, opt, monitor, out.stats);
     if (!st.ok()) return st;
-    out.stats.skeleton_outside_bound = 100 * allowed / out.stats.diagonal;
+    out.stats.skeleton_outside = 100 * allowed / out.stats.diagonal;
     out.stats.radius_change = 100 * radius_change / out.stats.diagonal;
     out.stats.candidates = candidates.size();
     out.stats.surface_cells = cells.cells.size();

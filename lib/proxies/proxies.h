@@ -7,7 +7,7 @@
 //   proxy_candidates.cpp  the primitives to choose from: every ball, every edge, and capsules
 //                         between balls further apart along the skeleton's edges
 //   proxy_outside.cpp     how far each candidate may reach outside the shape (a proven bound from
-//                         the depth of its balls' centres), and the inscribed shrink
+//                         the depth of its balls' centres) and how far the skeleton does reach
 //   surface_cells.cpp     the surface cut into small triangles whose corners are the samples
 //   choose_proxies.cpp    the choice of at most K candidates at the least error (greedy, swaps)
 //   proxy_stats.cpp       the achieved errors and the volume outside the shape
@@ -53,9 +53,10 @@ struct ProxyStats {
     double hd_surface_to_proxies = 0, mean_surface_to_proxies = 0;
     double hd_proxies_to_surface = 0, mean_proxies_to_surface = 0;
     double hd_two_sided = 0;
-    // proven bound of how far any point of a primitive lies outside the shape, and the same bound
-    // for the skeleton's own balls and edges (inscribed: the first is at most the second)
-    double outside_bound = 0, skeleton_outside_bound = 0;  // percent of the diagonal
+    // proven bound of how far any point of a primitive lies outside the shape, and how far the
+    // skeleton's own balls and edges reach outside at least (measured at points of them; inscribed:
+    // the first is at most the second)
+    double outside_bound = 0, skeleton_outside = 0;  // percent of the diagonal
     // Monte Carlo over the primitives' bounding box: volume of their union, and of its part
     // outside the shape (winding-number inside test); internal units cubed
     double union_volume = 0, outside_volume = 0;
@@ -99,6 +100,11 @@ struct ShapeQueries {
 // p lies in a ball of the segment's interpolation, and a ball whose centre is at depth D sticks
 // out by at most r - D; that is sampled along the segment with its Lipschitz slack added.
 double outside_bound(const Proxy& p, const ShapeQueries& shape);
+
+// How far p reaches outside the shape at least: the largest distance outside the shape over points
+// of p (Fibonacci directions on spheres interpolated along its segment). The true excess is never
+// below it.
+double outside_measured(const Proxy& p, const ShapeQueries& shape);
 
 // p with both radii reduced by `by` (at least 0): every signed distance grows by `by` while the
 // radii stay positive, and the primitive shrinks within that offset otherwise.

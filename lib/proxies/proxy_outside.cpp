@@ -4,6 +4,8 @@
 // the surface, negative outside) reaches at most r - D outside, since B(c, D) is inside. The bound
 // r(t) - D(c(t)) changes with t by at most |c2 - c1| + |r2 - r1| per unit (D is 1-Lipschitz), so
 // its maximum over samples along the segment plus half a step of that slope bounds the primitive.
+// The other way round, any point of a primitive shows how far it reaches at least: points on the
+// interpolated spheres give a measured excess that the true one is never below.
 #include "proxies.h"
 
 #include "distance.h"
@@ -20,6 +22,10 @@ namespace {
 // Spacing of the depth samples along a capsule's segment (internal units: the model's longest
 // side is 1); the slack it adds is half of it plus half the radius change per step.
 constexpr double kSegmentStep = 0.004;
+// The measured excess: this many directions (a Fibonacci sphere) on interpolated spheres this far
+// apart along the segment.
+constexpr int kMeasureDirections = 64;
+constexpr double kMeasureStep = 0.02;
 
 }  // namespace
 
@@ -40,6 +46,25 @@ double outside_bound(const Proxy& p, const ShapeQueries& shape) {
     }
     const double slack = 0.5 * (length + std::abs(dr)) / double(steps);
     return std::max(0.0, worst + slack);
+}
+
+double outside_measured(const Proxy& p, const ShapeQueries& shape) {
+    const Vec3 e = p.b.center - p.a.center;
+    const double length = p.kind == ProxyKind::sphere ? 0 : e.norm(), dr = p.b.radius - p.a.radius;
+    const size_t steps = std::max<size_t>(1, size_t(std::ceil(length / kMeasureStep)));
+    const double golden = 3.14159265358979323846 * (3 - std::sqrt(5.0));
+    double worst = 0;
+    for (size_t i = 0; i <= (p.kind == ProxyKind::sphere ? 0 : steps); ++i) {
+        const double t = double(i) / double(steps);
+        const Vec3 c = p.a.center + t * e;
+        const double r = p.a.radius + t * dr;
+        for (int k = 0; k < kMeasureDirections; ++k) {
+            const double z = 1 - (2 * k + 1) / double(kMeasureDirections), rho = std::sqrt(1 - z * z);
+            const Vec3 x = c + r * Vec3(rho * std::cos(golden * k), rho * std::sin(golden * k), z);
+            if (!shape.winding->inside(x)) worst = std::max(worst, shape.distance->distance(x));
+        }
+    }
+    return worst;
 }
 
 }  // namespace ca

@@ -169,7 +169,7 @@ int main(void) {
     FIELD(ca_proxy_stats, mean_proxies_to_surface);
     FIELD(ca_proxy_stats, hd_two_sided);
     FIELD(ca_proxy_stats, outside_bound);
-    FIELD(ca_proxy_stats, skeleton_outside_bound);
+    FIELD(ca_proxy_stats, skeleton_outside);
     FIELD(ca_proxy_stats, union_volume);
     FIELD(ca_proxy_stats, outside_volume);
     FIELD(ca_proxy_stats, radius_change);

@@ -191,7 +191,7 @@ struct ProxyStats
     mean_proxies_to_surface::Float64
     hd_two_sided::Float64
     outside_bound::Float64
-    skeleton_outside_bound::Float64
+    skeleton_outside::Float64
     union_volume::Float64
     outside_volume::Float64
     radius_change::Float64

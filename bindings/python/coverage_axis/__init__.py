@@ -6,6 +6,7 @@ Dou et al., EG 2022) over its C ABI with ctypes. numpy arrays in and out when nu
     sk = ca.skeletonize(vertices, triangles, delta=0.02)   # vertices (n, 3), triangles (m, 3)
     sk.centers, sk.radii, sk.edges, sk.faces, sk.stats
     ca.evaluate(vertices, triangles, sk)                   # Hausdorff distances, % of the bbox diagonal
+    ca.proxies(cset, sk, mode="conservative", count=8)     # spheres and tapered capsules for engines
 
 Steps one by one: candidates() -> select() -> connect(); a Context gives threads, progress, log
 and a cancel() any thread may call. Errors raise CoverageAxisError (.status, .message)."""
@@ -17,11 +18,12 @@ from ._library import (CA_OK, CA_ERROR_INVALID_ARGUMENT, CA_ERROR_NULL_POINTER, 
                        CA_ERROR_INVALID_INPUT, CA_ERROR_DEGENERATE_INPUT, CA_ERROR_UNCOVERABLE, CA_ERROR_GEOMETRY,
                        CA_ERROR_SOLVER, CA_ERROR_CANCELLED, CA_ERROR_OUT_OF_MEMORY, CA_ERROR_BUFFER_TOO_SMALL,
                        CA_ERROR_INTERNAL, CA_ERROR_NO_CANDIDATES, CA_ERROR_TIME_LIMIT)
-from ._steps import CandidateSet, Selection, Skeleton, candidates, connect, defaults, evaluate, select, skeletonize
+from ._steps import (CandidateSet, Proxies, Selection, Skeleton, candidates, connect, defaults, evaluate, proxies,
+                     select, skeletonize)
 
 __all__ = ["HAVE_NUMPY", "Context", "ABI_VERSION", "STATUS_NAMES", "CoverageAxisError", "LibraryNotFoundError",
-           "load_library", "CandidateSet", "Selection", "Skeleton", "candidates", "connect", "defaults", "evaluate",
-           "select", "skeletonize", "version",
+           "load_library", "CandidateSet", "Proxies", "Selection", "Skeleton", "candidates", "connect", "defaults",
+           "evaluate", "proxies", "select", "skeletonize", "version",
            "CA_OK", "CA_ERROR_INVALID_ARGUMENT", "CA_ERROR_NULL_POINTER", "CA_ERROR_STRUCT_SIZE",
            "CA_ERROR_INVALID_INPUT", "CA_ERROR_DEGENERATE_INPUT", "CA_ERROR_UNCOVERABLE", "CA_ERROR_GEOMETRY",
            "CA_ERROR_SOLVER", "CA_ERROR_CANCELLED", "CA_ERROR_OUT_OF_MEMORY", "CA_ERROR_BUFFER_TOO_SMALL",

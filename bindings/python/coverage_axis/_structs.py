@@ -87,5 +87,5 @@ class _ProxyOptions(Structure):
 class _ProxyStats(Structure):
     _fields_ = [("struct_size", c_uint32)] + [(name, c_double) for name in (
         "hd_surface_to_proxies", "mean_surface_to_proxies", "hd_proxies_to_surface", "mean_proxies_to_surface",
-        "hd_two_sided", "outside_bound", "skeleton_outside_bound", "union_volume", "outside_volume", "radius_change",
+        "hd_two_sided", "outside_bound", "skeleton_outside", "union_volume", "outside_volume", "radius_change",
         "diagonal")] + [("candidates", c_uint64), ("surface_cells", c_uint64), ("time_s", c_double)]

@@ -306,7 +306,7 @@ ca_struct!(#[derive(Debug, Default)] ca_proxy_stats {
     mean_proxies_to_surface: f64,
     hd_two_sided: f64,
     outside_bound: f64,
-    skeleton_outside_bound: f64,
+    skeleton_outside: f64,
     union_volume: f64,
     outside_volume: f64,
     radius_change: f64,
