@@ -104,6 +104,15 @@ void print_summary(const cli::Json& j, const cli::RunOptions& o) {
     if (o.evaluate)
         std::printf("hausdorff   surface->skeleton %.3f %%, skeleton->surface %.3f %%, two-sided %.3f %% of the bbox diagonal\n",
                     j["hd_surface_to_recon"].get<double>(), j["hd_recon_to_surface"].get<double>(), j["hd_two_sided"].get<double>());
+    if (j.contains("proxies")) {
+        const cli::Json& p = j["proxies"];
+        std::printf("proxies     %llu %s (%s, at most %llu): two-sided HD %.3f %% of the bbox diagonal, %.3g of the union's "
+                    "volume outside the shape\n",
+                    p["count"].get<unsigned long long>(), p["shapes"].get<std::string>().c_str(),
+                    p["mode"].get<std::string>().c_str(), p["count_limit"].get<unsigned long long>(),
+                    p["hd_two_sided"].get<double>(),
+                    p["union_volume"].get<double>() > 0 ? p["outside_volume"].get<double>() / p["union_volume"].get<double>() : 0.0);
+    }
     const cli::Json& t = j["time_s"];
     std::printf("time        read %.3f s, candidates %.3f s, select %.3f s, connect %.3f s, total %.3f s\n", t["read"].get<double>(),
                 t["candidates"].get<double>(), t["select"].get<double>(), t["connect"].get<double>(), t["total"].get<double>());
