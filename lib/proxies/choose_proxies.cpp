@@ -33,13 +33,23 @@ struct Score {
     }
 };
 
-// The error of the points when each takes min(base[i], row[i]).
-Score score(const float* row, const std::vector<float>& base) {
+// The error of the points when each takes min(base[i], row[i]). It may stop early, with a partial
+// score, once the largest error passes `max_cut` or the sum passes `sum_cut`: the candidate is then
+// known to be worse than the one those cuts came from, and the full scores decide among the rest.
+Score score(const float* row, const std::vector<float>& base, double max_cut = DBL_MAX, double sum_cut = DBL_MAX) {
     Score s;
-    for (size_t i = 0; i < base.size(); ++i) {
-        const double e = std::max(0.0f, std::min(base[i], row[i]));
-        s.max = std::max(s.max, e);
-        s.sum += e * e;
+    constexpr size_t kBlock = 256;
+    for (size_t start = 0; start < base.size(); start += kBlock) {
+        const size_t stop = std::min(base.size(), start + kBlock);
+        float block_max = 0, block_sum = 0;
+        for (size_t i = start; i < stop; ++i) {
+            const float e = std::max(0.0f, std::min(base[i], row[i]));
+            block_max = std::max(block_max, e);
+            block_sum += e * e;
+        }
+        s.max = std::max(s.max, double(block_max));
+        s.sum += double(block_sum);
+        if (s.max > max_cut || s.sum > sum_cut) break;
     }
     return s;
 }
@@ -68,11 +78,16 @@ std::vector<uint32_t> choose_proxies(const std::vector<float>& cost, size_t cand
     std::vector<uint8_t> taken(candidates, 0);
     std::vector<Score> scores(candidates);
     const Monitor quiet;
-    // the best candidate for `base`: lowest score, lowest index among equals; SIZE_MAX if none
-    auto best_for = [&](const std::vector<float>& base, bool by_sum) {
+    // the best candidate for `base`: lowest score, lowest index among equals; SIZE_MAX if none.
+    // by_sum: the cut is the lowest full sum this worker has seen; else the current largest error.
+    auto best_for = [&](const std::vector<float>& base, bool by_sum, double max_cut) {
         parallel_for(candidates, threads, 64, quiet, "proxies", [&](size_t b, size_t e) {
-            for (size_t c = b; c < e; ++c)
-                if (!taken[c]) scores[c] = score(cost.data() + c * points, base);
+            double sum_cut = DBL_MAX;
+            for (size_t c = b; c < e; ++c) {
+                if (taken[c]) continue;
+                scores[c] = score(cost.data() + c * points, base, max_cut, by_sum ? sum_cut : DBL_MAX);
+                if (scores[c].sum <= sum_cut && scores[c].max <= max_cut) sum_cut = scores[c].sum;
+            }
         });
         size_t best = SIZE_MAX;
         for (size_t c = 0; c < candidates; ++c) {
@@ -87,7 +102,7 @@ std::vector<uint32_t> choose_proxies(const std::vector<float>& cost, size_t cand
     std::vector<float> base(points, FLT_MAX);
     Score current{DBL_MAX, DBL_MAX};
     while (chosen.size() < count && current.max > goal) {
-        const size_t c = best_for(base, true);
+        const size_t c = best_for(base, true, DBL_MAX);
         if (c == SIZE_MAX || !(scores[c].sum < current.sum || current.sum == DBL_MAX)) break;
         chosen.push_back(uint32_t(c));
         taken[c] = 1;
@@ -101,7 +116,7 @@ std::vector<uint32_t> choose_proxies(const std::vector<float>& cost, size_t cand
         bool changed = false;
         for (size_t k = 0; k < chosen.size(); ++k) {
             const std::vector<float> without = best_without(cost, points, chosen, k);
-            const size_t c = best_for(without, false);
+            const size_t c = best_for(without, false, current.max + kMaxGain);
             if (c == SIZE_MAX || !scores[c].better_than(current)) continue;
             taken[chosen[k]] = 0;
             chosen[k] = uint32_t(c);

@@ -93,6 +93,7 @@ Status make_proxies(const Mesh& mesh, ShapeQueries shape, const Skeleton& skelet
         }))
         return monitor.stop_status("proxies");
     const double allowed = *std::max_element(own_reach.begin(), own_reach.end());
+    const double t_bounds = seconds_since(t0);
     double radius_change = 0;
     if (opt.mode == ProxyMode::inscribed)
         for (size_t c = 0; c < candidates.size(); ++c)
@@ -115,7 +116,9 @@ Status make_proxies(const Mesh& mesh, ShapeQueries shape, const Skeleton& skelet
                 }
         }))
         return monitor.stop_status("proxies");
+    const double t_costs = seconds_since(t0);
     const std::vector<uint32_t> chosen = choose_proxies(cost, nc, np, opt.count, kEnoughTolerance, threads);
+    const double t_choice = seconds_since(t0);
     if (!monitor.report("proxies", 0.7)) return monitor.stop_status("proxies");
     std::vector<Proxy> proxies;
     for (uint32_t c : chosen) proxies.push_back(candidates[c]);
@@ -159,6 +162,7 @@ Status make_proxies(const Mesh& mesh, ShapeQueries shape, const Skeleton& skelet
     }
 
     out.proxies = proxies;
+    const double t_grown = seconds_since(t0);
     st = proxy_stats(mesh, proxies, shape, opt, monitor, out.stats);
     if (!st.ok()) return st;
     out.stats.skeleton_outside = 100 * allowed / out.stats.diagonal;
@@ -166,6 +170,10 @@ Status make_proxies(const Mesh& mesh, ShapeQueries shape, const Skeleton& skelet
     out.stats.candidates = candidates.size();
     out.stats.surface_cells = cells.cells.size();
     out.stats.time_s = seconds_since(t0);
+    monitor.note(0, "proxies: " + std::to_string(candidates.size()) + " candidates, " + std::to_string(cells.cells.size()) +
+                        " cells; seconds: bounds " + std::to_string(t_bounds) + ", costs " + std::to_string(t_costs - t_bounds) +
+                        ", choice " + std::to_string(t_choice - t_costs) + ", growth " + std::to_string(t_grown - t_choice) +
+                        ", stats " + std::to_string(out.stats.time_s - t_grown));
     monitor.report("proxies", 1.0);
     return Status::success();
 }

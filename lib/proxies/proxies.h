@@ -33,8 +33,8 @@ struct ProxyOptions {
     ProxyMode mode = ProxyMode::inscribed;
     uint32_t count = 16;               // K >= 1: at most this many primitives
     uint32_t surface_samples = 20000;  // about this many corners of the surface cells (surface_cells.cpp)
-    uint32_t evaluate_samples = 30000; // the stats: surface and primitive-boundary samples each
-    uint32_t volume_samples = 200000;  // the stats: Monte Carlo points for the volume outside the shape
+    uint32_t evaluate_samples = 20000; // the stats: surface and primitive-boundary samples each
+    uint32_t volume_samples = 100000;  // the stats: Monte Carlo points for the volume outside the shape
     uint64_t seed = 1;
     int32_t threads = 0;               // 0 = all cores
 };
@@ -98,7 +98,7 @@ struct ShapeQueries {
 
 // A bound of the farthest any point of p lies outside the shape (0: all inside): every point of
 // p lies in a ball of the segment's interpolation, and a ball whose centre is at depth D sticks
-// out by at most r - D; that is sampled along the segment with its Lipschitz slack added.
+// out by at most r - D; that is bounded between samples along the segment by its Lipschitz slope.
 double outside_bound(const Proxy& p, const ShapeQueries& shape);
 
 // How far p reaches outside the shape at least: the largest distance outside the shape over points

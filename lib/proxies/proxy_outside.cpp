@@ -3,7 +3,8 @@
 // (the convex hull of two balls is that union). A ball whose centre lies at depth D (distance to
 // the surface, negative outside) reaches at most r - D outside, since B(c, D) is inside. The bound
 // r(t) - D(c(t)) changes with t by at most |c2 - c1| + |r2 - r1| per unit (D is 1-Lipschitz), so
-// its maximum over samples along the segment plus half a step of that slope bounds the primitive.
+// between two samples it is at most their mean plus half the step times that slope; the segment is
+// sampled coarsely and halved where that could still exceed 0 and the largest sample.
 // The other way round, any point of a primitive shows how far it reaches at least: points on the
 // interpolated spheres give a measured excess that the true one is never below.
 #include "proxies.h"
@@ -14,13 +15,15 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace ca {
 
 namespace {
 
-// Spacing of the depth samples along a capsule's segment (internal units: the model's longest
-// side is 1); the slack it adds is half of it plus half the radius change per step.
+// Spacing of the depth samples along a capsule's segment, first and finest (internal units: the
+// model's longest side is 1); the finest adds a slack of half a step of the bound's slope.
+constexpr double kCoarseStep = 0.05;
 constexpr double kSegmentStep = 0.004;
 // The measured excess: this many directions (a Fibonacci sphere) on interpolated spheres this far
 // apart along the segment.
@@ -38,14 +41,42 @@ double outside_bound(const Proxy& p, const ShapeQueries& shape) {
     if (p.kind == ProxyKind::sphere) return std::max(0.0, p.a.radius - shape.depth(p.a.center));
     const Vec3 e = p.b.center - p.a.center;
     const double length = e.norm(), dr = p.b.radius - p.a.radius;
-    const size_t steps = std::max<size_t>(1, size_t(std::ceil(length / kSegmentStep)));
-    double worst = -std::numeric_limits<double>::infinity();
-    for (size_t i = 0; i <= steps; ++i) {
-        const double t = double(i) / double(steps);
-        worst = std::max(worst, p.a.radius + t * dr - shape.depth(p.a.center + t * e));
+    auto g = [&](double t) { return p.a.radius + t * dr - shape.depth(p.a.center + t * e); };
+    // Over [a, b] the bound is at most (g(a) + g(b)) / 2 + slope (b - a) / 2. Intervals are halved,
+    // coarse first, until that is at most 0 (the primitive is inside there), at most the largest
+    // sampled value plus the slack of the finest step, or the interval is the finest step.
+    const double slope = length + std::abs(dr);
+    const size_t coarse = std::max<size_t>(1, size_t(std::ceil(length / kCoarseStep)));
+    std::vector<double> ts(coarse + 1), gs(coarse + 1);
+    double best = -std::numeric_limits<double>::infinity();
+    for (size_t i = 0; i <= coarse; ++i) {
+        ts[i] = double(i) / double(coarse);
+        gs[i] = g(ts[i]);
+        best = std::max(best, gs[i]);
     }
-    const double slack = 0.5 * (length + std::abs(dr)) / double(steps);
-    return std::max(0.0, worst + slack);
+    const double finest_slack = 0.5 * slope * kSegmentStep / std::max(length, kSegmentStep);
+    struct Interval { double a, b, ga, gb; };
+    std::vector<Interval> stack;
+    for (size_t i = coarse; i-- > 0;) stack.push_back({ts[i], ts[i + 1], gs[i], gs[i + 1]});
+    double bound = std::max(0.0, best);
+    while (!stack.empty()) {
+        const Interval iv = stack.back();
+        stack.pop_back();
+        const double upper = 0.5 * (iv.ga + iv.gb) + 0.5 * slope * (iv.b - iv.a);
+        if (upper <= std::max(0.0, best + finest_slack)) {
+            bound = std::max(bound, upper);
+            continue;
+        }
+        if ((iv.b - iv.a) * length <= kSegmentStep) {
+            bound = std::max(bound, upper);
+            continue;
+        }
+        const double m = 0.5 * (iv.a + iv.b), gm = g(m);
+        best = std::max(best, gm);
+        stack.push_back({m, iv.b, gm, iv.gb});
+        stack.push_back({iv.a, m, iv.ga, gm});
+    }
+    return std::max(0.0, bound);
 }
 
 double outside_measured(const Proxy& p, const ShapeQueries& shape) {
