@@ -2,9 +2,12 @@
 // candidate; the error is the largest such cost over the points (clamped at 0), then the sum of
 // their squares. Greedy on the sum of squares (the largest error alone seldom moves when one
 // candidate is added), then swaps of one chosen candidate for another while (largest, sum) drops,
-// then removal of the candidates the error can do without. Adding stops, and removal is allowed,
-// once the largest error is within `tolerance` of what all candidates together reach: more
-// primitives would buy nothing. Every score is one candidate's own sum in a fixed order, so the
+// then removal of the candidates the error can do without. Adding stops once the largest error is
+// within `tolerance` of what all candidates together reach, or when the best candidate lowers
+// neither the largest error nor the sum by `min_gain` of it; a chosen candidate is removed when
+// the largest error stays within that reach without it, or stays as it was while the sum grows by
+// less than `min_gain` (over all removals together). More primitives would buy nothing worth an
+// engine's time. Every score is one candidate's own sum in a fixed order, so the
 // result does not depend on the thread count; ties go to the lower index.
 #include "proxies.h"
 
@@ -69,12 +72,13 @@ std::vector<float> best_without(const std::vector<float>& cost, size_t points, c
 }  // namespace
 
 std::vector<uint32_t> choose_proxies(const std::vector<float>& cost, size_t candidates, size_t points,
-                                     size_t count, double tolerance, int threads) {
+                                     size_t count, double tolerance, double min_gain, int threads) {
     std::vector<uint32_t> chosen;
     if (candidates == 0 || points == 0 || count == 0) return chosen;
     std::vector<uint32_t> all(candidates);
     for (size_t c = 0; c < candidates; ++c) all[c] = uint32_t(c);
-    const double goal = score(cost.data(), best_without(cost, points, all, SIZE_MAX)).max + tolerance;
+    const std::vector<float> floor = best_without(cost, points, all, SIZE_MAX);
+    const double goal = score(floor.data(), floor).max + tolerance;
     std::vector<uint8_t> taken(candidates, 0);
     std::vector<Score> scores(candidates);
     const Monitor quiet;
@@ -103,7 +107,10 @@ std::vector<uint32_t> choose_proxies(const std::vector<float>& cost, size_t cand
     Score current{DBL_MAX, DBL_MAX};
     while (chosen.size() < count && current.max > goal) {
         const size_t c = best_for(base, true, DBL_MAX);
-        if (c == SIZE_MAX || !(scores[c].sum < current.sum || current.sum == DBL_MAX)) break;
+        if (c == SIZE_MAX) break;
+        // (the lowest sum is never cut short: its score is whole)
+        const Score& s = scores[c];
+        if (!chosen.empty() && !(s.sum < current.sum * (1 - min_gain) || s.max < current.max * (1 - min_gain))) break;
         chosen.push_back(uint32_t(c));
         taken[c] = 1;
         const float* row = cost.data() + c * points;
@@ -128,13 +135,14 @@ std::vector<uint32_t> choose_proxies(const std::vector<float>& cost, size_t cand
     }
 
     // ---- removal of what the error does without ----
+    const Score full = current;
     while (chosen.size() > 1) {
         size_t drop = SIZE_MAX;
         Score drop_score;
         for (size_t k = 0; k < chosen.size(); ++k) {
             const std::vector<float> without = best_without(cost, points, chosen, k);
             const Score s = score(without.data(), without);
-            if (s.max > goal) continue;
+            if (s.max > goal && (s.max > full.max + kMaxGain || s.sum > full.sum * (1 + min_gain))) continue;
             if (drop == SIZE_MAX || s.better_than(drop_score)) {
                 drop = k;
                 drop_score = s;

@@ -25,9 +25,12 @@ namespace {
 
 // Surface points the choice is scored on (a seeded subset of the cells' corners).
 constexpr size_t kChoicePoints = 4000;
-// The choice stops adding primitives once its error is within this of what all candidates
-// together reach (internal units: half a percent of the model's longest side).
+// The choice stops adding primitives once its largest error is within this of what all candidates
+// together reach (internal units: half a percent of the model's longest side), or when the next
+// would lower neither its largest error nor its sum of squared errors by this fraction: more
+// primitives would buy nothing worth an engine's time.
 constexpr double kEnoughTolerance = 0.005;
+constexpr double kMinGain = 0.01;
 // Growth added to every conservative primitive beyond its cells' need: signed distances are
 // computed to about 1e-16 of the model's size.
 constexpr double kContainMargin = 1e-9;
@@ -117,7 +120,7 @@ Status make_proxies(const Mesh& mesh, ShapeQueries shape, const Skeleton& skelet
         }))
         return monitor.stop_status("proxies");
     const double t_costs = seconds_since(t0);
-    const std::vector<uint32_t> chosen = choose_proxies(cost, nc, np, opt.count, kEnoughTolerance, threads);
+    const std::vector<uint32_t> chosen = choose_proxies(cost, nc, np, opt.count, kEnoughTolerance, kMinGain, threads);
     const double t_choice = seconds_since(t0);
     if (!monitor.report("proxies", 0.7)) return monitor.stop_status("proxies");
     std::vector<Proxy> proxies;

@@ -112,11 +112,12 @@ Proxy shrunk(const Proxy& p, double by);
 
 // The choice (choose_proxies.cpp): cost[c * points + i] is candidate c's error at point i.
 // Minimises the largest error over the points where each point takes its best chosen candidate
-// (then the sum of squares), with at most `count` candidates; stops adding, and removes, where
-// the largest error stays within `tolerance` of what all candidates together reach.
+// (then the sum of squares), with at most `count` candidates. No candidate is added once the
+// largest error is within `tolerance` of what all candidates together reach, nor one that lowers
+// neither by `min_gain` (a fraction); the chosen ones the error does without are removed.
 // Deterministic: ties go to the lower index.
 std::vector<uint32_t> choose_proxies(const std::vector<float>& cost, size_t candidates, size_t points,
-                                     size_t count, double tolerance, int threads);
+                                     size_t count, double tolerance, double min_gain, int threads);
 
 // The stats (proxy_stats.cpp) of `proxies` against the mesh.
 Status proxy_stats(const Mesh& mesh, const std::vector<Proxy>& proxies, const ShapeQueries& shape,
