@@ -31,6 +31,9 @@ constexpr size_t kChoicePoints = 4000;
 // primitives would buy nothing worth an engine's time.
 constexpr double kEnoughTolerance = 0.005;
 constexpr double kMinGain = 0.01;
+// Conservative: how finely the choice needs to know how far a candidate reaches outside (internal
+// units), the price it pays for it.
+constexpr double kPriceResolution = 0.005;
 // Growth added to every conservative primitive beyond its cells' need: signed distances are
 // computed to about 1e-16 of the model's size.
 constexpr double kContainMargin = 1e-9;
@@ -90,12 +93,16 @@ Status make_proxies(const Mesh& mesh, ShapeQueries shape, const Skeleton& skelet
     std::vector<double> bound(candidates.size()), own_reach(own.size());
     if (!parallel_for(own.size(), threads, 16, monitor, "proxies", 0.0, 0.1, [&](size_t b, size_t e) {
             for (size_t i = b; i < e; ++i) own_reach[i] = outside_measured(own[i], shape);
-        }) ||
-        !parallel_for(candidates.size(), threads, 16, monitor, "proxies", 0.1, 0.3, [&](size_t b, size_t e) {
-            for (size_t i = b; i < e; ++i) bound[i] = outside_bound(candidates[i], shape);
         }))
         return monitor.stop_status("proxies");
     const double allowed = *std::max_element(own_reach.begin(), own_reach.end());
+    // inscribed: a bound within the skeleton's reach needs no shrink, so no finer answer;
+    // conservative: the bound is the choice's price of reaching outside, kPriceResolution is fine
+    const double enough = opt.mode == ProxyMode::inscribed ? allowed : kPriceResolution;
+    if (!parallel_for(candidates.size(), threads, 16, monitor, "proxies", 0.1, 0.3, [&](size_t b, size_t e) {
+            for (size_t i = b; i < e; ++i) bound[i] = outside_bound(candidates[i], shape, enough);
+        }))
+        return monitor.stop_status("proxies");
     const double t_bounds = seconds_since(t0);
     double radius_change = 0;
     if (opt.mode == ProxyMode::inscribed)

@@ -99,11 +99,12 @@ struct ShapeQueries {
 // A bound of the farthest any point of p lies outside the shape (0: all inside): every point of
 // p lies in a ball of the segment's interpolation, and a ball whose centre is at depth D sticks
 // out by at most r - D; that is bounded between samples along the segment by its Lipschitz slope.
-double outside_bound(const Proxy& p, const ShapeQueries& shape);
+// A bound at most `enough` is not refined further (the answer is then some value <= enough).
+double outside_bound(const Proxy& p, const ShapeQueries& shape, double enough = 0);
 
 // How far p reaches outside the shape at least: the largest distance outside the shape over points
-// of p (Fibonacci directions on spheres interpolated along its segment). The true excess is never
-// below it.
+// of p (Fibonacci directions on a sphere's ball; on a capsule, on the spheres interpolated strictly
+// between its balls, which are measured as spheres of their own). The true excess is never below it.
 double outside_measured(const Proxy& p, const ShapeQueries& shape);
 
 // p with both radii reduced by `by` (at least 0): every signed distance grows by `by` while the

@@ -12,9 +12,13 @@ namespace ca {
 
 namespace {
 
-// Balls reached along edges from each ball, at least two hops away, for chain capsules. The bound
-// keeps the candidates (and the choice's cost table) linear in the skeleton's size.
+// Balls reached along edges from each ball, at least two hops away, for chain capsules: at most
+// this many per ball, fewer on large skeletons so that the chain capsules number about
+// kChainCandidates (each pair is found from both ends), at least kMinChainPartners per ball. The
+// bound keeps the candidates (and the choice's cost table) near linear in the skeleton's size.
 constexpr size_t kChainPartnersPerBall = 24;
+constexpr size_t kMinChainPartners = 4;
+constexpr size_t kChainCandidates = 1500;
 constexpr size_t kMaxChainHops = 48;
 
 }  // namespace
@@ -47,14 +51,16 @@ std::vector<Proxy> proxy_candidates(const Skeleton& skeleton_in, ProxyShapes sha
     for (auto& a : adjacent) std::sort(a.begin(), a.end());
     std::set<std::pair<uint32_t, uint32_t>> pairs;
     for (const auto& e : sk.edges) pairs.insert({e[0], e[1]});
-    // breadth-first from each ball: the first kChainPartnersPerBall balls two or more hops away
+    // breadth-first from each ball: the first `partners` balls two or more hops away
+    const size_t partners_per_ball =
+        std::clamp(2 * kChainCandidates / std::max<size_t>(n, 1), kMinChainPartners, kChainPartnersPerBall);
     std::vector<uint32_t> hops(n, UINT32_MAX);
     std::vector<uint32_t> queue;
     for (uint32_t s = 0; s < n; ++s) {
         queue.assign(1, s);
         hops[s] = 0;
         size_t partners = 0;
-        for (size_t head = 0; head < queue.size() && partners < kChainPartnersPerBall; ++head) {
+        for (size_t head = 0; head < queue.size() && partners < partners_per_ball; ++head) {
             const uint32_t v = queue[head];
             if (hops[v] >= 2) {
                 pairs.insert({std::min(s, v), std::max(s, v)});

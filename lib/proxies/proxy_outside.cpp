@@ -37,14 +37,15 @@ double ShapeQueries::depth(const Vec3& x) const {
     return winding->inside(x) ? d : -d;
 }
 
-double outside_bound(const Proxy& p, const ShapeQueries& shape) {
+double outside_bound(const Proxy& p, const ShapeQueries& shape, double enough) {
     if (p.kind == ProxyKind::sphere) return std::max(0.0, p.a.radius - shape.depth(p.a.center));
     const Vec3 e = p.b.center - p.a.center;
     const double length = e.norm(), dr = p.b.radius - p.a.radius;
     auto g = [&](double t) { return p.a.radius + t * dr - shape.depth(p.a.center + t * e); };
     // Over [a, b] the bound is at most (g(a) + g(b)) / 2 + slope (b - a) / 2. Intervals are halved,
-    // coarse first, until that is at most 0 (the primitive is inside there), at most the largest
-    // sampled value plus the slack of the finest step, or the interval is the finest step.
+    // coarse first, until that is at most `enough` (at least 0: the caller needs no finer answer
+    // there), at most the largest sampled value plus the slack of the finest step, or the interval
+    // is the finest step.
     const double slope = length + std::abs(dr);
     const size_t coarse = std::max<size_t>(1, size_t(std::ceil(length / kCoarseStep)));
     std::vector<double> ts(coarse + 1), gs(coarse + 1);
@@ -63,7 +64,7 @@ double outside_bound(const Proxy& p, const ShapeQueries& shape) {
         const Interval iv = stack.back();
         stack.pop_back();
         const double upper = 0.5 * (iv.ga + iv.gb) + 0.5 * slope * (iv.b - iv.a);
-        if (upper <= std::max(0.0, best + finest_slack)) {
+        if (upper <= std::max({0.0, enough, best + finest_slack})) {
             bound = std::max(bound, upper);
             continue;
         }
@@ -85,7 +86,9 @@ double outside_measured(const Proxy& p, const ShapeQueries& shape) {
     const size_t steps = std::max<size_t>(1, size_t(std::ceil(length / kMeasureStep)));
     const double golden = 3.14159265358979323846 * (3 - std::sqrt(5.0));
     double worst = 0;
-    for (size_t i = 0; i <= (p.kind == ProxyKind::sphere ? 0 : steps); ++i) {
+    // a sphere: its one ball; a capsule: the spheres strictly between its balls
+    const size_t first = p.kind == ProxyKind::sphere ? 0 : 1, last = p.kind == ProxyKind::sphere ? 0 : steps - 1;
+    for (size_t i = first; i <= last && (p.kind == ProxyKind::sphere || steps > 1); ++i) {
         const double t = double(i) / double(steps);
         const Vec3 c = p.a.center + t * e;
         const double r = p.a.radius + t * dr;
