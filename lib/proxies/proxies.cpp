@@ -1,17 +1,18 @@
-// proxies.cpp: the engine-proxy step (proxies.h). Candidates from the skeleton, each with its
-// outside bound; inscribed: each shrunk until that bound is within how far the skeleton's own balls
-// and edges are measured to reach outside (so no proxy reaches farther out than the skeleton does);
-// the choice on the costs at surface points (inscribed: the distance
-// from the point to the primitive; conservative: how much the primitive must grow to hold the
-// point, plus how far it already reaches out); conservative: every surface cell given to the
-// chosen primitive that needs the least growth for it, and each primitive grown to hold all of
-// its cells (docs/proxies.md); then the stats.
+// proxies.cpp: the engine-proxy step (proxies.h, docs/proxies.md), in order:
+//  - the candidates from the skeleton, each with its outside bound, and how far the skeleton's own
+//    balls and edges are measured to reach outside; inscribed: every candidate whose bound exceeds
+//    that is shrunk by the excess, so no proxy reaches farther out than the skeleton does;
+//  - the choice on costs at surface points: inscribed, the point's distance to the primitive;
+//    conservative, how far the primitive must grow to hold the point plus how far it reaches out;
+//  - conservative: every surface cell goes to the chosen primitive that needs the least growth for
+//    its corners, and each primitive grows to hold all of its cells;
+//  - the stats.
 #include "proxies.h"
 
 #include "distance.h"
 #include "parallel.h"
-#include "timing.h"
 #include "sampling.h"
+#include "timing.h"
 #include "winding.h"
 
 #include <algorithm>
