@@ -4,9 +4,9 @@
 // candidate is added), then swaps of one chosen candidate for another while (largest, sum) drops,
 // then removal of the candidates the error can do without. Adding stops once the largest error is
 // within `tolerance` of what all candidates together reach, or when the best candidate lowers
-// neither the largest error nor the sum by `min_gain` of it; a chosen candidate is removed when
-// the largest error stays within that reach without it, or stays as it was while the sum grows by
-// less than `min_gain` (over all removals together). More primitives would buy nothing worth an
+// neither the largest error nor the sum by `min_gain` of it; a chosen candidate is removed when,
+// without it, the largest error stays within that reach or as it was and the sum grows by less
+// than `min_gain` (over all removals together). More primitives would buy nothing worth an
 // engine's time. Every score is one candidate's own sum in a fixed order, so the
 // result does not depend on the thread count; ties go to the lower index.
 #include "proxies.h"
@@ -142,7 +142,7 @@ std::vector<uint32_t> choose_proxies(const std::vector<float>& cost, size_t cand
         for (size_t k = 0; k < chosen.size(); ++k) {
             const std::vector<float> without = best_without(cost, points, chosen, k);
             const Score s = score(without.data(), without);
-            if (s.max > goal && (s.max > full.max + kMaxGain || s.sum > full.sum * (1 + min_gain))) continue;
+            if (s.max > std::max(goal, full.max + kMaxGain) || s.sum > full.sum * (1 + min_gain)) continue;
             if (drop == SIZE_MAX || s.better_than(drop_score)) {
                 drop = k;
                 drop_score = s;

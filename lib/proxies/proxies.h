@@ -115,7 +115,8 @@ Proxy shrunk(const Proxy& p, double by);
 // Minimises the largest error over the points where each point takes its best chosen candidate
 // (then the sum of squares), with at most `count` candidates. No candidate is added once the
 // largest error is within `tolerance` of what all candidates together reach, nor one that lowers
-// neither by `min_gain` (a fraction); the chosen ones the error does without are removed.
+// neither by `min_gain` (a fraction); a chosen one is removed when the largest error stays within
+// that reach (or as it was) and the sum grows by less than `min_gain` without it.
 // Deterministic: ties go to the lower index.
 std::vector<uint32_t> choose_proxies(const std::vector<float>& cost, size_t candidates, size_t points,
                                      size_t count, double tolerance, double min_gain, int threads);
