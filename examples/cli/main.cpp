@@ -106,10 +106,10 @@ void print_summary(const cli::Json& j, const cli::RunOptions& o) {
                     j["hd_surface_to_recon"].get<double>(), j["hd_recon_to_surface"].get<double>(), j["hd_two_sided"].get<double>());
     if (j.contains("proxies")) {
         const cli::Json& p = j["proxies"];
-        std::printf("proxies     %llu %s (%s, at most %llu): two-sided HD %.3f %% of the bbox diagonal, %.3g of the union's "
-                    "volume outside the shape\n",
-                    p["count"].get<unsigned long long>(), p["shapes"].get<std::string>().c_str(),
-                    p["mode"].get<std::string>().c_str(), p["count_limit"].get<unsigned long long>(),
+        std::printf("proxies     %llu of at most %llu (%s, %s): two-sided HD %.3f %% of the bbox diagonal, %.3g of the "
+                    "union's volume outside the shape\n",
+                    p["count"].get<unsigned long long>(), p["count_limit"].get<unsigned long long>(),
+                    p["shapes"].get<std::string>().c_str(), p["mode"].get<std::string>().c_str(),
                     p["hd_two_sided"].get<double>(),
                     p["union_volume"].get<double>() > 0 ? p["outside_volume"].get<double>() / p["union_volume"].get<double>() : 0.0);
     }
