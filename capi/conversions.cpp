@@ -116,6 +116,28 @@ static_assert(int32_t(ca::NormalSource::none) == CA_NORMALS_NONE && int32_t(ca::
 
 // ---- options: C -> core ----
 
+// The skeleton view's arrays in the caller's units (pointers and counts checked; values are
+// checked by the core's step).
+ca::Status read_skeleton(const ca_skeleton_view* in, ca::Skeleton& out) {
+    ca_skeleton_view v;
+    ca::Status st = read_input(in, v);
+    if (!st.ok()) return st;
+    if (v.vertex_count && !v.centers) return null_pointer("skeleton->centers");
+    if (v.vertex_count && !v.radii) return null_pointer("skeleton->radii");
+    if (v.edge_count && !v.edges) return null_pointer("skeleton->edges");
+    if (v.face_count && !v.faces) return null_pointer("skeleton->faces");
+    if (v.vertex_count > UINT32_MAX || v.edge_count > UINT32_MAX || v.face_count > UINT32_MAX)
+        return ca::fail(ca::Code::invalid_argument, "skeleton: more than 2^32 - 1 vertices, edges or faces");
+    out.balls.resize(v.vertex_count);
+    for (size_t i = 0; i < v.vertex_count; ++i)
+        out.balls[i] = {ca::Vec3(v.centers[3 * i], v.centers[3 * i + 1], v.centers[3 * i + 2]), v.radii[i]};
+    out.edges.resize(v.edge_count);
+    for (size_t e = 0; e < v.edge_count; ++e) out.edges[e] = {v.edges[2 * e], v.edges[2 * e + 1]};
+    out.faces.resize(v.face_count);
+    for (size_t f = 0; f < v.face_count; ++f) out.faces[f] = {v.faces[3 * f], v.faces[3 * f + 1], v.faces[3 * f + 2]};
+    return ca::Status::success();
+}
+
 ca::CandidateOptions to_core(const ca_candidate_options& o, int32_t threads) {
     ca::CandidateOptions c;
     c.generator = static_cast<ca::Generator>(o.generator);
@@ -169,26 +191,17 @@ ca::EvaluateOptions to_core(const ca_evaluate_options& o, int32_t threads) {
     return e;
 }
 
-// The skeleton view's arrays in the caller's units (pointers and counts checked; values are
-// checked by the core's step).
-ca::Status read_skeleton(const ca_skeleton_view* in, ca::Skeleton& out) {
-    ca_skeleton_view v;
-    ca::Status st = read_input(in, v);
-    if (!st.ok()) return st;
-    if (v.vertex_count && !v.centers) return null_pointer("skeleton->centers");
-    if (v.vertex_count && !v.radii) return null_pointer("skeleton->radii");
-    if (v.edge_count && !v.edges) return null_pointer("skeleton->edges");
-    if (v.face_count && !v.faces) return null_pointer("skeleton->faces");
-    if (v.vertex_count > UINT32_MAX || v.edge_count > UINT32_MAX || v.face_count > UINT32_MAX)
-        return ca::fail(ca::Code::invalid_argument, "skeleton: more than 2^32 - 1 vertices, edges or faces");
-    out.balls.resize(v.vertex_count);
-    for (size_t i = 0; i < v.vertex_count; ++i)
-        out.balls[i] = {ca::Vec3(v.centers[3 * i], v.centers[3 * i + 1], v.centers[3 * i + 2]), v.radii[i]};
-    out.edges.resize(v.edge_count);
-    for (size_t e = 0; e < v.edge_count; ++e) out.edges[e] = {v.edges[2 * e], v.edges[2 * e + 1]};
-    out.faces.resize(v.face_count);
-    for (size_t f = 0; f < v.face_count; ++f) out.faces[f] = {v.faces[3 * f], v.faces[3 * f + 1], v.faces[3 * f + 2]};
-    return ca::Status::success();
+ca::ProxyOptions to_core(const ca_proxy_options& o, int32_t threads) {
+    ca::ProxyOptions p;
+    p.shapes = static_cast<ca::ProxyShapes>(o.shapes);
+    p.mode = static_cast<ca::ProxyMode>(o.mode);
+    p.count = o.count;
+    p.surface_samples = o.surface_samples;
+    p.evaluate_samples = o.evaluate_samples;
+    p.volume_samples = o.volume_samples;
+    p.seed = o.seed;
+    p.threads = threads;
+    return p;
 }
 
 // ---- options: core -> C (the defaults) ----
@@ -239,6 +252,18 @@ ca_evaluate_options to_c(const ca::EvaluateOptions& e) {
     o.surface_samples = e.surface_samples;
     o.envelope_samples = e.envelope_samples;
     o.seed = e.seed;
+    return o;
+}
+
+ca_proxy_options to_c(const ca::ProxyOptions& p) {
+    ca_proxy_options o = zeroed<ca_proxy_options>();
+    o.shapes = static_cast<int32_t>(p.shapes);
+    o.mode = static_cast<int32_t>(p.mode);
+    o.count = p.count;
+    o.surface_samples = p.surface_samples;
+    o.evaluate_samples = p.evaluate_samples;
+    o.volume_samples = p.volume_samples;
+    o.seed = p.seed;
     return o;
 }
 

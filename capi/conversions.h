@@ -74,9 +74,11 @@ ca::CandidateOptions to_core(const ca_candidate_options& o, int32_t threads);
 ca::SelectRequest to_core(const ca_select_options& o, int32_t threads);
 ca::ConnectRequest to_core(const ca_connect_options& o, int32_t threads);
 ca::EvaluateOptions to_core(const ca_evaluate_options& o, int32_t threads);
+ca::ProxyOptions to_core(const ca_proxy_options& o, int32_t threads);
 ca_candidate_options to_c(const ca::CandidateOptions& o);
 ca_select_options to_c(const ca::SelectRequest& o);
 ca_connect_options to_c(const ca::ConnectRequest& o);
 ca_evaluate_options to_c(const ca::EvaluateOptions& o);
+ca_proxy_options to_c(const ca::ProxyOptions& o);
 
 }  // namespace capi

@@ -19,6 +19,7 @@ template <> ca_candidate_options defaults<ca_candidate_options>() { return to_c(
 template <> ca_select_options defaults<ca_select_options>() { return to_c(ca::SelectRequest{}); }
 template <> ca_connect_options defaults<ca_connect_options>() { return to_c(ca::ConnectRequest{}); }
 template <> ca_evaluate_options defaults<ca_evaluate_options>() { return to_c(ca::EvaluateOptions{}); }
+template <> ca_proxy_options defaults<ca_proxy_options>() { return to_c(ca::ProxyOptions{}); }
 
 namespace {
 // Writes the defaults into the caller's first struct_size bytes (a published size only).
@@ -45,4 +46,5 @@ ca_status ca_skeleton_view_defaults(ca_skeleton_view* v, uint32_t size) { return
 ca_status ca_evaluate_options_defaults(ca_evaluate_options* o, uint32_t size) { return capi::fill_defaults(o, size); }
 ca_status ca_correspondence_options_defaults(ca_correspondence_options* o, uint32_t size) { return capi::fill_defaults(o, size); }
 ca_status ca_rig_options_defaults(ca_rig_options* o, uint32_t size) { return capi::fill_defaults(o, size); }
+ca_status ca_proxy_options_defaults(ca_proxy_options* o, uint32_t size) { return capi::fill_defaults(o, size); }
 }

@@ -1,7 +1,7 @@
 // results.h: the opaque result objects. A candidate set is reference counted: each selection
 // made from it holds a reference, so destroying the set before its selections is safe (the set
 // is freed with its last selection) and ca_connect's "same set" check cannot match a reused
-// address. Skeletons copy what they need and hold nothing.
+// address. Skeletons and proxy sets copy what they need and hold nothing.
 #pragma once
 
 #include "context.h"
@@ -37,6 +37,15 @@ struct ca_skeleton {
     void release_arrays() {
         centers.release(allocator); radii.release(allocator); edges.release(allocator); faces.release(allocator);
     }
+};
+
+// Engine proxies (ca_proxies.cpp): copies of the primitives, nothing held.
+struct ca_proxy_set {
+    capi::Allocator allocator;
+    capi::Array<int32_t> kinds;
+    capi::Array<double> centers, radii;
+    ca_proxy_stats stats{};
+    void release_arrays() { kinds.release(allocator); centers.release(allocator); radii.release(allocator); }
 };
 
 namespace capi {

@@ -152,6 +152,8 @@ CA_PUBLISHED(ca_evaluation, {1, sizeof(ca_evaluation)})
 // correspondence and rig
 CA_PUBLISHED(ca_correspondence_options, {3, sizeof(ca_correspondence_options)})
 CA_PUBLISHED(ca_rig_options, {3, sizeof(ca_rig_options)})
+CA_PUBLISHED(ca_proxy_options, {3, sizeof(ca_proxy_options)})
+CA_PUBLISHED(ca_proxy_stats, {3, sizeof(ca_proxy_stats)})
 #undef CA_PUBLISHED
 
 static_assert(offsetof(ca_context_desc, threads) == offsetof(abi1::ca_context_desc, threads) &&
@@ -229,6 +231,7 @@ template <> ca_skeleton_view defaults<ca_skeleton_view>();
 template <> ca_evaluate_options defaults<ca_evaluate_options>();
 template <> ca_correspondence_options defaults<ca_correspondence_options>();  // ca_correspondence.cpp
 template <> ca_rig_options defaults<ca_rig_options>();                        // ca_rig.cpp
+template <> ca_proxy_options defaults<ca_proxy_options>();
 
 // A struct of all zero bytes but its struct_size (sizeof T): the start of every default and result.
 template <class T>

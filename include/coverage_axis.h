@@ -578,6 +578,79 @@ CA_API const uint32_t* ca_rig_vertex_joints(const ca_rig* rig);
 CA_API const double* ca_rig_vertex_weights(const ca_rig* rig);
 CA_API const uint32_t* ca_rig_vertex_branches(const ca_rig* rig); /* the branch of the vertex's heaviest ball */
 
+/* ---- engine proxies ------------------------------------------------------------------------ */
+/* Spheres and tapered capsules (a capsule is two balls and their medial cone: the convex hull of
+   the two spheres), the primitives game engines take as colliders, broad-phase volumes and shadow
+   casters: at most `count` of them chosen from a skeleton's balls, edges and chains of edges, at
+   the least two-sided Hausdorff distance to the surface (docs/proxies.md). Modes:
+   - INSCRIBED: every primitive inside the shape, up to the skeleton's own excess: a proven bound
+     (from the depth of the balls' centres) of how far each primitive reaches outside is at most
+     how far the skeleton's balls and edges are measured to reach;
+   - CONSERVATIVE: the union contains every point of the surface (not only samples: the surface is
+     cut into small triangles and each primitive, being convex, is grown until it holds all three
+     corners of the triangles it is given). */
+#define CA_PROXY_SHAPES_SPHERES  0 /* spheres only */
+#define CA_PROXY_SHAPES_CAPSULES 1 /* tapered capsules and spheres */
+#define CA_PROXY_INSCRIBED       0
+#define CA_PROXY_CONSERVATIVE    1
+#define CA_PROXY_SPHERE          0 /* kind of one primitive */
+#define CA_PROXY_CAPSULE         1
+
+typedef struct ca_proxy_options {
+    uint32_t struct_size;        /* sizeof(ca_proxy_options) */
+    int32_t shapes;              /* CA_PROXY_SHAPES_*; default CAPSULES */
+    int32_t mode;                /* CA_PROXY_INSCRIBED or CA_PROXY_CONSERVATIVE; default INSCRIBED */
+    uint32_t count;              /* at most this many primitives (>= 1; fewer when more would not lower
+                                    the error); default 16 */
+    uint32_t surface_samples;    /* about this many corners of the surface cells; default 20000 */
+    uint32_t evaluate_samples;   /* stats: surface and proxy-boundary samples each; default 30000 */
+    uint32_t volume_samples;     /* stats: Monte Carlo points for the volumes; default 200000 */
+    uint64_t seed;               /* default 1; the same seed gives the same proxies */
+} ca_proxy_options;
+
+CA_API ca_status ca_proxy_options_defaults(ca_proxy_options* options, uint32_t struct_size); /* the defaults named above */
+static inline void ca_proxy_options_init(ca_proxy_options* options) {
+    if (options) { options->struct_size = (uint32_t)sizeof *options; (void)ca_proxy_options_defaults(options, (uint32_t)sizeof *options); }
+}
+
+typedef struct ca_proxy_set ca_proxy_set;
+
+/* Proxies of `skeleton` (in the caller's units: ca_skeleton_get_view of ca_connect's result, or the
+   caller's own arrays) over the surface of `set`, which must come from a triangle mesh (a point
+   cloud or caller arrays: CA_ERROR_INVALID_ARGUMENT). */
+CA_API ca_status ca_proxies(ca_context* ctx, const ca_candidate_set* set, const ca_skeleton_view* skeleton,
+                            const ca_proxy_options* options, ca_proxy_set** out);
+CA_API void ca_proxy_set_destroy(ca_proxy_set* proxies);
+
+CA_API size_t ca_proxy_set_count(const ca_proxy_set* proxies);
+CA_API const int32_t* ca_proxy_set_kinds(const ca_proxy_set* proxies);   /* CA_PROXY_SPHERE or CAPSULE per primitive */
+CA_API const double* ca_proxy_set_centers(const ca_proxy_set* proxies);  /* a then b, x y z each: 6 per primitive
+                                                                           (a sphere's b is its a) */
+CA_API const double* ca_proxy_set_radii(const ca_proxy_set* proxies);    /* radius of a, of b: 2 per primitive */
+
+typedef struct ca_proxy_stats {
+    uint32_t struct_size;        /* set by the caller: sizeof(ca_proxy_stats) */
+    double hd_surface_to_proxies;   /* as ca_evaluation measures a skeleton whose balls and edges are the */
+    double mean_surface_to_proxies; /* primitives: percent of the bbox diagonal */
+    double hd_proxies_to_surface;
+    double mean_proxies_to_surface;
+    double hd_two_sided;
+    double outside_bound;        /* proven bound of how far any primitive reaches outside the shape, % */
+    double skeleton_outside;     /* how far the skeleton's balls and edges reach outside the shape at
+                                    least (measured at points of them), % (INSCRIBED: outside_bound
+                                    is at most this) */
+    double union_volume;         /* Monte Carlo volume of the union of the primitives, caller's units^3 */
+    double outside_volume;       /* of which outside the shape (winding-number inside test) */
+    double radius_change;        /* CONSERVATIVE: the most a primitive grew; INSCRIBED: the most a
+                                    candidate shrank; % of the diagonal */
+    double diagonal;             /* the surface's bbox diagonal, caller's units */
+    uint64_t candidates;         /* primitives chosen from */
+    uint64_t surface_cells;      /* small triangles the surface was cut into */
+    double time_s;
+} ca_proxy_stats;
+
+CA_API ca_status ca_proxy_set_stats(const ca_proxy_set* proxies, ca_proxy_stats* stats);
+
 #ifdef __cplusplus
 }
 #endif

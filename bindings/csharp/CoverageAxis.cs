@@ -176,11 +176,32 @@ namespace CoverageAxis
             public double joint_spacing, min_branch, smoothing;
         }
 
+        [StructLayout(LayoutKind.Sequential)]
+        public struct ProxyOptions
+        {
+            public uint struct_size;
+            public int shapes, mode;
+            public uint count, surface_samples, evaluate_samples, volume_samples;
+            public ulong seed;
+        }
+
+        [StructLayout(LayoutKind.Sequential)]
+        public struct ProxyStats
+        {
+            public uint struct_size;
+            public double hd_surface_to_proxies, mean_surface_to_proxies, hd_proxies_to_surface, mean_proxies_to_surface;
+            public double hd_two_sided, outside_bound, skeleton_outside, union_volume, outside_volume;
+            public double radius_change, diagonal;
+            public ulong candidates, surface_cells;
+            public double time_s;
+        }
+
         /// <summary>Every struct declared here, in header order (for the layout check).</summary>
         public static readonly Type[] Structs = {
             typeof(ContextDesc), typeof(SurfaceView), typeof(CandidateOptions), typeof(SelectOptions),
             typeof(SelectStats), typeof(ConnectOptions), typeof(SkeletonStats), typeof(SkeletonView),
             typeof(EvaluateOptions), typeof(Evaluation), typeof(CorrespondenceOptions), typeof(RigOptions),
+            typeof(ProxyOptions), typeof(ProxyStats),
         };
 
         [DllImport(Lib)] public static extern uint ca_version();
@@ -262,6 +283,16 @@ namespace CoverageAxis
         [DllImport(Lib)] public static extern IntPtr ca_rig_vertex_weights(RigHandle r);
         [DllImport(Lib)] public static extern IntPtr ca_rig_vertex_branches(RigHandle r);
 
+        [DllImport(Lib)] public static extern int ca_proxy_options_defaults(ref ProxyOptions o, uint size);
+        [DllImport(Lib)] public static extern int ca_proxies(ContextHandle ctx, CandidateSetHandle set,
+            ref SkeletonView skeleton, ref ProxyOptions options, out ProxySetHandle proxies);
+        [DllImport(Lib)] public static extern void ca_proxy_set_destroy(IntPtr proxies);
+        [DllImport(Lib)] public static extern UIntPtr ca_proxy_set_count(ProxySetHandle p);
+        [DllImport(Lib)] public static extern IntPtr ca_proxy_set_kinds(ProxySetHandle p);
+        [DllImport(Lib)] public static extern IntPtr ca_proxy_set_centers(ProxySetHandle p);
+        [DllImport(Lib)] public static extern IntPtr ca_proxy_set_radii(ProxySetHandle p);
+        [DllImport(Lib)] public static extern int ca_proxy_set_stats(ProxySetHandle p, ref ProxyStats stats);
+
         public static uint SizeOf<T>() { return (uint)Marshal.SizeOf(typeof(T)); }
 
         /// <summary>Throws unless the library knows this binding's layout of a struct.</summary>
@@ -308,6 +339,11 @@ namespace CoverageAxis
     public sealed class RigHandle : OwnedHandle
     {
         protected override bool ReleaseHandle() { Native.ca_rig_destroy(handle); return true; }
+    }
+
+    public sealed class ProxySetHandle : OwnedHandle
+    {
+        protected override bool ReleaseHandle() { Native.ca_proxy_set_destroy(handle); return true; }
     }
 
     /// <summary>Pins managed arrays for the duration of one call.</summary>
@@ -484,6 +520,29 @@ namespace CoverageAxis
         public double JointSpacing { get { return Raw.joint_spacing; } set { Raw.joint_spacing = value; } }
         public double MinBranch { get { return Raw.min_branch; } set { Raw.min_branch = value; } }
         public double Smoothing { get { return Raw.smoothing; } set { Raw.smoothing = value; } }
+    }
+
+    /// <summary>What engine proxies may be (CA_PROXY_SHAPES_*).</summary>
+    public enum ProxyShapes { Spheres = 0, Capsules = 1 }
+    /// <summary>Inscribed proxies stay inside the shape; conservative ones contain the whole surface.</summary>
+    public enum ProxyMode { Inscribed = 0, Conservative = 1 }
+
+    /// <summary>Options of Context.Proxies, starting from the library's defaults.</summary>
+    public sealed class ProxyOptions
+    {
+        internal Native.ProxyOptions Raw;
+        public ProxyOptions()
+        {
+            Native.CheckDefaults(Native.ca_proxy_options_defaults(ref Raw, Native.SizeOf<Native.ProxyOptions>()), "ca_proxy_options");
+        }
+        public ProxyShapes Shapes { get { return (ProxyShapes)Raw.shapes; } set { Raw.shapes = (int)value; } }
+        public ProxyMode Mode { get { return (ProxyMode)Raw.mode; } set { Raw.mode = (int)value; } }
+        /// <summary>At most this many primitives (at least 1).</summary>
+        public uint Count { get { return Raw.count; } set { Raw.count = value; } }
+        public uint SurfaceSamples { get { return Raw.surface_samples; } set { Raw.surface_samples = value; } }
+        public uint EvaluateSamples { get { return Raw.evaluate_samples; } set { Raw.evaluate_samples = value; } }
+        public uint VolumeSamples { get { return Raw.volume_samples; } set { Raw.volume_samples = value; } }
+        public ulong Seed { get { return Raw.seed; } set { Raw.seed = value; } }
     }
 
     public sealed class ProgressEventArgs : EventArgs
@@ -664,6 +723,21 @@ namespace CoverageAxis
             GC.KeepAlive(skeleton);
             return done;
         }
+
+        /// <summary>Engine proxies: at most options.Count spheres, or tapered capsules and spheres,
+        /// chosen from the skeleton over the set's mesh (docs/proxies.md).</summary>
+        public Proxies Proxies(CandidateSet set, Skeleton skeleton, ProxyOptions options = null,
+                               CancellationToken token = default(CancellationToken))
+        {
+            var o = (options ?? new ProxyOptions()).Raw;
+            var view = new Native.SkeletonView();
+            Native.CheckDefaults(Native.ca_skeleton_view_defaults(ref view, Native.SizeOf<Native.SkeletonView>()), "ca_skeleton_view");
+            Native.CheckDefaults(Native.ca_skeleton_get_view(skeleton.Handle, ref view), "ca_skeleton_view");
+            ProxySetHandle h = null;
+            var done = Run(token, () => Native.ca_proxies(handle, set.Handle, ref view, ref o, out h), () => new Proxies(h));
+            GC.KeepAlive(skeleton);
+            return done;
+        }
     }
 
     /// <summary>Copies getter arrays out of the C objects.</summary>
@@ -799,5 +873,37 @@ namespace CoverageAxis
         public uint[] Joints { get { return Copy.UInts(Native.ca_rig_vertex_joints(Handle), 4 * (ulong)VertexCount); } }
         public double[] Weights { get { return Copy.Doubles(Native.ca_rig_vertex_weights(Handle), 4 * (ulong)VertexCount); } }
         public uint[] Branches { get { return Copy.UInts(Native.ca_rig_vertex_branches(Handle), (ulong)VertexCount); } }
+    }
+
+    /// <summary>Engine proxies (Context.Proxies); they hold nothing of the other objects.</summary>
+    public sealed class Proxies : IDisposable
+    {
+        internal readonly ProxySetHandle Handle;
+        internal Proxies(ProxySetHandle h) { Handle = h; }
+        public void Dispose() { Handle.Dispose(); }
+        public int Count { get { return (int)Native.ca_proxy_set_count(Handle); } }
+        /// <summary>Per primitive: true for a tapered capsule, false for a sphere.</summary>
+        public bool[] IsCapsule
+        {
+            get
+            {
+                var k = new int[Count];
+                if (k.Length > 0) Marshal.Copy(Native.ca_proxy_set_kinds(Handle), k, 0, k.Length);
+                return Array.ConvertAll(k, x => x == 1);
+            }
+        }
+        /// <summary>Ball a then ball b, x y z each: 6 per primitive (a sphere's b is its a).</summary>
+        public double[] Centers { get { return Copy.Doubles(Native.ca_proxy_set_centers(Handle), 6 * (ulong)Count); } }
+        /// <summary>Radius of a, of b: 2 per primitive.</summary>
+        public double[] Radii { get { return Copy.Doubles(Native.ca_proxy_set_radii(Handle), 2 * (ulong)Count); } }
+        public Native.ProxyStats Stats
+        {
+            get
+            {
+                var s = new Native.ProxyStats { struct_size = Native.SizeOf<Native.ProxyStats>() };
+                Native.CheckDefaults(Native.ca_proxy_set_stats(Handle, ref s), "ca_proxy_stats");
+                return s;
+            }
+        }
     }
 }

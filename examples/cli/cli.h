@@ -31,11 +31,14 @@ struct RunOptions {
     ca_connect_options connect;
     ca_evaluate_options evaluation;
     ca_rig_options rig;                      // --rig and --correspondence (its smoothing too)
+    ca_proxy_options proxy;                  // --proxies: engine proxies of the skeleton
     std::string format;                      // input format name; "" = by extension
     std::string candidate_kind = "voronoi";  // voronoi | random | a ball file
     std::string normals = "given";           // a point cloud's normals: given | unoriented | estimate
     int32_t point_normals = CA_POINT_NORMALS_TRUSTED;   // `normals` as CA_POINT_NORMALS_*
     std::string solver, effort, connect_route;
+    std::string proxies;                     // "" (none) | spheres | capsules
+    std::string proxy_mode;                  // inscribed | conservative
     std::string surface_samples_file, ignore_samples_file, force_in_file, force_out_file;
     bool evaluate = false;
     caio::PreviewOptions preview;
@@ -50,6 +53,7 @@ struct RunOptions {
 struct Outputs {
     std::string ma, obj, ply, gltf, preview, export_samples, export_candidates;
     std::string correspondence, rig;   // --correspondence FILE.json, --rig OUT.glb
+    std::string proxies_json;   // the engine proxies (--proxies) and their stats
 };
 
 // A failed run: a library status (CA_ERROR_*, exit 1) or a tool error (FILE_ERROR exit 3,

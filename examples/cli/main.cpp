@@ -107,6 +107,15 @@ void print_summary(const cli::Json& j, const cli::RunOptions& o) {
     if (j.contains("rig"))
         std::printf("rig         %llu joints, %llu branches\n", j["rig"]["joints"].get<unsigned long long>(),
                     j["rig"]["branches"].get<unsigned long long>());
+    if (j.contains("proxies")) {
+        const cli::Json& p = j["proxies"];
+        std::printf("proxies     %llu of at most %llu (%s, %s): two-sided HD %.3f %% of the bbox diagonal, %.3g of the "
+                    "union's volume outside the shape\n",
+                    p["count"].get<unsigned long long>(), p["count_limit"].get<unsigned long long>(),
+                    p["shapes"].get<std::string>().c_str(), p["mode"].get<std::string>().c_str(),
+                    p["hd_two_sided"].get<double>(),
+                    p["union_volume"].get<double>() > 0 ? p["outside_volume"].get<double>() / p["union_volume"].get<double>() : 0.0);
+    }
     const cli::Json& t = j["time_s"];
     std::printf("time        read %.3f s, candidates %.3f s, select %.3f s, connect %.3f s, total %.3f s\n", t["read"].get<double>(),
                 t["candidates"].get<double>(), t["select"].get<double>(), t["connect"].get<double>(), t["total"].get<double>());
@@ -145,6 +154,7 @@ int single_run(int argc, char** argv) {
     app.add_option("--obj", out.obj, "also write .obj (v, l, f; no radii)")->group(files);
     app.add_option("--ply", out.ply, "also write .ply (radius property, edge element)")->group(files);
     app.add_option("--gltf", out.gltf, "also write glTF 2.0: OUT.glb or OUT.gltf (balls, edges, faces, _RADIUS)")->group(files);
+    app.add_option("--proxies-json", out.proxies_json, "write the engine proxies (--proxies) and their errors as JSON")->group(files);
     app.add_option("--preview", out.preview, "also draw the mesh and the skeleton: OUT.png or OUT.svg")->group(files);
     app.add_option("--export-samples", out.export_samples, "write the covered surface samples (v x y z)")->group(files);
     app.add_option("--export-candidates", out.export_candidates, "write the candidate balls (v x y z r)")->group(files);
@@ -171,6 +181,8 @@ int single_run(int argc, char** argv) {
     if (parsed == 2) return report_failure({"USAGE_ERROR", -1, err, 2}, json, input);
     if (parsed >= 0) return parsed;
     if (!cli::finish_run_options(app, o, err)) return report_failure({"USAGE_ERROR", -1, err + " (see coverage-axis --help)", 2}, json, input);
+    if (!out.proxies_json.empty() && o.proxies.empty())
+        return report_failure({"USAGE_ERROR", -1, "--proxies-json needs --proxies spheres|capsules (see coverage-axis --help)", 2}, json, input);
     if (out.ma.empty() && input == "-")
         return report_failure({"USAGE_ERROR", -1, "reading standard input needs -o OUT.ma", 2}, json, input);
     if (out.ma.empty()) out.ma = default_ma_path(input);

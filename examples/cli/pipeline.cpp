@@ -4,6 +4,7 @@
 // single run and the batch command report them alike.
 #include "cli.h"
 #include "gltf_writer.h"
+#include "output_file.h"
 
 #include <algorithm>
 #include <chrono>
@@ -91,11 +92,13 @@ struct Owned {
     ca_candidate_set* set = nullptr;
     ca_selection* sel = nullptr;
     ca_skeleton* sk = nullptr;
+    ca_proxy_set* proxies = nullptr;
     // Which normals the generated candidates used (CA_NORMALS_*) and whether the input was
     // flipped, read before a candidates file replaces the set.
     int32_t normals = CA_NORMALS_NONE;
     bool flipped = false;
     ~Owned() {
+        ca_proxy_set_destroy(proxies);
         ca_skeleton_destroy(sk);
         ca_selection_destroy(sel);
         ca_candidate_set_destroy(set);
@@ -242,11 +245,67 @@ caio::SkeletonData skeleton_data(const ca_skeleton* sk) {
     return sd;
 }
 
-bool write_outputs(const caio::MeshData& mesh, const caio::SkeletonData& sd, const RunOptions& o, const Outputs& out,
-                   Failure& failure) {
+// The proxies' primitives as the writers take them.
+std::vector<caio::ProxyData> proxy_data(const ca_proxy_set* p) {
+    std::vector<caio::ProxyData> out(ca_proxy_set_count(p));
+    const int32_t* kinds = ca_proxy_set_kinds(p);
+    const double *centers = ca_proxy_set_centers(p), *radii = ca_proxy_set_radii(p);
+    for (size_t i = 0; i < out.size(); ++i) {
+        out[i].capsule = kinds[i] == CA_PROXY_CAPSULE;
+        for (int k = 0; k < 3; ++k) {
+            out[i].a[k] = centers[6 * i + size_t(k)];
+            out[i].b[k] = centers[6 * i + 3 + size_t(k)];
+        }
+        out[i].radius_a = radii[2 * i];
+        out[i].radius_b = radii[2 * i + 1];
+    }
+    return out;
+}
+
+// The proxies' stats (--json's "proxies" and the --proxies-json file's fields).
+Json proxy_stats_json(const ca_proxy_stats& s, const RunOptions& o, size_t count) {
+    return Json{{"shapes", o.proxies},
+                {"mode", o.proxy_mode},
+                {"count", count},
+                {"count_limit", o.proxy.count},
+                {"hd_surface_to_proxies", s.hd_surface_to_proxies},
+                {"hd_proxies_to_surface", s.hd_proxies_to_surface},
+                {"hd_two_sided", s.hd_two_sided},
+                {"mean_surface_to_proxies", s.mean_surface_to_proxies},
+                {"mean_proxies_to_surface", s.mean_proxies_to_surface},
+                {"outside_bound", s.outside_bound},
+                {"skeleton_outside", s.skeleton_outside},
+                {"union_volume", s.union_volume},
+                {"outside_volume", s.outside_volume},
+                {"radius_change", s.radius_change},
+                {"diagonal", s.diagonal},
+                {"candidates", s.candidates},
+                {"surface_cells", s.surface_cells},
+                {"time_s", s.time_s}};
+}
+
+// --proxies-json: {"proxies": [one object per primitive], then the stats}.
+bool write_proxies_json(const std::string& path, const std::vector<caio::ProxyData>& proxies, const Json& stats,
+                        Failure& failure) {
+    Json list = Json::array();
+    for (const caio::ProxyData& p : proxies) {
+        const Json a = {p.a[0], p.a[1], p.a[2]}, b = {p.b[0], p.b[1], p.b[2]};
+        if (p.capsule) list.push_back({{"kind", "capsule"}, {"a", a}, {"radius_a", p.radius_a}, {"b", b}, {"radius_b", p.radius_b}});
+        else list.push_back({{"kind", "sphere"}, {"center", a}, {"radius", p.radius_a}});
+    }
+    Json doc = {{"proxies", list}};
+    for (const auto& [key, value] : stats.items()) doc[key] = value;
+    std::string err;
+    if (!caio::write_bytes(path, doc.dump(1) + "\n", err)) return failure = file_failure(err), false;
+    return true;
+}
+
+bool write_outputs(const caio::MeshData& mesh, const caio::SkeletonData& sd, const std::vector<caio::ProxyData>& proxies,
+                   const RunOptions& o, const Outputs& out, Failure& failure) {
     std::string err;
     if (!caio::write_ma(out.ma, sd, err) || (!out.obj.empty() && !caio::write_obj(out.obj, sd, err)) ||
-        (!out.ply.empty() && !caio::write_ply(out.ply, sd, err)) || (!out.gltf.empty() && !caio::write_gltf(out.gltf, sd, err)) ||
+        (!out.ply.empty() && !caio::write_ply(out.ply, sd, err)) ||
+        (!out.gltf.empty() && !caio::write_gltf(out.gltf, sd, err, proxies)) ||
         (!out.preview.empty() && !caio::write_preview(out.preview, mesh, sd, o.preview, err)))
         return failure = file_failure(err), false;
     return true;
@@ -255,7 +314,7 @@ bool write_outputs(const caio::MeshData& mesh, const caio::SkeletonData& sd, con
 Json outputs_json(const Outputs& out) {
     Json j = {{"ma", out.ma}};
     for (const auto& [key, path] : {std::pair<const char*, const std::string&>{"obj", out.obj}, {"ply", out.ply},
-                                    {"gltf", out.gltf}, {"preview", out.preview},
+                                    {"gltf", out.gltf}, {"preview", out.preview}, {"proxies_json", out.proxies_json},
                                     {"correspondence", out.correspondence}, {"rig", out.rig}})
         if (!path.empty()) j[key] = path;
     return j;
@@ -303,9 +362,30 @@ Outcome run_pipeline(const std::string& input, const RunOptions& o, const Output
     ks.struct_size = sizeof ks;
     ca_skeleton_stats_get(owned.sk, &ks);
 
+    // --proxies: engine proxies of the skeleton, before the writers (glTF holds them)
+    std::vector<caio::ProxyData> proxies;
+    Json proxy_stats;
+    double t_proxies = 0;
+    if (!o.proxies.empty()) {
+        t0 = Clock::now();
+        ca_skeleton_view view;
+        ca_skeleton_view_init(&view);
+        ca_skeleton_get_view(owned.sk, &view);
+        if (!context_for(owned, desc, o.time_limit_s, t_start, "proxies", r.failure)) return r;
+        if ((st = ca_proxies(owned.ctx, owned.set, &view, &o.proxy, &owned.proxies)) != CA_OK)
+            return r.failure = library_failure(owned.ctx, st, "proxies"), r;
+        ca_proxy_stats ps;
+        ps.struct_size = sizeof ps;
+        ca_proxy_set_stats(owned.proxies, &ps);
+        proxies = proxy_data(owned.proxies);
+        proxy_stats = proxy_stats_json(ps, o, proxies.size());
+        t_proxies = since(t0);
+    }
+
     t0 = Clock::now();
     const caio::SkeletonData sd = skeleton_data(owned.sk);
-    if (!write_outputs(mesh, sd, o, out, r.failure)) return r;
+    if (!write_outputs(mesh, sd, proxies, o, out, r.failure)) return r;
+    if (!out.proxies_json.empty() && !write_proxies_json(out.proxies_json, proxies, proxy_stats, r.failure)) return r;
     Json rig_report = Json::object();
     if (!(out.correspondence.empty() && out.rig.empty()) &&
         (!context_for(owned, desc, o.time_limit_s, t_start, "rig", r.failure) ||
@@ -372,6 +452,7 @@ Outcome run_pipeline(const std::string& input, const RunOptions& o, const Output
     j["outputs"] = outputs_json(out);
     for (auto& [key, value] : rig_report.items()) j[key] = value;
     if (evaluate_run) add_evaluation(j, ev);
+    if (!o.proxies.empty()) j["proxies"] = proxy_stats;
     // --target-count: the HD of what was written (the library's search measured the default
     // connection, fitted with --fit, which --connect changes)
     if (o.select.target_count > 0) j["hd_reached"] = ev.hd_two_sided;
@@ -381,7 +462,7 @@ Outcome run_pipeline(const std::string& input, const RunOptions& o, const Output
     if (r.target_missed) j["error"] = error_json(r.failure);
     j["time_s"] = {{"read", round4(t_read)},         {"candidates", round4(t_candidates)}, {"select", round4(t_select)},
                    {"connect", round4(t_connect)}, {"write", round4(t_write)},           {"evaluate", round4(t_evaluate)},
-                   {"total", round4(since(t_start))}};
+                   {"proxies", round4(t_proxies)},           {"total", round4(since(t_start))}};
     r.ok = true;
     return r;
 }

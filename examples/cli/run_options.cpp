@@ -25,6 +25,7 @@ using Names = std::vector<std::pair<std::string, int32_t>>;
 const Names kSolvers = {{"exact", CA_SOLVER_EXACT}, {"greedy", CA_SOLVER_GREEDY}, {"capp", CA_SOLVER_CAPP}};
 const Names kEfforts = {{"fast", CA_EFFORT_FAST}, {"prove", CA_EFFORT_PROVE}};
 const Names kRoutes = {{"auto", CA_CONNECT_AUTO}, {"medial", CA_CONNECT_MEDIAL}, {"power", CA_CONNECT_POWER}};
+const Names kProxyModes = {{"inscribed", CA_PROXY_INSCRIBED}, {"conservative", CA_PROXY_CONSERVATIVE}};
 const Names kGenerators = {{"voronoi", CA_CANDIDATES_VORONOI}, {"random", CA_CANDIDATES_RANDOM}};
 const Names kNormals = {{"given", CA_POINT_NORMALS_TRUSTED}, {"unoriented", CA_POINT_NORMALS_UNORIENTED},
                         {"estimate", CA_POINT_NORMALS_ESTIMATE}};
@@ -85,6 +86,7 @@ RunOptions::RunOptions() {
     ca_connect_options_init(&connect);
     ca_evaluate_options_init(&evaluation);
     ca_rig_options_init(&rig);
+    ca_proxy_options_init(&proxy);
     ca_context_desc desc;
     ca_context_desc_init(&desc);
     threads = desc.threads;
@@ -92,6 +94,7 @@ RunOptions::RunOptions() {
     solver = name_of(kSolvers, select.solver);
     effort = name_of(kEfforts, select.effort);
     connect_route = name_of(kRoutes, connect.method);
+    proxy_mode = name_of(kProxyModes, proxy.mode);
     up = std::string(1, preview.up);
     preview_size = std::to_string(preview.width) + "x" + std::to_string(preview.height);
 }
@@ -173,6 +176,12 @@ void add_run_options(CLI::App& app, RunOptions& o) {
     app.add_option("--up", o.up, "the model's up axis: y or z")->capture_default_str()->check(CLI::IsMember({"y", "z"}))->group(look);
     app.add_option("--preview-size", o.preview_size, "WIDTHxHEIGHT in pixels")->capture_default_str()->group(look);
 
+    const std::string engine = "Engine proxies (docs/proxies.md)";
+    app.add_option("--proxies", o.proxies, "also choose spheres, or tapered capsules and spheres, for game engines from the skeleton")
+        ->check(CLI::IsMember({"spheres", "capsules"}))->group(engine);
+    app.add_option("--proxy-count", o.proxy.count, "at most K proxies")->capture_default_str()->check(at_least(1))->group(engine);
+    app.add_option("--proxy-mode", o.proxy_mode, "inscribed (inside the shape) | conservative (containing the surface)")
+        ->capture_default_str()->check(CLI::IsMember(keys(kProxyModes)))->group(engine);
     app.add_flag("--evaluate", o.evaluate, "measure the skeleton: Hausdorff distances in % of the bbox diagonal");
     app.add_option("--threads", o.threads, "worker threads (0 = all cores)")->capture_default_str()->check(at_least(0));
 }
@@ -194,6 +203,12 @@ bool finish_run_options(const CLI::App& app, RunOptions& o, std::string& error) 
     o.point_normals = value_of(kNormals, o.normals);
     o.select.effort = value_of(kEfforts, o.effort);
     o.connect.method = value_of(kRoutes, o.connect_route);
+    o.proxy.mode = value_of(kProxyModes, o.proxy_mode);
+    if (o.proxies.empty() && (app.count("--proxy-count") || app.count("--proxy-mode"))) {
+        error = "--proxy-count and --proxy-mode need --proxies spheres|capsules";
+        return false;
+    }
+    o.proxy.shapes = o.proxies == "spheres" ? CA_PROXY_SHAPES_SPHERES : CA_PROXY_SHAPES_CAPSULES;
     if (app.count("--no-fit") && (app.count("--fit") || app.count("--fit-thorough"))) {
         error = "--no-fit cannot be combined with --fit or --fit-thorough";
         return false;
@@ -275,6 +290,9 @@ Json options_json(const RunOptions& o) {
                 {"remove_outside", o.connect.remove_outside},
                 {"fill_holes", o.connect.fill_holes},
                 {"reconnect", o.connect.reconnect},
+                {"proxies", o.proxies.empty() ? Json(nullptr) : Json(o.proxies)},
+                {"proxy_count", o.proxy.count},
+                {"proxy_mode", o.proxy_mode},
                 {"evaluate", o.evaluate},
                 {"evaluate_samples", {o.evaluation.surface_samples, o.evaluation.envelope_samples, o.evaluation.seed}},
                 {"view", o.view},

@@ -72,7 +72,7 @@ std::string base64(const std::string& bytes) {
 }
 
 // The glTF document (without its buffer's uri) and the binary buffer.
-json build(const SkeletonData& s, std::string& bin) {
+json build(const SkeletonData& s, const std::vector<ProxyData>& proxies, std::string& bin) {
     Builder b;
     std::vector<float> sphere;
     std::vector<uint16_t> sphere_triangles;
@@ -117,12 +117,35 @@ json build(const SkeletonData& s, std::string& bin) {
         nodes.push_back(std::move(n));
     }
     if (!children.empty()) nodes[0]["children"] = children;
+    json scene_nodes = json::array({0});
+    if (!proxies.empty()) {
+        json group = {{"name", "proxies"}, {"children", json::array()}};
+        const size_t group_index = nodes.size();
+        nodes.push_back(group);
+        for (size_t i = 0; i < proxies.size(); ++i) {
+            const ProxyData& p = proxies[i];
+            const json a = {p.a[0], p.a[1], p.a[2]}, b = {p.b[0], p.b[1], p.b[2]};
+            json node = {{"name", std::string(p.capsule ? "capsule_" : "sphere_") + std::to_string(i)}};
+            if (p.capsule) {
+                node["translation"] = {0.5 * (p.a[0] + p.b[0]), 0.5 * (p.a[1] + p.b[1]), 0.5 * (p.a[2] + p.b[2])};
+                node["extras"] = {{"kind", "capsule"}, {"a", a}, {"radius_a", p.radius_a}, {"b", b}, {"radius_b", p.radius_b}};
+            } else {
+                node["mesh"] = 0;
+                node["translation"] = a;
+                node["scale"] = {p.radius_a, p.radius_a, p.radius_a};
+                node["extras"] = {{"kind", "sphere"}, {"center", a}, {"radius", p.radius_a}};
+            }
+            nodes[group_index]["children"].push_back(nodes.size());
+            nodes.push_back(std::move(node));
+        }
+        scene_nodes.push_back(group_index);
+    }
 
     bin = std::move(b.bin);
     while (bin.size() % 4) bin.push_back('\0');
     return {{"asset", {{"version", "2.0"}, {"generator", "coverage-axis"}}},
             {"scene", 0},
-            {"scenes", {{{"name", "coverage axis skeleton"}, {"nodes", {0}}}}},
+            {"scenes", {{{"name", "coverage axis skeleton"}, {"nodes", scene_nodes}}}},
             {"nodes", nodes},
             {"meshes", meshes},
             {"materials", {material("ball", {0.25, 0.45, 0.9, 0.3}, true), material("edge", {0.1, 0.1, 0.1, 1.0}, false),
@@ -142,7 +165,8 @@ bool ends_with(const std::string& s, const char* suffix) {
 
 }  // namespace
 
-bool write_gltf(const std::string& path, const SkeletonData& s, std::string& error) {
+bool write_gltf(const std::string& path, const SkeletonData& s, std::string& error,
+                const std::vector<ProxyData>& proxies) {
     try {
         const size_t nv = s.radii.size();
         if (s.centers.size() != 3 * nv || s.edges.size() % 2 || s.faces.size() % 3) {
@@ -159,7 +183,10 @@ bool write_gltf(const std::string& path, const SkeletonData& s, std::string& err
             return false;
         }
         std::string bin;
-        json doc = build(s, bin);
+        for (const ProxyData& p : proxies)
+            for (double v : {p.a[0], p.a[1], p.a[2], p.b[0], p.b[1], p.b[2], p.radius_a, p.radius_b})
+                if (!std::isfinite(v)) { error = path + ": a proxy has a NaN or infinite value"; return false; }
+        json doc = build(s, proxies, bin);
         if (!glb) {
             doc["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64(bin);
             return write_bytes(path, doc.dump(1) + "\n", error);

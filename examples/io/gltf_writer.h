@@ -1,7 +1,11 @@
 // gltf_writer.h: writes a medial skeleton as glTF 2.0 for engines and DCC tools (Blender, ...):
 // one node per ball (a shared unit-sphere mesh, translated to the centre and scaled by the
 // radius), the edges as a LINES primitive and the faces as a TRIANGLES primitive of one
-// "skeleton" mesh whose vertices carry the radius as the custom attribute _RADIUS.
+// "skeleton" mesh whose vertices carry the radius as the custom attribute _RADIUS. Engine proxies,
+// when given, are the children of a "proxies" node: one node per primitive at its centre (a
+// capsule: the midpoint of its segment; a sphere also shows the ball mesh) with its parameters in
+// `extras` ({"kind": "sphere", "center", "radius"} or {"kind": "capsule", "a", "radius_a", "b",
+// "radius_b"}, in the skeleton's units), for an importer to make colliders of.
 #pragma once
 #include "mesh_io.h"
 
@@ -13,6 +17,7 @@ namespace caio {
 // base64 data URI (one self-contained file). Positions and radii are stored as float32, as
 // glTF requires for POSITION. Returns false with "path: what" on a bad skeleton, an unknown
 // extension or a write error.
-bool write_gltf(const std::string& path, const SkeletonData& s, std::string& error);
+bool write_gltf(const std::string& path, const SkeletonData& s, std::string& error,
+                const std::vector<ProxyData>& proxies = {});
 
 }  // namespace caio

@@ -70,6 +70,14 @@ struct SkeletonData {
     std::vector<uint32_t> faces;       // i j k per face
 };
 
+// An engine proxy (ca_proxies): a sphere (a, radius_a; b equals a) or a tapered capsule, the convex
+// hull of the balls (a, radius_a) and (b, radius_b).
+struct ProxyData {
+    bool capsule = false;
+    double a[3] = {0, 0, 0}, b[3] = {0, 0, 0};
+    double radius_a = 0, radius_b = 0;
+};
+
 // .ma: "nv ne nf", then "v x y z r", "e i j", "f i j k" (0-based; every face edge is an e line:
 // write_ma appends the face edges missing from s.edges). read_ma accepts the records in any order
 // (Q-MAT files), '#' comments and CRLF; counts must match the header and indices must be < nv.

@@ -11,6 +11,7 @@
 #include "evaluate.h"
 #include "fit.h"
 #include "rig.h"
+#include "proxies.h"
 #include "selection.h"
 #include "skeleton.h"
 
@@ -122,5 +123,14 @@ Status correspondence_step(const SurfaceInput& surface, const Skeleton& skeleton
 // the skeleton and the surface in the same units.
 Status rig_step(const SurfaceInput& surface, const Skeleton& skeleton, const RigOptions& opt, const Monitor& monitor,
                 Rig& out);
+
+// ---- engine proxies (proxies_step.cpp) ----
+
+// Spheres and tapered capsules from a skeleton in the caller's units (as ca_skeleton holds it) over
+// the candidate set's surface, a triangle mesh (proxies.h, docs/proxies.md). The skeleton is
+// checked and brought to the set's internal units; the proxies, the diagonal and the volumes of
+// the result are in the caller's units (the errors are percent of the diagonal).
+Status proxies_step(const CandidateSet& set, const Skeleton& skeleton, const ProxyOptions& opt,
+                    const Monitor& monitor, ProxyResult& out);
 
 }  // namespace ca

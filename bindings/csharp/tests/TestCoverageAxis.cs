@@ -301,6 +301,67 @@ static class TestCoverageAxis
         }
     }
 
+    // min over t of |x - c(t)| - r(t), convex in t: ternary search (the test's own capsule distance)
+    static double CapsuleDistance(double[] c, double[] r, int i, double[] x)
+    {
+        Func<double, double> f = t =>
+        {
+            double s = 0;
+            for (int k = 0; k < 3; ++k)
+            {
+                double d = x[k] - (c[6 * i + k] + t * (c[6 * i + 3 + k] - c[6 * i + k]));
+                s += d * d;
+            }
+            return Math.Sqrt(s) - (r[2 * i] + t * (r[2 * i + 1] - r[2 * i]));
+        };
+        double lo = 0, hi = 1;
+        for (int it = 0; it < 100; ++it)
+        {
+            double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
+            if (f(m1) <= f(m2)) hi = m2; else lo = m1;
+        }
+        return Math.Min(f(0.5 * (lo + hi)), Math.Min(f(0), f(1)));
+    }
+
+    static void ConservativeProxiesHoldTheVertices()
+    {
+        var surface = ReadObj(Path.Combine(dataDir, "fox.obj"));
+        var positions = File.ReadAllLines(Path.Combine(dataDir, "fox.obj")).Where(l => l.StartsWith("v "))
+            .Select(l => l.Substring(2).Split(new[] { ' ' }, StringSplitOptions.RemoveEmptyEntries)
+            .Select(t => double.Parse(t, CultureInfo.InvariantCulture)).ToArray()).ToArray();
+        using (var ctx = new Context(threads: 2))
+        using (var set = ctx.Candidates(surface, new CandidateOptions { CoverSamples = 400 }))
+        using (var selection = ctx.Select(set))
+        using (var skeleton = ctx.Connect(set, selection))
+        {
+            var options = new ProxyOptions { Mode = ProxyMode.Conservative, Count = 6, EvaluateSamples = 2000, VolumeSamples = 5000 };
+            Check(new ProxyOptions().Mode == ProxyMode.Inscribed && new ProxyOptions().Count == 16, "proxy defaults");
+            using (var proxies = ctx.Proxies(set, skeleton, options))
+            {
+                Check(proxies.Count >= 1 && proxies.Count <= 6, proxies.Count + " proxies");
+                Check(proxies.IsCapsule.Length == proxies.Count, "kinds");
+                var c = proxies.Centers;
+                var r = proxies.Radii;
+                foreach (var x in positions)
+                {
+                    double best = double.PositiveInfinity;
+                    for (int i = 0; i < proxies.Count; ++i) best = Math.Min(best, CapsuleDistance(c, r, i, x));
+                    Check(best <= 1e-9, "a vertex outside every proxy (" + best + ")");
+                }
+                Check(proxies.Stats.hd_two_sided > 0 && proxies.Stats.outside_volume > 0, "proxy stats");
+            }
+            try
+            {
+                ctx.Proxies(set, skeleton, new ProxyOptions { Count = 0 });
+                Check(false, "a count of 0 was accepted");
+            }
+            catch (CoverageAxisException e)
+            {
+                Check(e.Status == Status.InvalidArgument && e.Message.Contains("count"), "count 0: " + e.Message);
+            }
+        }
+    }
+
     static void Test(string name, Action body)
     {
         try { body(); ++passed; Console.WriteLine("ok   " + name); }
@@ -319,6 +380,7 @@ static class TestCoverageAxis
         Test("progress event and cancellation", ProgressEventAndCancellation);
         Test("results outlive context and set", ResultsOutliveContextAndSet);
         Test("rig and correspondence match the CLI", RigMatchesTheCli);
+        Test("conservative proxies hold the vertices", ConservativeProxiesHoldTheVertices);
         Console.WriteLine("{0} passed, {1} failed", passed, failed);
         return failed == 0 ? 0 : 1;
     }

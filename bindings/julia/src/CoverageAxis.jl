@@ -188,6 +188,35 @@ struct RigOptions
     smoothing::Float64
 end
 
+struct ProxyOptions
+    struct_size::UInt32
+    shapes::Int32
+    mode::Int32
+    count::UInt32
+    surface_samples::UInt32
+    evaluate_samples::UInt32
+    volume_samples::UInt32
+    seed::UInt64
+end
+
+struct ProxyStats
+    struct_size::UInt32
+    hd_surface_to_proxies::Float64
+    mean_surface_to_proxies::Float64
+    hd_proxies_to_surface::Float64
+    mean_proxies_to_surface::Float64
+    hd_two_sided::Float64
+    outside_bound::Float64
+    skeleton_outside::Float64
+    union_volume::Float64
+    outside_volume::Float64
+    radius_change::Float64
+    diagonal::Float64
+    candidates::UInt64
+    surface_cells::UInt64
+    time_s::Float64
+end
+
 # ---- errors, defaults -------------------------------------------------------------------------
 """A failed call: the library's status code and its message."""
 struct CoverageAxisError <: Exception

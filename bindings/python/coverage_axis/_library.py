@@ -16,8 +16,8 @@ import threading
 from ctypes import POINTER, CFUNCTYPE, c_char_p, c_double, c_int32, c_size_t, c_uint32, c_uint64, c_void_p
 
 from ._structs import (_CandidateOptions, _ConnectOptions, _ContextDesc, _CorrespondenceOptions, _EvaluateOptions,
-                       _Evaluation, _RigOptions, _SelectOptions, _SelectStats, _SkeletonStats, _SkeletonView,
-                       _SurfaceView)
+                       _Evaluation, _ProxyOptions, _ProxyStats, _RigOptions, _SelectOptions, _SelectStats,
+                       _SkeletonStats, _SkeletonView, _SurfaceView)
 
 ABI_VERSION = 3
 
@@ -107,6 +107,11 @@ _SIGNATURES = {
     "ca_rig_joint_parents": (P, [P]), "ca_rig_joint_balls": (P, [P]), "ca_rig_joint_branches": (P, [P]),
     "ca_rig_branch_count": (c_size_t, [P]), "ca_rig_vertex_count": (c_size_t, [P]),
     "ca_rig_vertex_joints": (P, [P]), "ca_rig_vertex_weights": (P, [P]), "ca_rig_vertex_branches": (P, [P]),
+    "ca_proxy_options_defaults": (c_int32, [POINTER(_ProxyOptions), c_uint32]),
+    "ca_proxies": (c_int32, [P, P, POINTER(_SkeletonView), POINTER(_ProxyOptions), POINTER(P)]),
+    "ca_proxy_set_destroy": (None, [P]), "ca_proxy_set_count": (c_size_t, [P]),
+    "ca_proxy_set_kinds": (P, [P]), "ca_proxy_set_centers": (P, [P]), "ca_proxy_set_radii": (P, [P]),
+    "ca_proxy_set_stats": (c_int32, [P, POINTER(_ProxyStats)]),
 }
 
 _lock = threading.Lock()

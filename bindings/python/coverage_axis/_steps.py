@@ -1,8 +1,8 @@
-"""_steps.py: the pipeline's steps over the C ABI - candidates(), select(), connect(), evaluate() -
-their results, and skeletonize(), the three steps in one call.
+"""_steps.py: the pipeline's steps over the C ABI - candidates(), select(), connect(), evaluate(),
+proxies() - their results, and skeletonize(), the three steps in one call.
 
 Options are keyword arguments named as the fields of the C option structs (ca_candidate_options,
-ca_select_options, ca_connect_options, ca_evaluate_options); an option not given (or None) keeps
+ca_select_options, ca_connect_options, ca_evaluate_options, ca_proxy_options); an option not given (or None) keeps
 the library's default, read from its ca_*_defaults function (defaults() lists them). Enumerations
 take their names ("exact", "prove", "medial", ...) or the C values."""
 import ctypes
@@ -11,8 +11,9 @@ from . import _arrays
 from ._context import Context
 from ._library import (CA_ERROR_INVALID_ARGUMENT, CA_ERROR_INVALID_INPUT, CA_ERROR_TARGET_NOT_REACHED,
                        CoverageAxisError, TargetNotReachedError, _CandidateOptions, _ConnectOptions,
-                       _CorrespondenceOptions, _EvaluateOptions, _Evaluation, _RigOptions, _SelectOptions, _SelectStats,
-                       _SkeletonStats, _SkeletonView, _SurfaceView, fill_defaults, lib, output_struct, struct_dict)
+                       _CorrespondenceOptions, _EvaluateOptions, _Evaluation, _ProxyOptions, _ProxyStats, _RigOptions,
+                       _SelectOptions, _SelectStats, _SkeletonStats, _SkeletonView, _SurfaceView, fill_defaults, lib,
+                       output_struct, struct_dict)
 from ._structs import _ContextDesc
 
 # the header's #define values, by name
@@ -22,6 +23,8 @@ ENUMS = {
     "solver": {"exact": 0, "greedy": 1, "capp": 2},
     "effort": {"fast": 0, "prove": 1},
     "method": {"power": 0, "medial": 1, "auto": 2},
+    "shapes": {"spheres": 0, "capsules": 1},
+    "mode": {"inscribed": 0, "conservative": 1},
 }
 _MASKS = ("ignorable_samples", "forced_in", "forced_out")
 _STEPS = {
@@ -32,6 +35,7 @@ _STEPS = {
     "evaluate": ("ca_evaluate_options_defaults", _EvaluateOptions),
     "correspond": ("ca_correspondence_options_defaults", _CorrespondenceOptions),
     "rig": ("ca_rig_options_defaults", _RigOptions),
+    "proxies": ("ca_proxy_options_defaults", _ProxyOptions),
 }
 _NOT_OPTIONS = {"struct_size", "alloc", "free", "alloc_user", "log", "log_user", "progress", "progress_user",
                 "reserved_abi2_tail",  # padding, never read
@@ -51,7 +55,7 @@ def _named(name, value):
 
 def defaults(step):
     """The library's defaults of a step's options ("context", "candidates", "select", "connect",
-    "evaluate", "correspond", "rig") as a dict, enumerations by name."""
+    "evaluate", "correspond", "rig", "proxies") as a dict, enumerations by name."""
     s = fill_defaults(*_STEPS[step])
     return {name: _named(name, getattr(s, name)) for name in _option_names(step)}
 
@@ -277,6 +281,49 @@ def _skeleton_view(skeleton):
     sv.centers, sv.radii, sv.vertex_count = c.address, r.address, c.count
     sv.edges, sv.edge_count, sv.faces, sv.face_count = e.address, e.count, f.address, f.count
     return sv, [c, r, e, f]
+
+
+class Proxies:
+    """Engine proxies (proxies()): `primitives`, one dict per primitive in the input's units,
+    {"kind": "sphere", "center": (x, y, z), "radius": r} or {"kind": "capsule", "a": (x, y, z),
+    "radius_a": ra, "b": (x, y, z), "radius_b": rb} (the objects of the tool's --proxies-json), and
+    `stats` (ca_proxy_stats: Hausdorff distances in % of the bbox diagonal, outside bounds, volumes)."""
+
+    def __init__(self, primitives, stats):
+        self.primitives, self.stats = primitives, stats
+
+    def __len__(self):
+        return len(self.primitives)
+
+
+def proxies(candidate_set, skeleton, *, context=None, **options):
+    """At most `count` spheres, or tapered capsules and spheres, for game engines from a skeleton of
+    the candidate set's mesh (docs/proxies.md). Options: shapes ("spheres" | "capsules"), mode
+    ("inscribed": inside the shape | "conservative": containing the whole surface), count,
+    surface_samples, evaluate_samples, volume_samples, seed."""
+    sv, keep = _skeleton_view(skeleton)
+    opts = _options("proxies", options)
+    out = ctypes.c_void_p()
+    _run(context, lib().ca_proxies, candidate_set._handle._ptr, ctypes.byref(sv), ctypes.byref(opts),
+         ctypes.byref(out))
+    del keep
+    h = _Handle(out, "ca_proxy_set_destroy")
+    n = h.get("ca_proxy_set_count")
+    kinds = ctypes.cast(h.get("ca_proxy_set_kinds"), ctypes.POINTER(ctypes.c_int32))
+    c = ctypes.cast(h.get("ca_proxy_set_centers"), ctypes.POINTER(ctypes.c_double))
+    r = ctypes.cast(h.get("ca_proxy_set_radii"), ctypes.POINTER(ctypes.c_double))
+    primitives = []
+    for i in range(n):
+        a, b = tuple(c[6 * i + k] for k in range(3)), tuple(c[6 * i + 3 + k] for k in range(3))
+        if kinds[i] == 1:
+            primitives.append({"kind": "capsule", "a": a, "radius_a": r[2 * i], "b": b, "radius_b": r[2 * i + 1]})
+        else:
+            primitives.append({"kind": "sphere", "center": a, "radius": r[2 * i]})
+    stats = output_struct(_ProxyStats)
+    status = h._lib.ca_proxy_set_stats(h._ptr, ctypes.byref(stats))
+    if status:
+        raise CoverageAxisError(status, "ca_proxy_set_stats failed")
+    return Proxies(primitives, struct_dict(stats))
 
 
 def _column(values):

@@ -85,3 +85,16 @@ class _CorrespondenceOptions(Structure):
 class _RigOptions(Structure):
     _fields_ = [("struct_size", c_uint32), ("root", c_int64), ("max_joints", c_uint32), ("joint_spacing", c_double),
                 ("min_branch", c_double), ("smoothing", c_double)]
+
+
+class _ProxyOptions(Structure):
+    _fields_ = [("struct_size", c_uint32), ("shapes", c_int32), ("mode", c_int32), ("count", c_uint32),
+                ("surface_samples", c_uint32), ("evaluate_samples", c_uint32), ("volume_samples", c_uint32),
+                ("seed", c_uint64)]
+
+
+class _ProxyStats(Structure):
+    _fields_ = [("struct_size", c_uint32)] + [(name, c_double) for name in (
+        "hd_surface_to_proxies", "mean_surface_to_proxies", "hd_proxies_to_surface", "mean_proxies_to_surface",
+        "hd_two_sided", "outside_bound", "skeleton_outside", "union_volume", "outside_volume", "radius_change",
+        "diagonal")] + [("candidates", c_uint64), ("surface_cells", c_uint64), ("time_s", c_double)]

@@ -396,6 +396,45 @@ class CommonTest(unittest.TestCase):
         self.assertEqual(e.exception.status, ca.CA_ERROR_INVALID_ARGUMENT)
 
 
+    def test_proxies_equal_the_cli(self):
+        import json
+        import tempfile
+        fox = os.path.join(DATA, "fox.obj")
+        with tempfile.TemporaryDirectory() as tmp:
+            out = os.path.join(tmp, "fox.json")
+            subprocess.run([os.environ["CA_CLI"], fox, "-o", os.path.join(tmp, "fox.ma"), "--quiet", "--proxies",
+                            "capsules", "--proxy-count", "8", "--proxy-mode", "conservative", "--proxies-json", out],
+                           check=True)
+            with open(out) as f:
+                cli = json.load(f)
+        v, f = read_obj(fox)
+        cset = ca.candidates(v, f)
+        sk = ca.connect(ca.select(cset))
+        px = ca.proxies(cset, sk, shapes="capsules", count=8, mode="conservative")
+        self.assertEqual(len(px), len(cli["proxies"]))
+        self.assertTrue(1 <= len(px) <= 8)
+        for mine, printed in zip(px.primitives, cli["proxies"]):
+            self.assertEqual(set(mine), set(printed))
+            for key, value in mine.items():
+                if key == "kind":
+                    self.assertEqual(value, printed[key])
+                else:  # the JSON file prints doubles exactly (shortest round trip)
+                    self.assertEqual(list(value) if isinstance(value, tuple) else value, printed[key], key)
+        for key in ("hd_two_sided", "hd_surface_to_proxies", "outside_volume", "outside_bound", "candidates"):
+            self.assertEqual(px.stats[key], cli[key], key)
+        self.assertEqual(ca.defaults("proxies")["mode"], "inscribed")
+        # lengths are checked before the call; names of modes too
+        bad = ca.Skeleton(sk.centers, list(rows(sk.radii))[:-1], sk.edges, sk.faces)
+        with self.assertRaises(ca.CoverageAxisError) as e:
+            ca.proxies(cset, bad)
+        self.assertEqual(e.exception.status, ca.CA_ERROR_INVALID_ARGUMENT)
+        with self.assertRaises(ca.CoverageAxisError) as e:
+            ca.proxies(cset, sk, mode="outside")
+        self.assertEqual(e.exception.status, ca.CA_ERROR_INVALID_ARGUMENT)
+        with self.assertRaises(ca.CoverageAxisError) as e:
+            ca.proxies(cset, sk, count=0)
+        self.assertEqual(e.exception.status, ca.CA_ERROR_INVALID_ARGUMENT)
+
 class NumpyTest(unittest.TestCase):
     """numpy in and out; runs where numpy is installed, which this run requires."""
 

@@ -162,6 +162,36 @@ TEST_CASE("write_gltf: refuses bad indices and unknown extensions, writes a skel
     CHECK(doc["nodes"][0].count("mesh") == 0);
 }
 
+TEST_CASE("write_gltf: engine proxies are nodes under \"proxies\" with their parameters in extras") {
+    const caio::SkeletonData s = tetrahedron();
+    caio::ProxyData sphere, capsule;
+    sphere.a[0] = 1, sphere.a[1] = 2, sphere.a[2] = 3, sphere.radius_a = 0.5;
+    capsule.capsule = true;
+    capsule.a[0] = -1, capsule.radius_a = 0.25;
+    capsule.b[0] = 3, capsule.b[2] = 2, capsule.radius_b = 0.75;
+    std::string err;
+    const std::string path = temp_path("proxies.gltf");
+    REQUIRE(caio::write_gltf(path, s, err, {sphere, capsule}));
+    const nlohmann::json doc = nlohmann::json::parse(slurp(path));
+    std::filesystem::remove(path);
+    REQUIRE(doc["scenes"][0]["nodes"].size() == 2);
+    const nlohmann::json& group = doc["nodes"][doc["scenes"][0]["nodes"][1].get<size_t>()];
+    CHECK(group["name"] == "proxies");
+    REQUIRE(group["children"].size() == 2);
+    const nlohmann::json& a = doc["nodes"][group["children"][0].get<size_t>()];
+    const nlohmann::json& b = doc["nodes"][group["children"][1].get<size_t>()];
+    CHECK(a["extras"] == nlohmann::json{{"kind", "sphere"}, {"center", {1.0, 2.0, 3.0}}, {"radius", 0.5}});
+    CHECK(a["mesh"] == 0);
+    CHECK(a["scale"] == nlohmann::json{0.5, 0.5, 0.5});
+    CHECK(b["extras"] == nlohmann::json{{"kind", "capsule"}, {"a", {-1.0, 0.0, 0.0}}, {"radius_a", 0.25},
+                                        {"b", {3.0, 0.0, 2.0}}, {"radius_b", 0.75}});
+    CHECK(b["translation"] == nlohmann::json{1.0, 0.0, 1.0});   // the segment's midpoint
+    CHECK(b.count("mesh") == 0);
+    capsule.radius_b = std::nan("");
+    CHECK_FALSE(caio::write_gltf(path, s, err, {capsule}));
+    CHECK(err.find("NaN") != std::string::npos);
+}
+
 TEST_CASE("automatic_view: the direction of the largest projected bounding-box area") {
     caio::MeshData m;
     m.positions = {0, 0, 0, 1, 2, 4};  // extents 1, 2, 4: face areas (8, 4, 2)

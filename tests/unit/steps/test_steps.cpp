@@ -60,6 +60,19 @@ TEST_CASE("defaults: every field of the C option structs is the C++ option struc
     CHECK(e.envelope_samples == ec.envelope_samples);
     CHECK(e.seed == ec.seed);
 
+    ca_proxy_options px;
+    ca_proxy_options_init(&px);
+    const ca::ProxyOptions pc{};
+    CHECK(px.shapes == int32_t(pc.shapes));
+    CHECK(px.mode == int32_t(pc.mode));
+    CHECK(px.count == pc.count);
+    CHECK(px.surface_samples == pc.surface_samples);
+    CHECK(px.evaluate_samples == pc.evaluate_samples);
+    CHECK(px.volume_samples == pc.volume_samples);
+    CHECK(px.seed == pc.seed);
+    CHECK(px.shapes == CA_PROXY_SHAPES_CAPSULES);
+    CHECK(px.mode == CA_PROXY_INSCRIBED);
+
     ca_surface_view v;
     ca_surface_view_init(&v);
     CHECK(v.point_normals == int32_t(ca::SurfaceInput{}.point_normals));

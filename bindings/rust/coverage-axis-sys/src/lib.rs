@@ -40,6 +40,12 @@ pub const CA_EFFORT_PROVE: i32 = 1;
 pub const CA_CONNECT_POWER: i32 = 0;
 pub const CA_CONNECT_MEDIAL: i32 = 1;
 pub const CA_CONNECT_AUTO: i32 = 2;
+pub const CA_PROXY_SHAPES_SPHERES: i32 = 0;
+pub const CA_PROXY_SHAPES_CAPSULES: i32 = 1;
+pub const CA_PROXY_INSCRIBED: i32 = 0;
+pub const CA_PROXY_CONSERVATIVE: i32 = 1;
+pub const CA_PROXY_SPHERE: i32 = 0;
+pub const CA_PROXY_CAPSULE: i32 = 1;
 
 #[repr(C)]
 pub struct ca_context {
@@ -71,6 +77,10 @@ pub const CA_INFLUENCES: usize = 4;
 pub const CA_NEAREST_BALL: i32 = 0;
 pub const CA_NEAREST_EDGE: i32 = 1;
 pub const CA_NEAREST_FACE: i32 = 2;
+#[repr(C)]
+pub struct ca_proxy_set {
+    _opaque: [u8; 0],
+}
 
 pub type ca_log_fn = Option<unsafe extern "C" fn(user: *mut c_void, level: i32, message: *const c_char)>;
 pub type ca_progress_fn =
@@ -306,6 +316,35 @@ ca_struct!(ca_rig_options {
     smoothing: f64,
 });
 
+ca_struct!(ca_proxy_options {
+    struct_size: u32,
+    shapes: i32,
+    mode: i32,
+    count: u32,
+    surface_samples: u32,
+    evaluate_samples: u32,
+    volume_samples: u32,
+    seed: u64,
+});
+
+ca_struct!(#[derive(Debug, Default)] ca_proxy_stats {
+    struct_size: u32,
+    hd_surface_to_proxies: f64,
+    mean_surface_to_proxies: f64,
+    hd_proxies_to_surface: f64,
+    mean_proxies_to_surface: f64,
+    hd_two_sided: f64,
+    outside_bound: f64,
+    skeleton_outside: f64,
+    union_volume: f64,
+    outside_volume: f64,
+    radius_change: f64,
+    diagonal: f64,
+    candidates: u64,
+    surface_cells: u64,
+    time_s: f64,
+});
+
 /// Every struct this crate declares, in header order.
 pub fn layouts() -> Vec<StructLayout> {
     vec![
@@ -321,6 +360,8 @@ pub fn layouts() -> Vec<StructLayout> {
         ca_evaluation::layout(),
         ca_correspondence_options::layout(),
         ca_rig_options::layout(),
+        ca_proxy_options::layout(),
+        ca_proxy_stats::layout(),
     ]
 }
 
@@ -455,4 +496,18 @@ extern "C" {
     pub fn ca_rig_vertex_joints(rig: *const ca_rig) -> *const u32;
     pub fn ca_rig_vertex_weights(rig: *const ca_rig) -> *const f64;
     pub fn ca_rig_vertex_branches(rig: *const ca_rig) -> *const u32;
+    pub fn ca_proxy_options_defaults(options: *mut ca_proxy_options, struct_size: u32) -> ca_status;
+    pub fn ca_proxies(
+        ctx: *mut ca_context,
+        set: *const ca_candidate_set,
+        skeleton: *const ca_skeleton_view,
+        options: *const ca_proxy_options,
+        out: *mut *mut ca_proxy_set,
+    ) -> ca_status;
+    pub fn ca_proxy_set_destroy(proxies: *mut ca_proxy_set);
+    pub fn ca_proxy_set_count(proxies: *const ca_proxy_set) -> usize;
+    pub fn ca_proxy_set_kinds(proxies: *const ca_proxy_set) -> *const i32;
+    pub fn ca_proxy_set_centers(proxies: *const ca_proxy_set) -> *const f64;
+    pub fn ca_proxy_set_radii(proxies: *const ca_proxy_set) -> *const f64;
+    pub fn ca_proxy_set_stats(proxies: *const ca_proxy_set, stats: *mut ca_proxy_stats) -> ca_status;
 }

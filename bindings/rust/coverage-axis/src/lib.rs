@@ -29,7 +29,8 @@ use std::os::raw::{c_char, c_void};
 use std::ptr;
 use std::sync::Arc;
 
-pub use sys::{ca_evaluation as Evaluation, ca_select_stats as SelectStats, ca_skeleton_stats as SkeletonStats};
+pub use sys::{ca_evaluation as Evaluation, ca_proxy_stats as ProxyStats, ca_select_stats as SelectStats,
+              ca_skeleton_stats as SkeletonStats};
 
 /// Why a call failed: the library's `ca_status` codes (`CA_ERROR_*`, pinned values) as an enum.
 /// `Unknown` keeps a code this crate does not name (a newer library's).
@@ -520,6 +521,70 @@ impl EvaluateOptions {
     }
 }
 
+/// What engine proxies may be: spheres only, or tapered capsules and spheres.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ProxyShapes {
+    Spheres = sys::CA_PROXY_SHAPES_SPHERES as isize,
+    Capsules = sys::CA_PROXY_SHAPES_CAPSULES as isize,
+}
+
+/// Inscribed proxies stay inside the shape; conservative ones contain the whole surface.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ProxyMode {
+    Inscribed = sys::CA_PROXY_INSCRIBED as isize,
+    Conservative = sys::CA_PROXY_CONSERVATIVE as isize,
+}
+
+/// Options of [`Context::proxies`]; `default()` is the library's defaults.
+#[derive(Clone, Copy)]
+pub struct ProxyOptions {
+    raw: sys::ca_proxy_options,
+}
+
+impl Default for ProxyOptions {
+    fn default() -> Self {
+        ProxyOptions { raw: defaults!(sys::ca_proxy_options, sys::ca_proxy_options_defaults) }
+    }
+}
+
+impl ProxyOptions {
+    pub fn new() -> Self {
+        Self::default()
+    }
+    pub fn shapes(mut self, shapes: ProxyShapes) -> Self {
+        self.raw.shapes = shapes as i32;
+        self
+    }
+    pub fn mode(mut self, mode: ProxyMode) -> Self {
+        self.raw.mode = mode as i32;
+        self
+    }
+    /// At most this many primitives (>= 1).
+    pub fn count(mut self, k: u32) -> Self {
+        self.raw.count = k;
+        self
+    }
+    pub fn surface_samples(mut self, n: u32) -> Self {
+        self.raw.surface_samples = n;
+        self
+    }
+    pub fn evaluate_samples(mut self, n: u32) -> Self {
+        self.raw.evaluate_samples = n;
+        self
+    }
+    pub fn volume_samples(mut self, n: u32) -> Self {
+        self.raw.volume_samples = n;
+        self
+    }
+    pub fn seed(mut self, seed: u64) -> Self {
+        self.raw.seed = seed;
+        self
+    }
+    pub fn raw(&self) -> &sys::ca_proxy_options {
+        &self.raw
+    }
+}
+
 // ---- context ---------------------------------------------------------------------------------
 
 type ProgressFn = dyn FnMut(&str, f64) -> bool + Send;
@@ -790,6 +855,71 @@ impl Context {
         let mut out = ptr::null_mut();
         self.check(unsafe { sys::ca_rig_build(self.ptr(), &surface.raw, &view, &options.raw, &mut out) })?;
         Ok(Rig { raw: out })
+    }
+
+    /// Engine proxies: at most `options.count` spheres, or tapered capsules and spheres, chosen
+    /// from the skeleton over the set's mesh (docs/proxies.md).
+    pub fn proxies(&self, set: &CandidateSet, skeleton: &Skeleton, options: &ProxyOptions) -> Result<Proxies> {
+        let mut view: sys::ca_skeleton_view = defaults!(sys::ca_skeleton_view, sys::ca_skeleton_view_defaults);
+        check(unsafe { sys::ca_skeleton_get_view(skeleton.raw, &mut view) })?;
+        let mut out = ptr::null_mut();
+        self.check(unsafe { sys::ca_proxies(self.ptr(), set.raw, &view, &options.raw, &mut out) })?;
+        Ok(Proxies { raw: out })
+    }
+}
+
+/// One engine proxy in the input's units: a sphere (`a`, `radius_a`; `b` equals `a`) or the
+/// tapered capsule that is the convex hull of the balls (`a`, `radius_a`) and (`b`, `radius_b`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Proxy {
+    pub capsule: bool,
+    pub a: [f64; 3],
+    pub radius_a: f64,
+    pub b: [f64; 3],
+    pub radius_b: f64,
+}
+
+/// Engine proxies ([`Context::proxies`]); they hold nothing of the other objects.
+pub struct Proxies {
+    raw: *mut sys::ca_proxy_set,
+}
+
+// SAFETY: results are immutable and may be read from several threads at once (docs/abi.md).
+unsafe impl Send for Proxies {}
+unsafe impl Sync for Proxies {}
+
+impl Drop for Proxies {
+    fn drop(&mut self) {
+        unsafe { sys::ca_proxy_set_destroy(self.raw) }
+    }
+}
+
+impl Proxies {
+    pub fn len(&self) -> usize {
+        unsafe { sys::ca_proxy_set_count(self.raw) }
+    }
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+    pub fn primitives(&self) -> Vec<Proxy> {
+        let n = self.len();
+        let kinds = unsafe { values(sys::ca_proxy_set_kinds(self.raw), n) };
+        let centers: &[[f64; 6]] = unsafe { items(sys::ca_proxy_set_centers(self.raw), n) };
+        let radii: &[[f64; 2]] = unsafe { items(sys::ca_proxy_set_radii(self.raw), n) };
+        (0..n)
+            .map(|i| Proxy {
+                capsule: kinds[i] == sys::CA_PROXY_CAPSULE,
+                a: [centers[i][0], centers[i][1], centers[i][2]],
+                radius_a: radii[i][0],
+                b: [centers[i][3], centers[i][4], centers[i][5]],
+                radius_b: radii[i][1],
+            })
+            .collect()
+    }
+    pub fn stats(&self) -> ProxyStats {
+        let mut stats = ProxyStats { struct_size: std::mem::size_of::<ProxyStats>() as u32, ..Default::default() };
+        check(unsafe { sys::ca_proxy_set_stats(self.raw, &mut stats) }).expect("stats of live proxies");
+        stats
     }
 }
 

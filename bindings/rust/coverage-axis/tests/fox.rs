@@ -257,3 +257,46 @@ fn rig_and_correspondence() {
     let err = ctx.correspond(&surface, &skeleton, Some(0.0)).err().unwrap();
     assert_eq!(err.status, Status::InvalidArgument);
 }
+
+/// min over t of |x - c(t)| - r(t) (convex in t: ternary search), the test's own capsule distance.
+fn capsule_distance(p: &Proxy, x: [f64; 3]) -> f64 {
+    let f = |t: f64| {
+        let d: Vec<f64> = (0..3).map(|k| x[k] - (p.a[k] + t * (p.b[k] - p.a[k]))).collect();
+        (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt() - (p.radius_a + t * (p.radius_b - p.radius_a))
+    };
+    let (mut lo, mut hi) = (0.0, 1.0);
+    for _ in 0..100 {
+        let (m1, m2) = (lo + (hi - lo) / 3.0, hi - (hi - lo) / 3.0);
+        if f(m1) <= f(m2) {
+            hi = m2;
+        } else {
+            lo = m1;
+        }
+    }
+    f(0.5 * (lo + hi)).min(f(0.0)).min(f(1.0))
+}
+
+#[test]
+fn conservative_proxies_hold_the_vertices() {
+    let (v, f) = read_obj(&data("fox.obj"));
+    let ctx = Context::builder().threads(2).build().unwrap();
+    let surface = Surface::mesh(&v, &f);
+    let set = ctx.candidates(&surface, &CandidateOptions::new().cover_samples(400)).unwrap();
+    let selection = ctx.select(&set, &SelectOptions::new()).unwrap();
+    let skeleton = ctx.connect(&set, &selection, &ConnectOptions::new()).unwrap();
+    let options = ProxyOptions::new().mode(ProxyMode::Conservative).count(6).evaluate_samples(2000).volume_samples(5000);
+    let proxies = ctx.proxies(&set, &skeleton, &options).unwrap();
+    drop(set);
+    assert!(!proxies.is_empty() && proxies.len() <= 6);
+    let primitives = proxies.primitives();
+    for x in &v {
+        let best = primitives.iter().map(|p| capsule_distance(p, *x)).fold(f64::INFINITY, f64::min);
+        assert!(best <= 1e-9, "vertex {:?} outside every proxy ({})", x, best);
+    }
+    let stats = proxies.stats();
+    assert!(stats.hd_two_sided > 0.0 && stats.outside_volume > 0.0, "{:?}", stats);
+    let set = ctx.candidates(&surface, &CandidateOptions::new().cover_samples(400)).unwrap();
+    let error = ctx.proxies(&set, &skeleton, &ProxyOptions::new().count(0)).err().unwrap();
+    assert_eq!(error.status, Status::InvalidArgument);
+    assert!(error.message.contains("count"), "{}", error.message);
+}

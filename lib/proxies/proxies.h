@@ -1,0 +1,133 @@
+// proxies.h: engine proxies from a medial skeleton (docs/proxies.md): at most K convex primitives,
+// spheres or tapered capsules (two balls and their medial cone: the convex hull of the two
+// spheres), that a game engine takes as colliders, broad-phase volumes or shadow casters.
+// Two modes: `inscribed` primitives stay inside the shape (no farther out than the skeleton's own
+// balls and edges), `conservative` primitives together contain every point of the surface.
+// The pipeline, one file per step:
+//   proxy_candidates.cpp  the primitives to choose from: every ball, every edge, and capsules
+//                         between balls further apart along the skeleton's edges
+//   proxy_outside.cpp     how far each candidate may reach outside the shape (a proven bound from
+//                         the depth of its balls' centres) and how far the skeleton does reach
+//   surface_cells.cpp     the surface cut into small triangles whose corners are the samples
+//   choose_proxies.cpp    the choice of at most K candidates at the least error (greedy, swaps)
+//   proxy_stats.cpp       the achieved errors and the volume outside the shape
+//   proxies.cpp           the whole step: candidates, choice, conservative growth, stats
+#pragma once
+#include "common.h"
+#include "skeleton.h"
+
+#include <memory>
+
+namespace ca {
+
+class WindingNumber;
+class MeshDistance;
+
+enum class ProxyKind : int32_t { sphere = 0, capsule = 1 };
+// What the output may hold: spheres only, or tapered capsules and spheres.
+enum class ProxyShapes : int32_t { spheres = 0, capsules = 1 };
+enum class ProxyMode : int32_t { inscribed = 0, conservative = 1 };
+
+struct ProxyOptions {
+    ProxyShapes shapes = ProxyShapes::capsules;
+    ProxyMode mode = ProxyMode::inscribed;
+    uint32_t count = 16;               // K >= 1: at most this many primitives
+    uint32_t surface_samples = 20000;  // about this many corners of the surface cells (surface_cells.cpp)
+    uint32_t evaluate_samples = 20000; // the stats: surface and primitive-boundary samples each
+    uint32_t volume_samples = 100000;  // the stats: Monte Carlo points for the volume outside the shape
+    uint64_t seed = 1;
+    int32_t threads = 0;               // 0 = all cores
+};
+
+// One primitive: a sphere (ball a; b equals a) or the convex hull of balls a and b.
+struct Proxy {
+    ProxyKind kind = ProxyKind::sphere;
+    Ball a, b;
+};
+
+// Exact signed distance (negative inside) to a primitive.
+double proxy_distance(const Proxy& p, const Vec3& x);
+
+struct ProxyStats {
+    // percent of the surface's bounding-box diagonal, as evaluate.h measures a skeleton
+    double hd_surface_to_proxies = 0, mean_surface_to_proxies = 0;
+    double hd_proxies_to_surface = 0, mean_proxies_to_surface = 0;
+    double hd_two_sided = 0;
+    // proven bound of how far any point of a primitive lies outside the shape, and how far the
+    // skeleton's own balls and edges reach outside at least (measured at points of them; inscribed:
+    // the first is at most the second)
+    double outside_bound = 0, skeleton_outside = 0;  // percent of the diagonal
+    // Monte Carlo over the primitives' bounding box: volume of their union, and of its part
+    // outside the shape (winding-number inside test); internal units cubed
+    double union_volume = 0, outside_volume = 0;
+    // conservative: the most any primitive was grown to contain its surface cells (percent of the
+    // diagonal); inscribed: the most any candidate was shrunk
+    double radius_change = 0;
+    size_t candidates = 0;             // primitives chosen from
+    size_t surface_cells = 0;          // triangles the surface was cut into
+    double diagonal = 0;               // internal units
+    double time_s = 0;
+};
+
+struct ProxyResult {
+    std::vector<Proxy> proxies;        // internal units
+    ProxyStats stats;
+};
+
+// ---- the steps (internal units) ----
+
+// The surface as small triangles (surface_cells.cpp): corner points and, per cell, its three
+// corners. Each mesh triangle is cut into n x n similar triangles, n from its longest edge and a
+// spacing that gives about `target` corners over the whole mesh.
+struct SurfaceCells {
+    std::vector<Vec3> points;
+    std::vector<Tri> cells;
+};
+SurfaceCells surface_cells(const Mesh& mesh, size_t target);
+
+// The candidates (proxy_candidates.cpp): a sphere per ball; with capsules, a capsule per edge and
+// per pair of balls joined by a path of edges (the nearest few along the paths from each ball).
+std::vector<Proxy> proxy_candidates(const Skeleton& skeleton, ProxyShapes shapes);
+
+// The inside test and distances the outside bounds need (proxy_outside.cpp).
+struct ShapeQueries {
+    std::shared_ptr<const WindingNumber> winding;
+    std::shared_ptr<const MeshDistance> distance;
+    double depth(const Vec3& x) const;  // distance to the surface, negative outside
+};
+
+// A bound of the farthest any point of p lies outside the shape (0: all inside): every point of
+// p lies in a ball of the segment's interpolation, and a ball whose centre is at depth D sticks
+// out by at most r - D; that is bounded between samples along the segment by its Lipschitz slope.
+// A bound at most `enough` is not refined further (the answer is then some value <= enough).
+double outside_bound(const Proxy& p, const ShapeQueries& shape, double enough = 0);
+
+// How far p reaches outside the shape at least: the largest distance outside the shape over points
+// of p (Fibonacci directions on a sphere's ball; on a capsule, on the spheres interpolated strictly
+// between its balls, which are measured as spheres of their own). The true excess is never below it.
+double outside_measured(const Proxy& p, const ShapeQueries& shape);
+
+// p with both radii reduced by `by` (at least 0): every signed distance grows by `by` while the
+// radii stay positive, and the primitive shrinks within that offset otherwise.
+Proxy shrunk(const Proxy& p, double by);
+
+// The choice (choose_proxies.cpp): cost[c * points + i] is candidate c's error at point i.
+// Minimises the largest error over the points where each point takes its best chosen candidate
+// (then the sum of squares), with at most `count` candidates. No candidate is added once the
+// largest error is within `tolerance` of what all candidates together reach, nor one that lowers
+// neither by `min_gain` (a fraction); a chosen one is removed when the largest error stays within
+// that reach (or as it was) and the sum grows by less than `min_gain` without it.
+// Deterministic: ties go to the lower index.
+std::vector<uint32_t> choose_proxies(const std::vector<float>& cost, size_t candidates, size_t points,
+                                     size_t count, double tolerance, double min_gain, int threads);
+
+// The stats (proxy_stats.cpp) of `proxies` against the mesh.
+Status proxy_stats(const Mesh& mesh, const std::vector<Proxy>& proxies, const ShapeQueries& shape,
+                   const ProxyOptions& opt, const Monitor& monitor, ProxyStats& out);
+
+// The whole step (proxies.cpp) on a triangle mesh in internal units with its queries (built here
+// when null) and a skeleton of that shape.
+Status make_proxies(const Mesh& mesh, ShapeQueries shape, const Skeleton& skeleton, const ProxyOptions& opt,
+                    const Monitor& monitor, ProxyResult& out);
+
+}  // namespace ca
