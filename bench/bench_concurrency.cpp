@@ -10,7 +10,7 @@
 // each, and whether every job gave the skeleton the single run gave (the same seed). Then the
 // exact cover's solver calls alone (Clp's LP, a node-limited CBC search) by N threads at once.
 // usage: bench_concurrency [DATA_ROOT] [--only NAME[,NAME...]]   (default ../shared/data; the
-// names: the inputs' file stems, torus_2m, solver)
+// names: the inputs' file stems, torus_2m, solver_lp, solver_cbc)
 #include "bench_common.h"
 #include "bench_inputs.h"
 
@@ -191,7 +191,7 @@ double in_threads(int n, Solve&& solve) {
 // The solver calls of the exact cover alone: Clp's LP (lp_duals) and a node-limited CBC search
 // (run_cbc) on one random covering problem, by N threads at once. Without a lock between them N
 // calls on N cores take as long as one; behind one process-wide lock N times as long.
-void solver_calls(const std::vector<int>& ns) {
+void solver_calls(const std::vector<int>& ns, const std::string& only) {
     const ca::sc::Problem P = random_cover(500, 1200, 8);
     const std::vector<uint32_t> greedy = ca::sc::greedy_cover(P);
     ca::sc::CbcSettings cs;
@@ -202,12 +202,12 @@ void solver_calls(const std::vector<int>& ns) {
     std::printf("\n## The solver calls alone, N threads at once (a random covering problem, 500 rows x 1200 columns; the least wall time of 3 tries)\n\n");
     std::printf("| call | N | wall s | wall / wall at N = 1 |\n|---|---|---|---|\n");
     double lp1 = 0, cbc1 = 0;
-    for (int n : ns) {
+    for (int n : bench::selected(only, "solver_lp") ? ns : std::vector<int>{}) {
         const double lp = in_threads(n, [&] { (void)ca::sc::lp_duals(P, 0); });
         if (n == 1) lp1 = lp;
         std::printf("| Clp LP (lp_duals) | %d | %.3f | %.2f |\n", n, lp, lp / lp1);
     }
-    for (int n : ns) {
+    for (int n : bench::selected(only, "solver_cbc") ? ns : std::vector<int>{}) {
         const double cbc = in_threads(n, [&] { (void)ca::sc::run_cbc(P, greedy.size(), cs); });
         if (n == 1) cbc1 = cbc;
         std::printf("| CBC, 10 nodes (run_cbc) | %d | %.3f | %.2f |\n", n, cbc, cbc / cbc1);
@@ -271,7 +271,7 @@ int main(int argc, char** argv) {
                         th.same && pr.same ? "yes" : "NO");
         }
     }
-    if (bench::selected(only, "solver")) solver_calls(ns);
+    if (bench::selected(only, "solver_lp") || bench::selected(only, "solver_cbc")) solver_calls(ns, only);
     if (worst < 1e300)
         std::printf("\nlowest throughput ratio threads / processes: %.2f (target >= 0.8); peak RSS of this process %.0f MB\n",
                     worst, bench::peak_rss_mb());

@@ -1,6 +1,7 @@
 // test_concurrent_contexts.cpp: several contexts in threads of one process run the whole pipeline
-// through the C ABI at once (the exact solver at the prove effort, so that Clp's LPs and CBC run
-// in every job) and each gives exactly what a run alone gave: the same balls, the same skeleton.
+// through the C ABI at once (the exact solver at the prove effort with a small delta, so that
+// Clp's LPs run in every job and CBC in most) and each gives exactly what a run alone gave: the
+// same balls, the same skeleton.
 // Built in the normal suite, and in a build with -DCA_TSAN=ON (`make tsan`) under ThreadSanitizer,
 // which then also reports any data race between the contexts.
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
