@@ -50,7 +50,7 @@ inline std::vector<uint32_t> valid_triangles(const Mesh& mesh) {
 // appending: the same nodes in the same order as one thread builds.
 // `stop` is tested at every node of more than kStopCheckItems triangles and every
 // kStopCheckItems centroids, so at most O(kStopCheckItems log kStopCheckItems) work separates two
-// tests; it may be called from both threads. A stopped build returns an empty tree.
+// tests; it may be called from every thread. A stopped build returns an empty tree.
 constexpr uint32_t kStopCheckItems = 4096;
 // Below this many leaves' worth of triangles a subtree is not split further for the threads.
 constexpr uint32_t kParallelItemsPerLeaf = 64;
