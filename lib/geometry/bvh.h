@@ -44,10 +44,11 @@ inline std::vector<uint32_t> valid_triangles(const Mesh& mesh) {
 
 // Each node's box is the union of its children's (leaves: of their triangles' corners), and
 // the split compares precomputed centroids, so a build costs O(F log F) comparisons of doubles.
-// With threads > 1 the top levels are split first and the subtrees below them (the least power
-// of two >= threads, at most 2^kMaxParallelLevels, each over more than kParallelItemsPerLeaf
-// leaves' worth of triangles) are built at once, each into a vector of its own, renumbered on
-// appending: the same nodes in the same order as one thread builds.
+// With threads > 1 the top levels are split first (to the least power of two >= threads
+// subtrees, at most 2^kMaxParallelLevels; a node of at most kParallelItemsPerLeaf leaves' worth
+// of triangles is not split there) and the subtrees below them are built at once, each into a
+// vector of its own, renumbered on appending: the same nodes in the same order as one thread
+// builds.
 // `stop` is tested at every node of more than kStopCheckItems triangles and every
 // kStopCheckItems centroids, so at most O(kStopCheckItems log kStopCheckItems) work separates two
 // tests; it may be called from every thread. A stopped build returns an empty tree.
