@@ -33,7 +33,7 @@ test: build
 tsan: deps
 	@cmake -S . -B build-tsan -DCA_TSAN=ON -DCA_BUILD_BINDINGS=OFF -DCA_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
 	@cmake --build build-tsan -j $(JOBS) --target test_concurrent_contexts
-	@cd build-tsan && TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" ctest --output-on-failure -R '^concurrent_contexts$$'
+	@cd build-tsan && ctest --output-on-failure -R '^concurrent_contexts$$'
 
 # the Blender add-on as an installable zip, the Python binding and the library bundled inside
 blender-addon: build
