@@ -7,7 +7,7 @@ DEMO_MODEL ?= tests/data/fox.obj
 DEMO_PREVIEW ?= --up z
 DATA ?= ../shared/data
 
-.PHONY: all deps configure build demo test bench install package clean fuzz fuzz-build fuzz-pipeline fuzz-long fuzz-assimp blender-addon test-blender test-distributed
+.PHONY: all deps configure build demo test tsan bench install package clean fuzz fuzz-build fuzz-pipeline fuzz-long fuzz-assimp blender-addon test-blender test-distributed
 
 all: build
 
@@ -27,6 +27,13 @@ demo: build
 
 test: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# the concurrency stress test (several contexts in threads, CBC and Clp included) under
+# ThreadSanitizer, in its own build folder
+tsan: deps
+	@cmake -S . -B build-tsan -DCA_TSAN=ON -DCA_BUILD_BINDINGS=OFF -DCA_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
+	@cmake --build build-tsan -j $(JOBS) --target test_concurrent_contexts
+	@cd build-tsan && ctest --output-on-failure -R '^concurrent_contexts$$'
 
 # the Blender add-on as an installable zip, the Python binding and the library bundled inside
 blender-addon: build

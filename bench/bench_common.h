@@ -156,13 +156,17 @@ inline ca_surface_view surface_view(const caio::MeshData& mesh) {
     return v;
 }
 
+// The pipeline in a context of its own with `threads` worker threads (0: all cores).
 inline PipelineRun run_pipeline(const caio::MeshData& mesh, const ca_candidate_options& co, const ca_select_options& so,
                                 const ca_connect_options& cop, bool evaluate = false,
                                 const ca_connect_options* alt = nullptr, const ca_connect_options* fitted = nullptr,
-                                int32_t point_normals = CA_POINT_NORMALS_TRUSTED) {
+                                int32_t point_normals = CA_POINT_NORMALS_TRUSTED, int32_t threads = 0) {
     PipelineRun r;
+    ca_context_desc desc;
+    ca_context_desc_init(&desc);
+    desc.threads = threads;
     ca_context* ctx = nullptr;
-    ca_context_create(nullptr, &ctx);
+    ca_context_create(&desc, &ctx);
     ca_surface_view v = surface_view(mesh);
     v.point_normals = point_normals;
     ca_candidate_set* set = nullptr;
@@ -239,10 +243,11 @@ struct Outcome {
     double t_read = 0, t_candidates = 0, t_select = 0, t_connect = 0;   // the run's phases
 };
 
-// Reads `path` and runs the pipeline in a child process (fork): its time (read + pipeline) and
-// peak RSS are its own, whatever ran before in this process.
+// Reads `path` and runs the pipeline in a child process (fork) with `threads` worker threads (0:
+// all cores): its time (read + pipeline) and peak RSS are its own, whatever ran before in this
+// process.
 inline Outcome run_isolated(const std::string& path, const ca_candidate_options& co, const ca_select_options& so,
-                     const ca_connect_options& cop, double& peak_mb) {
+                     const ca_connect_options& cop, double& peak_mb, int32_t threads = 0) {
     Outcome o;
     int fd[2];
     peak_mb = 0;
@@ -257,7 +262,7 @@ inline Outcome run_isolated(const std::string& path, const ca_candidate_options&
         o.t_read = seconds_since(t);
         if (o.read_ok) {
             o.triangles = mesh.triangles.size() / 3;
-            PipelineRun r = run_pipeline(mesh, co, so, cop);
+            PipelineRun r = run_pipeline(mesh, co, so, cop, false, nullptr, nullptr, CA_POINT_NORMALS_TRUSTED, threads);
             o.status = r.status;
             o.balls = r.balls;
             o.t_candidates = r.t_candidates;

@@ -3,10 +3,11 @@
 // the input (evaluation protocol of docs/evaluation.md, % of the bbox diagonal); the same selection
 // connected by the other route (power diagram) and measured by the same evaluator, which is the
 // measurement behind the default route for meshes. Also the two Coverage Axis reference
-// instances (the reference code's own samples and candidates) against their known optima.
-// usage: bench_pipeline [DATA_ROOT] [--fit-only]   (default ../shared/data; skipped when missing).
+// instances (the reference code's own samples and candidates) against their known optima, and the
+// pipeline's time at 1 and at 2 worker threads with the speed-up.
+// usage: bench_pipeline [DATA_ROOT] [--fit-only | --threads-only]   (default ../shared/data; skipped when missing).
 // --fit-only: the pipeline and its fitted twin only (no power route, Delaunay step or reference
-// instances), for comparing fits.
+// instances), for comparing fits. --threads-only: only the times at 1 and 2 worker threads.
 #include "bench_common.h"
 #include "bench_surface.h"
 #include "delaunay.h"
@@ -16,11 +17,41 @@
 #include <cmath>
 #include <vector>
 
+namespace {
+
+// The same pipeline (without the evaluation) at 1 and at 2 worker threads.
+void threads_table(const std::vector<std::string>& models, const ca_candidate_options& co, const ca_select_options& so,
+                   const ca_connect_options& cop) {
+    std::printf("\n## The pipeline at 1 and 2 worker threads (ca_context_desc.threads)\n\n");
+    std::printf("| model | 1 thread s | 2 threads s | speed-up | same balls |\n|---|---|---|---|---|\n");
+    double sum1 = 0, sum2 = 0;
+    for (const std::string& path : models) {
+        caio::MeshData mesh;
+        std::string err;
+        if (!caio::read_mesh(path, mesh, err)) continue;
+        const bench::PipelineRun r1 = bench::run_pipeline(mesh, co, so, cop, false, nullptr, nullptr, CA_POINT_NORMALS_TRUSTED, 1);
+        const bench::PipelineRun r2 = bench::run_pipeline(mesh, co, so, cop, false, nullptr, nullptr, CA_POINT_NORMALS_TRUSTED, 2);
+        if (r1.status != CA_OK || r2.status != CA_OK) {
+            std::printf("| %s | failed: %s |\n", bench::stem(path).c_str(), (r1.status != CA_OK ? r1 : r2).message.c_str());
+            continue;
+        }
+        const double t1 = r1.t_candidates + r1.t_select + r1.t_connect, t2 = r2.t_candidates + r2.t_select + r2.t_connect;
+        sum1 += t1;
+        sum2 += t2;
+        std::printf("| %s | %.3f | %.3f | %.2f | %s |\n", bench::stem(path).c_str(), t1, t2, t2 > 0 ? t1 / t2 : 0.0,
+                    r1.balls == r2.balls && r1.edges == r2.edges && r1.faces == r2.faces ? "yes" : "NO");
+    }
+    std::printf("\nall models: %.3f s at 1 thread, %.3f s at 2 threads, speed-up %.2f\n", sum1, sum2, sum2 > 0 ? sum1 / sum2 : 0.0);
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
     std::string root = "../shared/data";
-    bool fit_only = false;
+    bool fit_only = false, threads_only = false;
     for (int i = 1; i < argc; ++i) {
         if (std::string(argv[i]) == "--fit-only") fit_only = true;
+        else if (std::string(argv[i]) == "--threads-only") threads_only = true;
         else root = argv[i];
     }
     const auto models = bench::list_files(root + "/meshes/paper", ".obj");
@@ -40,6 +71,10 @@ int main(int argc, char** argv) {
     ca_connect_options fit;
     ca_connect_options_init(&fit);
     fit.fit = 1;
+    if (threads_only) {
+        threads_table(models, co, so, cop);
+        return 0;
+    }
 
     std::printf("\n## Pipeline at the defaults (|S| 1500, Voronoi candidates of 4000 samples, delta 0.02, exact cover with the fast effort (the default), connection auto = medial route)\n\n");
     std::printf("| model | tris | |S| | |P| | |V| | optimal | gap %% | candidates s | select s | connect s | total s | Delaunay s | S->E %% | E->S %% | HD %% | power: HD %% | connect s | fitted: HD %% | fit s | uncovered |\n");
@@ -102,6 +137,8 @@ int main(int argc, char** argv) {
                 n ? hd_fit_sum / n : 0.0, n ? fit_sum / n : 0.0, fit_worst);
 
     if (fit_only) return 0;
+    threads_table(models, co, so, cop);
+
     // Reference instances: the reference implementation's samples and candidates.
     struct Ref { const char* mesh; const char* samples; const char* candidates; double delta; int known; };
     const Ref refs[] = {

@@ -1,7 +1,8 @@
 // bench_scale.cpp: a 2 000 000-triangle torus (generated, written as binary PLY) at the defaults:
 // the whole run (read + pipeline) in its own process with its peak RSS and its phases (read,
-// candidates, select, connect), then where the candidate step's time goes, each step timed alone
-// on the same input: reading, the surface preparation (validation, merging, the half-edges'
+// candidates, select, connect), at 1 and 2 worker threads and at all cores, with the speed-ups
+// over 1 thread; then where the candidate step's time goes, each step timed alone on the same
+// input: reading, the surface preparation (validation, merging, the half-edges'
 // caps and topology), the triangle tree the winding number and the distances share, the
 // winding number's far fields, surface sampling, the Delaunay step and the inside decisions.
 // usage: bench_scale [DATA_ROOT]   (the data root is not used: the input is generated)
@@ -43,14 +44,41 @@ int main() {
     ca_select_options_init(&so);
     ca_connect_options cop;
     ca_connect_options_init(&cop);
-    double peak = 0;
-    const bench::Outcome o = bench::run_isolated(path, co, so, cop, peak);
+    // the whole run at 1 and 2 worker threads and at the defaults (all cores), each in its own process
+    const int cores = ca::resolve_threads(0);
+    std::vector<int> counts = {1, 2};
+    if (cores > 2) counts.push_back(cores);
+    std::vector<bench::Outcome> runs;
+    std::vector<double> peaks;
+    for (int t : counts) {
+        double peak = 0;
+        runs.push_back(bench::run_isolated(path, co, so, cop, peak, t == cores ? 0 : t));
+        peaks.push_back(peak);
+    }
+    const bench::Outcome& o = runs.back();
     std::printf("\n## A 2 000 000-triangle torus (binary PLY) at the defaults\n\n");
-    std::printf("whole run (read + candidates + select + connect, own process): %s, %zu balls, %.2f s, peak RSS %.0f MB\n",
-                o.status == CA_OK && o.read_ok ? "skeleton" : o.message, o.balls, o.seconds, peak);
-    std::printf("\n| phase of that run | s |\n|---|---|\n| read binary PLY | %.3f |\n| candidates | %.3f |\n"
-                "| select | %.3f |\n| connect | %.3f |\n",
-                o.t_read, o.t_candidates, o.t_select, o.t_connect);
+    std::printf("whole run (read + candidates + select + connect, own process, %d threads = all cores): %s, %zu balls, %.2f s, peak RSS %.0f MB\n",
+                cores, o.status == CA_OK && o.read_ok ? "skeleton" : o.message, o.balls, o.seconds, peaks.back());
+    std::printf("\n| phase of the whole run (s) |");
+    for (int t : counts) std::printf(" %d thread%s |", t, t == 1 ? "" : "s");
+    std::printf("\n|---|");
+    for (size_t i = 0; i < counts.size(); ++i) std::printf("---|");
+    std::printf("\n");
+    auto row = [&](const char* name, double bench::Outcome::*field) {
+        std::printf("| %s |", name);
+        for (const bench::Outcome& r : runs) std::printf(" %.3f |", r.*field);
+        std::printf("\n");
+    };
+    row("read binary PLY", &bench::Outcome::t_read);
+    row("candidates", &bench::Outcome::t_candidates);
+    row("select", &bench::Outcome::t_select);
+    row("connect", &bench::Outcome::t_connect);
+    row("whole run", &bench::Outcome::seconds);
+    std::printf("| speed-up of the whole run over 1 thread |");
+    for (const bench::Outcome& r : runs) std::printf(" %.2f |", r.seconds > 0 ? runs[0].seconds / r.seconds : 0.0);
+    std::printf("\n| same skeleton (balls) as 1 thread |");
+    for (const bench::Outcome& r : runs) std::printf(" %s |", r.status == runs[0].status && r.balls == runs[0].balls ? "yes" : "NO");
+    std::printf("\n");
 
     std::printf("\n| step (timed alone) | s |\n|---|---|\n");
     caio::MeshData md;
@@ -77,7 +105,7 @@ int main() {
         ca::mesh_topology(mesh, {}, edges);
     }));
     std::unique_ptr<ca::WindingNumber> winding;
-    const int threads = ca::resolve_threads(0);   // all cores, as the pipeline builds it by default
+    const int threads = cores;   // all cores, as the pipeline builds it by default
     std::shared_ptr<const ca::detail::TriangleTree> tree;
     std::printf("| triangle tree (BVH + corners, shared by the winding number and the distances, %d threads) | %.3f |\n",
                 threads, timed([&] { tree = ca::detail::build_triangle_tree(mesh, threads); }));

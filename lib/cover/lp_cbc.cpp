@@ -1,7 +1,8 @@
 // lp_cbc.cpp: the LP relaxation's duals (Clp; whole, by column generation, or by row and column
 // generation), the LP branching proof (no_cover_within), CBC (the C interface, silenced, with a
 // cutoff and a time limit, behind the library's only process-wide mutex) and the search for a
-// cover on the LP optimal face (core_cover).
+// cover on the LP optimal face (core_cover). The Clp calls take no lock: each works on a
+// ClpSimplex of its own, so contexts in several threads solve their LPs at once.
 #include "setcover_internal.h"
 
 #include <algorithm>
@@ -22,10 +23,14 @@ namespace ca {
 namespace sc {
 
 namespace {
-// CBC parses its options through process-wide globals and is not thread-safe: every CBC (and
-// Clp) call sequence in the process goes through this one mutex. It is the library's only
-// process-wide state.
-std::mutex& coin_mutex() {
+// CBC 2.10's Cbc_newModel and Cbc_solve run CbcMain0 / CbcMain1, which parse the options through
+// process-wide globals (CbcOrClpRead_mode, the signal handler's current model): two at once can
+// misread each other's options. Every CBC model's life (create, solve, read, delete) in the
+// process therefore goes through this one mutex, the library's only process-wide state. Clp
+// needs none: a ClpSimplex keeps all of its state (factorization, pricing, random numbers) in
+// the object, Clp 1.17's function-level statics are all in debugging code compiled out of the
+// library, and CBC's own parallel search runs one ClpSimplex per thread the same way.
+std::mutex& cbc_mutex() {
     static std::mutex m;
     return m;
 }
@@ -35,7 +40,7 @@ namespace {
 using ClpModel = std::unique_ptr<ClpSimplex>;
 
 // A silenced Clp model of min 1'x, A x >= 1 (no row upper bounds), 0 <= x <= 1, for the columns
-// given column-major (colstart / rowidx). The caller holds the coin mutex. The time limit is
+// given column-major (colstart / rowidx). The time limit is
 // wall-clock time: Clp's plain limit counts the CPU time of the whole process, which the local
 // search's threads beside the LP use up faster than the clock.
 ClpModel load_cover_lp(uint32_t rows, const std::vector<CoinBigIndex>& colstart, const std::vector<int>& rowidx,
@@ -74,7 +79,6 @@ std::vector<double> lp_duals(const Problem& P, double time_limit_s) {
     std::vector<CoinBigIndex> colstart(P.C + 1);
     std::vector<int> rowidx(P.crow.begin(), P.crow.end());
     for (uint32_t c = 0; c <= P.C; ++c) colstart[c] = CoinBigIndex(P.cptr[c]);
-    std::lock_guard<std::mutex> lock(coin_mutex());
     const ClpModel model = load_cover_lp(P.R, colstart, rowidx, time_limit_s);
     ClpSimplex* m = model.get();
     m->dual(0);
@@ -103,7 +107,6 @@ std::vector<double> lp_duals_core(const Problem& P, const std::vector<double>& c
         if (in_core[c]) add_column(c);
     std::vector<double> val(P.crow.size(), 1.0), lb(P.C, 0.0), ub(P.C, 1.0), obj(P.C, 1.0);  // for added columns
 
-    std::lock_guard<std::mutex> lock(coin_mutex());
     const ClpModel model = load_cover_lp(P.R, colstart, rowidx, time_limit_s);
     ClpSimplex* m = model.get();
     // Primal simplex from the slack basis: on large covering LPs the dual simplex is slower,
@@ -177,7 +180,6 @@ std::vector<double> lp_duals_rows(const Problem& P, const std::vector<double>& u
     const std::vector<double> ones(std::max<size_t>(P.crow.size(), std::max(P.R, P.C)), 1.0), zeros(P.C, 0.0),
         no_upper(P.R, COIN_DBL_MAX);
 
-    std::lock_guard<std::mutex> lock(coin_mutex());
     const ClpModel model = load_cover_lp(uint32_t(rows.size()), start, index, time_limit_s);
     ClpSimplex* m = model.get();
     m->primal(0);
@@ -279,7 +281,6 @@ bool no_cover_within(const Problem& K, size_t size, int max_branches, const std:
         }
         return z;
     };
-    std::lock_guard<std::mutex> lock(coin_mutex());
     const ClpModel root = load_cover_lp(K.R, colstart, rowidx, 0.0);
     root->dual(0);
     if (root->status() != 0 || !root->getRowPrice() || !root->getColSolution()) return false;
@@ -336,7 +337,7 @@ CbcOutcome run_cbc_unguarded(const Problem& P, size_t incumbent, const CbcSettin
     std::vector<double> val(P.crow.size(), 1.0), lb(P.C, 0.0), ub(P.C, 1.0), obj(P.C, 1.0), rlb(P.R, 1.0);
     char buf[64];
 
-    std::lock_guard<std::mutex> lock(coin_mutex());
+    std::lock_guard<std::mutex> lock(cbc_mutex());
     struct Deleter { void operator()(Cbc_Model* m) const { Cbc_deleteModel(m); } };
     std::unique_ptr<Cbc_Model, Deleter> model(Cbc_newModel());
     if (!model) return out;

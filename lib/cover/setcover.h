@@ -4,7 +4,7 @@
 // time budget, honest bound/gap), or a heuristic (greedy, Coverage Axis++), each followed by
 // redundancy removal.
 // CBC is not thread-safe: every CBC call in the process goes through one mutex (the only
-// process-wide state of the library).
+// process-wide state of the library); Clp's LPs need none and run at once.
 #pragma once
 #include "common.h"
 #include "coverage.h"

@@ -1,7 +1,7 @@
 // setcover_internal.h: what the set-cover files share; not part of the library's interface.
 // The compact problem (rows = samples x columns = balls, stored both ways) with its heuristics
 // and bounds (setcover_problem.cpp), the exact machinery (lagrangian.cpp: the Lagrangian bound;
-// lp_cbc.cpp: the LP and CBC behind the process-wide mutex; row_generation.cpp), the local
+// lp_cbc.cpp: the LP, and CBC behind the process-wide mutex; row_generation.cpp), the local
 // search (local_search.cpp),
 // and the reduction of the input and of compact problems (reduction.cpp; the solve driver
 // is setcover.cpp).
@@ -86,8 +86,8 @@ Lagrange lagrangian(const Problem& P, std::vector<uint32_t> incumbent, int max_i
 Lagrange volume_ascent(const Problem& P, std::vector<uint32_t> incumbent, int max_iter, const Deadline& deadline);
 
 // ---- lp_cbc.cpp ----
-// The LP relaxation min 1'x, Ax >= 1, 0 <= x <= 1, solved by Clp's dual simplex (behind the same
-// mutex as CBC). Returns its row duals clamped to >= 0 (empty if Clp failed or ran out of time).
+// The LP relaxation min 1'x, Ax >= 1, 0 <= x <= 1, solved by Clp's dual simplex (no lock: any
+// number of these run at once). Returns its row duals clamped to >= 0 (empty if Clp failed or ran out of time).
 // The LP optimum equals the best Lagrangian bound; the bound itself is then recomputed from these
 // multipliers by `lagrangian`, so it stays valid whatever the LP's tolerances.
 std::vector<double> lp_duals(const Problem& P, double time_limit_s);

@@ -44,12 +44,18 @@ inline std::vector<uint32_t> valid_triangles(const Mesh& mesh) {
 
 // Each node's box is the union of its children's (leaves: of their triangles' corners), and
 // the split compares precomputed centroids, so a build costs O(F log F) comparisons of doubles.
-// With threads > 1 the root's two subtrees are built at once (the right one into a vector of
-// its own, renumbered on appending): the same nodes in the same order as one thread builds.
+// With threads > 1 the top levels are split first (to the least power of two >= threads
+// subtrees, at most 2^kMaxParallelLevels; a node of at most kParallelItemsPerLeaf leaves' worth
+// of triangles is not split there) and the subtrees below them are built at once, each into a
+// vector of its own, renumbered on appending: the same nodes in the same order as one thread
+// builds.
 // `stop` is tested at every node of more than kStopCheckItems triangles and every
 // kStopCheckItems centroids, so at most O(kStopCheckItems log kStopCheckItems) work separates two
-// tests; it may be called from both threads. A stopped build returns an empty tree.
+// tests; it may be called from every thread. A stopped build returns an empty tree.
 constexpr uint32_t kStopCheckItems = 4096;
+// Below this many leaves' worth of triangles a subtree is not split further for the threads.
+constexpr uint32_t kParallelItemsPerLeaf = 64;
+constexpr int kMaxParallelLevels = 6;
 inline Bvh build_bvh(const Mesh& mesh, std::vector<uint32_t> ids, uint32_t leaf_size = 8, int threads = 1,
                      const std::function<bool()>& stop = {}) {
     Bvh bvh;
@@ -125,27 +131,63 @@ inline Bvh build_bvh(const Mesh& mesh, std::vector<uint32_t> ids, uint32_t leaf_
         return id;
     };
     const uint32_t n = uint32_t(items.size());
-    if (threads > 1 && n > 64 * leaf) {
-        BvhNode root;
-        root.begin = 0; root.end = n;
-        root.lo = Vec3::Constant(inf); root.hi = Vec3::Constant(-inf);
-        const uint32_t mid = split(0, n);
-        bvh.nodes.emplace_back();
-        std::vector<BvhNode> right;
-        reserve_large(right, 2 * ((n - mid) / least) + 1);
-        run_workers(2, [&](size_t w) {
-            if (w == 0) build(build, bvh.nodes, 0, mid);
-            else build(build, right, mid, n);
+    if (threads > 1 && n > kParallelItemsPerLeaf * leaf) {
+        // The top levels are split here, in the order one thread splits them (each split reads
+        // and permutes only its own range, so the ranges below are the same): `plan` lists the
+        // top in preorder, a node to split or a subtree for the workers. Each subtree is built
+        // into a vector of its own and appended where one thread would have built it, its ids
+        // renumbered.
+        int levels = 0;
+        while ((1 << levels) < threads && levels < kMaxParallelLevels) ++levels;
+        struct Step {
+            uint32_t begin, end;
+            int subtree;   // -1: a node split here; else the index of its range in `ranges`
+        };
+        std::vector<Step> plan;
+        std::vector<std::pair<uint32_t, uint32_t>> ranges;
+        auto top = [&](auto&& self, uint32_t begin, uint32_t end, int depth) -> void {
+            if (depth < levels && end - begin > kParallelItemsPerLeaf * leaf) {
+                plan.push_back({begin, end, -1});
+                const uint32_t mid = split(begin, end);
+                self(self, begin, mid, depth + 1);
+                self(self, mid, end, depth + 1);
+            } else {
+                plan.push_back({begin, end, int(ranges.size())});
+                ranges.emplace_back(begin, end);
+            }
+        };
+        top(top, 0, n, 0);
+        std::vector<std::vector<BvhNode>> built(ranges.size());
+        const size_t workers = std::min(ranges.size(), size_t(threads));
+        run_workers(workers, [&](size_t w) {
+            for (size_t r = w; r < ranges.size(); r += workers) {
+                reserve_large(built[r], 2 * ((ranges[r].second - ranges[r].first) / least) + 1);
+                build(build, built[r], ranges[r].first, ranges[r].second);
+            }
         });
-        const uint32_t offset = uint32_t(bvh.nodes.size());
-        for (BvhNode b : right) {
-            if (!b.leaf()) b.left += offset, b.right += offset;
-            bvh.nodes.push_back(b);
-        }
-        root.left = 1;
-        root.right = offset;
-        join(root, bvh.nodes);
-        bvh.nodes[0] = root;
+        size_t at = 0;
+        auto assemble = [&](auto&& self) -> uint32_t {
+            const Step& step = plan[at++];
+            const uint32_t id = uint32_t(bvh.nodes.size());
+            if (step.subtree >= 0) {
+                for (BvhNode b : built[size_t(step.subtree)]) {
+                    if (!b.leaf()) b.left += id, b.right += id;
+                    bvh.nodes.push_back(b);
+                }
+                std::vector<BvhNode>().swap(built[size_t(step.subtree)]);
+                return id;
+            }
+            bvh.nodes.emplace_back();
+            BvhNode node;
+            node.begin = step.begin; node.end = step.end;
+            node.lo = Vec3::Constant(inf); node.hi = Vec3::Constant(-inf);
+            node.left = self(self);
+            node.right = self(self);
+            join(node, bvh.nodes);
+            bvh.nodes[id] = node;
+            return id;
+        };
+        assemble(assemble);
     } else {
         build(build, bvh.nodes, 0, n);
     }

@@ -119,7 +119,7 @@ WindingNumber::WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, d
     // farthest corner from the centre, over the node's triangles: farthest_corner prunes that walk
     // by the node boxes). A node's moments are returned to its parent through the recursion
     // (its depth is the tree's, about log2(F / 8)), so only the queries' far fields are stored.
-    // The root's two subtrees are done at once with threads > 1.
+    // With threads > 1 the subtrees below the top levels are done at once.
     const size_t count = m.bvh.nodes.size();
     if (count == 0) return;
     // The far fields are reserved (address space only) and then zero-filled kStopCheckItems
@@ -210,9 +210,38 @@ WindingNumber::WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, d
     };
     const detail::BvhNode& root = m.bvh.nodes[0];
     if (threads > 1 && !root.leaf()) {
-        Sums sub[2];   // the root's children, each on its own thread
-        run_workers(2, [&](size_t w) { sub[w] = expand(expand, w == 0 ? root.left : root.right); });
-        if (!halted.load(std::memory_order_relaxed)) parent(0, sub[0], sub[1]);
+        // The subtrees below the top levels (as many as threads, like the tree's build) are
+        // expanded at once; the top nodes are then combined here, each from its children's sums
+        // by the same expressions as on one thread.
+        int levels = 0;
+        while ((1 << levels) < threads && levels < detail::kMaxParallelLevels) ++levels;
+        std::vector<uint32_t> below;   // the subtrees' roots, in preorder
+        auto collect = [&](auto&& self, uint32_t n, int depth) -> void {
+            const detail::BvhNode& node = m.bvh.nodes[n];
+            if (depth < levels && !node.leaf()) {
+                self(self, node.left, depth + 1);
+                self(self, node.right, depth + 1);
+            } else {
+                below.push_back(n);
+            }
+        };
+        collect(collect, 0, 0);
+        std::vector<Sums> sums(below.size());
+        const size_t workers = std::min(below.size(), size_t(threads));
+        run_workers(workers, [&](size_t w) {
+            for (size_t i = w; i < below.size(); i += workers) sums[i] = expand(expand, below[i]);
+        });
+        size_t at = 0;
+        auto combine = [&](auto&& self, uint32_t n, int depth) -> Sums {
+            const detail::BvhNode& node = m.bvh.nodes[n];
+            if (depth < levels && !node.leaf()) {
+                const Sums left = self(self, node.left, depth + 1);
+                const Sums right = self(self, node.right, depth + 1);
+                return parent(n, left, right);
+            }
+            return sums[at++];
+        };
+        if (!halted.load(std::memory_order_relaxed)) combine(combine, 0, 0);
     } else {
         expand(expand, 0);
     }

@@ -18,9 +18,9 @@ public:
     // when d > beta * r (2 is their default).
     explicit WindingNumber(const Mesh& mesh, double beta = 2.0);
     // On a tree already built over the mesh (shared with MeshDistance; bvh.h); `threads` > 1
-    // builds the expansions of the root's two subtrees at once (the same values). `stop` is tested
-    // every few thousand nodes (from both threads); a stopped build answers 0 everywhere and must
-    // not be used.
+    // builds the expansions of as many subtrees as threads at once (the same values). `stop` is
+    // tested every few thousand nodes (from every thread); a stopped build answers 0 everywhere
+    // and must not be used.
     explicit WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, double beta = 2.0, int threads = 1,
                            const std::function<bool()>& stop = {});
     ~WindingNumber();

@@ -325,27 +325,37 @@ TEST_CASE("winding: inside(q) is w(q) > 1/2 exactly, also where w crosses 1/2 wi
     CHECK(compared >= 1000);
 }
 
-TEST_CASE("winding: the tree and the expansions built on two threads equal one thread's") {
+TEST_CASE("winding: the tree and the expansions built on 2 to 16 threads equal one thread's") {
     const Mesh mesh = merge(icosphere(4, Vec3(0, 0, 0), 1.0), torus(64, 32, Vec3(3, 0, 0), 1.2, 0.4));
-    const auto one = detail::build_triangle_tree(mesh, 1), two = detail::build_triangle_tree(mesh, 2);
-    REQUIRE(one->bvh.nodes.size() == two->bvh.nodes.size());
+    const auto one = detail::build_triangle_tree(mesh, 1);
     REQUIRE(one->bvh.nodes.size() > 1000);
-    CHECK(one->bvh.order == two->bvh.order);
-    size_t differ = 0;
-    for (size_t n = 0; n < one->bvh.nodes.size(); ++n) {
-        const detail::BvhNode &a = one->bvh.nodes[n], &b = two->bvh.nodes[n];
-        differ += a.lo != b.lo || a.hi != b.hi || a.begin != b.begin || a.end != b.end || a.left != b.left ||
-                  a.right != b.right;
+    // 3 threads: four subtrees on three workers; 16: four levels split before the workers start
+    for (int threads : {2, 3, 4, 8, 16}) {
+        INFO("threads ", threads);
+        const auto two = detail::build_triangle_tree(mesh, threads);
+        REQUIRE(one->bvh.nodes.size() == two->bvh.nodes.size());
+        CHECK(one->bvh.order == two->bvh.order);
+        CHECK(one->tris == two->tris);
+        size_t differ = 0;
+        for (size_t n = 0; n < one->bvh.nodes.size(); ++n) {
+            const detail::BvhNode &a = one->bvh.nodes[n], &b = two->bvh.nodes[n];
+            differ += a.lo != b.lo || a.hi != b.hi || a.begin != b.begin || a.end != b.end || a.left != b.left ||
+                      a.right != b.right;
+        }
+        CHECK(differ == 0);
     }
-    CHECK(differ == 0);
-    const WindingNumber w1(one, 2.0, 1), w2(one, 2.0, 2);
-    Rng rng(11);
-    size_t unequal = 0;
-    for (int i = 0; i < 300; ++i) {
-        const Vec3 q = random_point(rng, Vec3(-2, -2.5, -1.5), Vec3(5.5, 2.5, 1.5));
-        unequal += w1(q) != w2(q);
+    const WindingNumber w1(one, 2.0, 1);
+    for (int threads : {2, 3, 4, 16}) {
+        INFO("far fields on ", threads, " threads");
+        const WindingNumber w2(one, 2.0, threads);
+        Rng rng(11);
+        size_t unequal = 0;
+        for (int i = 0; i < 300; ++i) {
+            const Vec3 q = random_point(rng, Vec3(-2, -2.5, -1.5), Vec3(5.5, 2.5, 1.5));
+            unequal += w1(q) != w2(q);
+        }
+        CHECK(unequal == 0);
     }
-    CHECK(unequal == 0);
 }
 
 TEST_CASE("winding: a far field's stored polynomial equals the expansion's three terms") {
