@@ -81,7 +81,7 @@ fi
   echo "- commit: $commit"
   echo "- load average (1, 5, 15 min): $load_start at the start, $load_end at the end.$busy"
   if [ -n "${BENCH_ONLY:-}" ]; then
-    echo "- duration: $total s for $BENCH_ONLY; the other sections were kept from an earlier run (each names its commit)"
+    echo "- duration: $total s for $BENCH_ONLY; the other sections were kept from an earlier run (a section written since names its commit)"
   else
     echo "- duration: $total s for all programs"
   fi
