@@ -40,10 +40,8 @@ ca_status ca_correspond(ca_context* ctx, const ca_surface_view* surface, const c
         if (!st.ok()) return st;
         const ca::Monitor monitor = ctx->monitor();
         ca::SurfaceInput input;
-        st = read_surface(surface, false, input);
-        if (!st.ok()) return st;
         ca::Skeleton sk;
-        st = read_skeleton(skeleton, sk);
+        st = read_surface_and_skeleton(surface, skeleton, input, sk);
         if (!st.ok()) return st;
         ca::CorrespondOptions copt;
         copt.smoothing = o.smoothing;

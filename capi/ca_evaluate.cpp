@@ -19,10 +19,8 @@ ca_status ca_evaluate(ca_context* ctx, const ca_surface_view* surface, const ca_
         if (!st.ok()) return st;
         const ca::Monitor monitor = ctx->monitor();  // one budget for the whole call
         ca::SurfaceInput input;
-        st = read_surface(surface, false, input);
-        if (!st.ok()) return st;
         ca::Skeleton sk;
-        st = read_skeleton(skeleton, sk);
+        st = read_surface_and_skeleton(surface, skeleton, input, sk);
         if (!st.ok()) return st;
         ca::EvaluateResult er;
         st = ca::evaluate_step(std::move(input), sk, to_core(o, ctx->desc.threads), monitor, er);

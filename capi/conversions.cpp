@@ -138,6 +138,12 @@ ca::Status read_skeleton(const ca_skeleton_view* in, ca::Skeleton& out) {
     return ca::Status::success();
 }
 
+ca::Status read_surface_and_skeleton(const ca_surface_view* surface, const ca_skeleton_view* skeleton,
+                                     ca::SurfaceInput& input, ca::Skeleton& sk) {
+    const ca::Status st = read_surface(surface, false, input);
+    return st.ok() ? read_skeleton(skeleton, sk) : st;
+}
+
 ca::CandidateOptions to_core(const ca_candidate_options& o, int32_t threads) {
     ca::CandidateOptions c;
     c.generator = static_cast<ca::Generator>(o.generator);

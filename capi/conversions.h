@@ -64,6 +64,11 @@ ca::Status read_surface(const ca_surface_view* surface, bool want_normals, ca::S
 // by the core's steps).
 ca::Status read_skeleton(const ca_skeleton_view* in, ca::Skeleton& out);
 
+// The surface (its normals not read) and a skeleton measured against it, as the steps that compare
+// a skeleton with its surface take them (evaluation, correspondence, rig).
+ca::Status read_surface_and_skeleton(const ca_surface_view* surface, const ca_skeleton_view* skeleton,
+                                     ca::SurfaceInput& input, ca::Skeleton& sk);
+
 // Points in the caller's units, x y z per point, in memory from the result's allocator.
 void fill(Array<double>& a, const Allocator& al, const std::vector<ca::Vec3>& pts, const ca::Normalization& n);
 
