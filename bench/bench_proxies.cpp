@@ -12,6 +12,7 @@
 #include "bench_common.h"
 #include "evaluate.h"
 #include "proxies.h"
+#include "support/fresh_samples.h"
 #include "support/mesh_convert.h"
 #include "winding.h"
 
@@ -31,27 +32,6 @@ struct Measure {
     size_t count = 0;
     double hd = 0, outside_pct = 0, contained = 0, seconds = 0;
 };
-
-// Area-uniform points on the triangles from the bench's own generator.
-std::vector<ca::Vec3> fresh_samples(const ca::Mesh& m, size_t n, uint64_t seed) {
-    std::mt19937_64 rng(seed);
-    std::vector<double> cumulative;
-    double total = 0;
-    for (const ca::Tri& t : m.triangles) {
-        total += 0.5 * (m.vertices[t[1]] - m.vertices[t[0]]).cross(m.vertices[t[2]] - m.vertices[t[0]]).norm();
-        cumulative.push_back(total);
-    }
-    std::uniform_real_distribution<double> u(0, 1);
-    std::vector<ca::Vec3> out;
-    for (size_t i = 0; i < n; ++i) {
-        const size_t k = size_t(std::lower_bound(cumulative.begin(), cumulative.end(), u(rng) * total) - cumulative.begin());
-        const ca::Tri& t = m.triangles[std::min(k, m.triangles.size() - 1)];
-        double a = u(rng), b = u(rng);
-        if (a + b > 1) { a = 1 - a; b = 1 - b; }
-        out.push_back(m.vertices[t[0]] + a * (m.vertices[t[1]] - m.vertices[t[0]]) + b * (m.vertices[t[2]] - m.vertices[t[0]]));
-    }
-    return out;
-}
 
 // K-means (k-means++ start, 20 Lloyd steps, fixed seed) spheres on the points, each radius the
 // farthest of its cluster from its centroid.
@@ -186,8 +166,8 @@ int main(int argc, char** argv) {
         const ca::Mesh core = to_core_mesh(mesh);
         const ca::WindingNumber winding(core);
         const double volume = std::abs(ca::signed_volume(core));
-        const std::vector<ca::Vec3> fresh = fresh_samples(core, kFreshSamples, 2024);
-        const std::vector<ca::Vec3> cluster_pts = fresh_samples(core, kClusterSamples, 7);
+        const std::vector<ca::Vec3> fresh = fresh_surface_samples(core, kFreshSamples, 2024);
+        const std::vector<ca::Vec3> cluster_pts = fresh_surface_samples(core, kClusterSamples, 7);
         ca_context* ctx = nullptr;
         ca_context_create(nullptr, &ctx);
         const ca_surface_view v = bench::surface_view(mesh);

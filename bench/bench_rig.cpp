@@ -4,6 +4,7 @@
 // change of a vertex's ball weights (L1) across a mesh edge, and the times of ca_correspond's step
 // and ca_rig_build's step (curve skeleton, joints and vertex weights).
 // Usage: bench_rig [data root, default ../shared/data] [model substring]
+#include "bench_common.h"
 #include "mesh_io.h"
 #include "steps.h"
 #include "support/mesh_convert.h"
@@ -21,19 +22,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-std::vector<std::string> meshes_in(const std::string& dir) {
-    std::vector<std::string> out;
-    if (DIR* d = opendir(dir.c_str())) {
-        while (dirent* e = readdir(d)) {
-            const std::string name = e->d_name;
-            if (name.size() > 4 && name.substr(name.size() - 4) == ".obj") out.push_back(dir + "/" + name);
-        }
-        closedir(d);
-    }
-    std::sort(out.begin(), out.end());
-    return out;
-}
 
 bool skeleton_of(const ca::Mesh& mesh, ca::Skeleton& out) {
     ca::SurfaceInput surface;
@@ -116,7 +104,7 @@ int main(int argc, char** argv) {
     std::printf("| model | vertices | balls | joints | branches | leaves | edge change | correspond s | rig s |\n");
     std::printf("| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
     std::vector<std::string> models{std::string(CA_TEST_DATA) + "/fox.obj"};
-    for (const std::string& m : meshes_in(data + "/meshes/paper")) models.push_back(m);
+    for (const std::string& m : bench::list_files(data + "/meshes/paper", ".obj")) models.push_back(m);
     for (const std::string& m : models)
         if (filter.empty() || m.find(filter) != std::string::npos) row(m);
     return 0;

@@ -8,6 +8,7 @@
 
 #include "distance.h"
 #include "steps.h"
+#include "support/fresh_samples.h"
 #include "support/shapes.h"
 #include "winding.h"
 
@@ -68,27 +69,6 @@ double brute_distance(const ca::Proxy& p, const ca::Vec3& x) {
         else lo = m1;
     }
     return std::min({f(0), f(1), f(0.5 * (lo + hi))});
-}
-
-// Uniform points on the triangles (area-weighted), from the test's own generator.
-std::vector<ca::Vec3> fresh_surface_samples(const ca::Mesh& m, size_t n, uint64_t seed) {
-    std::mt19937_64 rng(seed);
-    std::vector<double> cumulative;
-    double total = 0;
-    for (const ca::Tri& t : m.triangles) {
-        total += 0.5 * (m.vertices[t[1]] - m.vertices[t[0]]).cross(m.vertices[t[2]] - m.vertices[t[0]]).norm();
-        cumulative.push_back(total);
-    }
-    std::uniform_real_distribution<double> u(0, 1);
-    std::vector<ca::Vec3> out;
-    for (size_t i = 0; i < n; ++i) {
-        const size_t k = size_t(std::lower_bound(cumulative.begin(), cumulative.end(), u(rng) * total) - cumulative.begin());
-        const ca::Tri& t = m.triangles[std::min(k, m.triangles.size() - 1)];
-        double a = u(rng), b = u(rng);
-        if (a + b > 1) { a = 1 - a; b = 1 - b; }
-        out.push_back(m.vertices[t[0]] + a * (m.vertices[t[1]] - m.vertices[t[0]]) + b * (m.vertices[t[2]] - m.vertices[t[0]]));
-    }
-    return out;
 }
 
 // Points on the boundary of a primitive: from a random interpolated centre along a random
