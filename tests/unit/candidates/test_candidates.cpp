@@ -121,6 +121,61 @@ TEST_CASE("open mesh: oriented by the signed volume with its holes capped (a hor
     }
 }
 
+TEST_CASE("open mesh: a hole beside a T-junction whose sliver is dropped is still capped") {
+    // A unit box without its bottom (z = 0). The front wall (y = 0) is cut along x = 0.5: its left
+    // half ends on the edge (0.5,0,0)-(0.5,0,1), its right half on (0.5,0,0)-(0.5,0,0.8)-(0.5,0,1),
+    // and a zero-area sliver on those three points seals the T-junction, as exporters write it.
+    // The sliver is dropped as zero-area, which leaves the bottom corner (0.5,0,0) on four boundary
+    // edges: the bottom loop and the slit. The bottom must still be capped, or balls under it
+    // reach out below the box.
+    ca::Mesh m;
+    auto v = [&m](double x, double y, double z) {
+        for (uint32_t i = 0; i < m.vertices.size(); ++i)
+            if (m.vertices[i] == ca::Vec3(x, y, z)) return i;
+        m.vertices.emplace_back(x, y, z);
+        return uint32_t(m.vertices.size() - 1);
+    };
+    const ca::Vec3 middle(0.5, 0.5, 0.5);
+    auto tri = [&m, &middle](uint32_t a, uint32_t b, uint32_t c) {   // faces away from the middle
+        const ca::Vec3 &pa = m.vertices[a], &pb = m.vertices[b], &pc = m.vertices[c];
+        if ((pb - pa).cross(pc - pa).dot((pa + pb + pc) / 3 - middle) < 0) std::swap(b, c);
+        m.triangles.push_back({a, b, c});
+    };
+    auto quad = [&](uint32_t a, uint32_t b, uint32_t c, uint32_t d) { tri(a, b, c), tri(a, c, d); };
+    quad(v(0, 1, 0), v(1, 1, 0), v(1, 1, 1), v(0, 1, 1));   // back
+    quad(v(0, 0, 0), v(0, 1, 0), v(0, 1, 1), v(0, 0, 1));   // left
+    quad(v(1, 0, 0), v(1, 1, 0), v(1, 1, 1), v(1, 0, 1));   // right
+    quad(v(0, 0, 1), v(1, 0, 1), v(1, 1, 1), v(0, 1, 1));   // top
+    const uint32_t p0 = v(0.5, 0, 0), p1 = v(0.5, 0, 0.8), p2 = v(0.5, 0, 1);
+    tri(v(0, 0, 0), p0, p2), tri(v(0, 0, 0), p2, v(0, 0, 1));                       // front, left half
+    tri(p0, v(1, 0, 0), p1), tri(p1, v(1, 0, 0), v(1, 0, 1)), tri(p1, v(1, 0, 1), p2);   // right half
+    // the sliver, oriented so that each of its edges meets its neighbour's reversed
+    auto has_edge = [&m](uint32_t a, uint32_t b) {
+        for (const ca::Tri& t : m.triangles)
+            for (int k = 0; k < 3; ++k)
+                if (t[k] == a && t[(k + 1) % 3] == b) return true;
+        return false;
+    };
+    const bool forward = has_edge(p1, p0) && has_edge(p2, p1) && has_edge(p0, p2);
+    REQUIRE((forward || (has_edge(p0, p1) && has_edge(p1, p2) && has_edge(p2, p0))));
+    m.triangles.push_back(forward ? ca::Tri{p0, p1, p2} : ca::Tri{p0, p2, p1});
+
+    ca::Surface surface;
+    REQUIRE(ca::prepare_surface(m, {}, surface).ok());
+    CHECK(surface.dropped_triangles == 1);
+    CHECK_FALSE(surface.flipped);
+    // the caps close the bottom: the box's volume (the slit's cycle adds no area)
+    REQUIRE_FALSE(surface.caps.triangles.empty());
+    CHECK(ca::signed_volume(surface.mesh) + ca::signed_volume(surface.caps) == doctest::Approx(1.0).epsilon(1e-9));
+    ca::CandidateSet set;
+    const ca::Status st = ca::generate_candidates(std::move(surface), {}, ca::Monitor{}, set);
+    REQUIRE_MESSAGE(st.ok(), st.message);
+    REQUIRE(set.balls.size() > 100);
+    double below = -1;   // internal units: the box's lowest point is at z = 0
+    for (const ca::Ball& b : set.balls) below = std::max(below, b.radius - b.center.z());
+    CHECK(below < 0.005);
+}
+
 TEST_CASE("open mesh: no candidate ball reaches out through a hole, closed meshes are unchanged") {
     // A sphere (axis x) without its cap beyond x = 0.6 R: Voronoi balls under the hole would reach
     // R - 0.6 R = 0.2 of the diameter beyond the hole's plane (the fallback balls too).
