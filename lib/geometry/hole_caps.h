@@ -12,10 +12,7 @@ namespace ca {
 // every loop vertex on exactly two boundary edges) gets a fan of triangles from the loop's
 // centroid, one per boundary edge, oriented like the mesh: a boundary edge a -> b of its triangle
 // gives the cap triangle (centroid, b, a), so mesh + caps is consistently oriented and closed
-// where the mesh is. A boundary component with a vertex on more than two boundary edges (holes
-// meeting at a corner; a T-junction left open by a dropped zero-area sliver) is split into the
-// simple cycles its edges form along their own direction, each capped the same way (fan triangles
-// of zero area left out). Closed meshes give no caps; open boundary curves that are not loops get none.
+// where the mesh is. Closed meshes give no caps; open boundary curves that are not loops get none.
 // No caps when `monitor` stopped the welding: the caller tests monitor.stopped().
 Mesh hole_caps(const Mesh& mesh, const Monitor& monitor = Monitor{});
 // The same from the half-edge buckets of the mesh's welded corners (mesh_topology.h; built with

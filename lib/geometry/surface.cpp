@@ -161,16 +161,30 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
 
     if (!cloud) {
         // drop zero-area triangles (they carry no surface and no winding number), in place
-        size_t kept = 0;
+        std::vector<uint8_t> zero_area(raw.triangles.size(), 0);
+        size_t zero = 0;
         for (size_t k = 0; k < raw.triangles.size(); ++k) {
             if (monitor.stopped_at(k)) return monitor.stop_status("surface");
             const Tri t = raw.triangles[k];
             const Vec3& a = raw.vertices[t[0]];
             const double area2 = (raw.vertices[t[1]] - a).cross(raw.vertices[t[2]] - a).norm();
-            if (area2 > 1e-14) raw.triangles[kept++] = t;
+            if (!(area2 > 1e-14)) zero_area[k] = 1, ++zero;
         }
+        if (zero == raw.triangles.size()) return fail(Code::degenerate_input, "every triangle has zero area");
+        // The holes are found before the zero-area triangles go: exporters seal a T-junction (an
+        // edge of one side split by a vertex on the other) with a sliver on its three collinear
+        // points, and without it the junction is a slit whose vertex at a hole lies on four
+        // boundary edges, so the hole would not be a loop and would get no cap.
+        Mesh caps_only;
+        if (zero > 0) {
+            const HalfEdgeBuckets with_slivers = half_edge_buckets(raw, {}, monitor);
+            if (monitor.stopped()) return monitor.stop_status("surface");
+            caps_only = hole_caps(raw, with_slivers);
+        }
+        size_t kept = 0;
+        for (size_t k = 0; k < raw.triangles.size(); ++k)
+            if (!zero_area[k]) raw.triangles[kept++] = raw.triangles[k];
         out.dropped_triangles += raw.triangles.size() - kept;
-        if (kept == 0) return fail(Code::degenerate_input, "every triangle has zero area");
         raw.triangles.resize(kept);
         // an inward-facing mesh has negative signed volume: flip it so inside means w > 1/2. An
         // open mesh's signed volume depends on the origin (a large hole facing away from it can
@@ -179,7 +193,7 @@ Status prepare_surface(Mesh raw, std::vector<Vec3> normals, Surface& out, bool r
         // topology (the merge left the triangles on welded vertices: the buckets need no map)
         const HalfEdgeBuckets edges = half_edge_buckets(raw, {}, monitor);
         if (monitor.stopped()) return monitor.stop_status("surface");
-        out.caps = hole_caps(raw, edges);
+        out.caps = zero > 0 ? std::move(caps_only) : hole_caps(raw, edges);
         out.topology = mesh_topology(raw, {}, edges, monitor);
         if (monitor.stopped()) return monitor.stop_status("surface");
         const double volume = signed_volume(raw) + signed_volume(out.caps);

@@ -44,7 +44,8 @@ struct Surface {
     size_t dropped_triangles = 0; // zero-area triangles ignored
     size_t duplicate_triangles = 0; // repeats of a kept triangle merged into it (duplicates.h)
     // Meshes, found once from the half-edges for the later steps: the caps of the holes
-    // (hole_caps.h, oriented like the mesh; empty when closed) and the topology (mesh_topology.h:
+    // (hole_caps.h, oriented like the mesh; empty when closed; found with the zero-area triangles
+    // still in place, which seal T-junctions) and the topology (mesh_topology.h:
     // closedness, genus per part, indexed by mesh.triangles).
     Mesh caps;
     MeshTopology topology;

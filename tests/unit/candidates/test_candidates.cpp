@@ -125,9 +125,9 @@ TEST_CASE("open mesh: a hole beside a T-junction whose sliver is dropped is stil
     // A unit box without its bottom (z = 0). The front wall (y = 0) is cut along x = 0.5: its left
     // half ends on the edge (0.5,0,0)-(0.5,0,1), its right half on (0.5,0,0)-(0.5,0,0.8)-(0.5,0,1),
     // and a zero-area sliver on those three points seals the T-junction, as exporters write it.
-    // The sliver is dropped as zero-area, which leaves the bottom corner (0.5,0,0) on four boundary
-    // edges: the bottom loop and the slit. The bottom must still be capped, or balls under it
-    // reach out below the box.
+    // The sliver is dropped as zero-area; without it the bottom corner (0.5,0,0) would lie on four
+    // boundary edges (the bottom loop and the slit). The bottom must still be capped, or balls
+    // under it reach out below the box.
     ca::Mesh m;
     auto v = [&m](double x, double y, double z) {
         for (uint32_t i = 0; i < m.vertices.size(); ++i)
@@ -164,7 +164,7 @@ TEST_CASE("open mesh: a hole beside a T-junction whose sliver is dropped is stil
     REQUIRE(ca::prepare_surface(m, {}, surface).ok());
     CHECK(surface.dropped_triangles == 1);
     CHECK_FALSE(surface.flipped);
-    // the caps close the bottom: the box's volume (the slit's cycle adds no area)
+    // the caps close the bottom: the box's volume
     REQUIRE_FALSE(surface.caps.triangles.empty());
     CHECK(ca::signed_volume(surface.mesh) + ca::signed_volume(surface.caps) == doctest::Approx(1.0).epsilon(1e-9));
     ca::CandidateSet set;
