@@ -1,11 +1,13 @@
 // test_steps.cpp: the C++ steps (lib/steps) and the C ABI agree on their defaults field by field
 // (the C ABI's ca_*_defaults are converted from the C++ option structs); the steps' policy: the
-// automatic route, the fit only where there is a mesh, and a request checked before any work.
+// automatic route, the fit only where there is a mesh, a request checked before any work, and the
+// cover kept by whatever runs at the defaults.
 #include <doctest/doctest.h>
 
 #include "coverage_axis.h"
 #include "steps.h"
 #include "support/shapes.h"
+#include "support/skeleton_of.h"
 #include "target_count_hd.h"
 #include "target_error.h"
 #include <algorithm>
@@ -165,4 +167,38 @@ TEST_CASE("steps: the automatic route, the fit on meshes only, and requests chec
     ca::CandidateOptions bad_generator = co;
     bad_generator.generator = static_cast<ca::Generator>(7);
     CHECK(ca::candidates_step(surface, bad_generator, stopped, set).code == ca::Code::invalid_argument);
+}
+
+TEST_CASE("steps: the defaults keep the cover: every cover sample lies within r + delta of a skeleton ball") {
+    // Whatever runs by default after the selection (the route, its repairs, the automatic fit)
+    // must leave the method's promise intact; checked by brute force over the skeleton's balls.
+    for (const char* name : {"fox.obj", "cow_spot.obj"}) {
+        CAPTURE(name);
+        ca::SurfaceInput surface;
+        surface.mesh = test_model(name);
+        ca::CandidateSet set;
+        ca::Status st = ca::candidates_step(surface, ca::CandidateOptions{}, ca::Monitor{}, set);
+        REQUIRE_MESSAGE(st.ok(), st.message);
+        ca::SelectResult sel;
+        st = ca::select_step(set, ca::SelectRequest{}, ca::Monitor{}, sel);
+        REQUIRE_MESSAGE(st.ok(), st.message);
+        ca::ConnectResult k;
+        st = ca::connect_step(set, sel.selection, ca::ConnectRequest{}, ca::Monitor{}, k);
+        REQUIRE_MESSAGE(st.ok(), st.message);
+        REQUIRE(k.skeleton.balls.size() >= sel.selection.indices.size());
+        const double delta = sel.selection.delta;
+        REQUIRE(delta > 0);
+        size_t uncovered = 0;
+        for (const ca::Vec3& s : set.cover_samples) {
+            bool covered = false;
+            for (const ca::Ball& b : k.skeleton.balls)
+                if ((b.center - s).norm() <= b.radius + delta * (1 + 1e-9)) {
+                    covered = true;
+                    break;
+                }
+            uncovered += !covered;
+        }
+        CHECK(set.cover_samples.size() >= 1000);
+        CHECK(uncovered == 0);
+    }
 }
