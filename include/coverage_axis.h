@@ -379,6 +379,7 @@ CA_API ca_status ca_selection_stats(const ca_selection* selection, ca_select_sta
 #define CA_FIT_OFF      0
 #define CA_FIT_ONCE     1
 #define CA_FIT_THOROUGH 2
+#define CA_FIT_COVERED  3 /* ABI 3: ONCE, then the cover it breaks repaired with added balls (docs/fidelity.md) */
 #define CA_CONNECT_POWER  0 /* regular triangulation of selected balls and dense surface samples */
 #define CA_CONNECT_MEDIAL 1 /* regions of the selected balls on the inner Voronoi medial mesh (meshes, point clouds) */
 #define CA_CONNECT_AUTO   2 /* MEDIAL for meshes and clean point clouds, POWER for noisy clouds and caller arrays */
