@@ -105,7 +105,7 @@ struct PipelineRun {
     // With a fitting connection (run_pipeline's `fitted`): the same selection connected and fitted,
     // its evaluation, the fit's own time and the cover samples it left uncovered.
     double t_fit = 0;
-    size_t fit_uncovered = 0, fit_edges = 0, fit_faces = 0, fit_components = 0;
+    size_t fit_uncovered = 0, fit_balls = 0, fit_open_parts = 0, fit_edges = 0, fit_faces = 0, fit_components = 0;
     long fit_betti1 = 0;
     ca_evaluation fit_eval{};
 };
@@ -216,6 +216,8 @@ inline PipelineRun run_pipeline(const caio::MeshData& mesh, const ca_candidate_o
                 ca_skeleton_stats_get(fk, &ks);
                 r.t_fit = ks.fit_time_s;
                 r.fit_uncovered = size_t(ks.fit_uncovered);
+                r.fit_balls = size_t(ks.vertices);
+                r.fit_open_parts = size_t(ks.open_parts);
                 r.status = measure_skeleton(ctx, v, fk, evaluate, r.fit_edges, r.fit_faces, r.fit_components,
                                             r.fit_betti1, r.fit_eval);
             }

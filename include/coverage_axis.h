@@ -379,6 +379,7 @@ CA_API ca_status ca_selection_stats(const ca_selection* selection, ca_select_sta
 #define CA_FIT_OFF      0
 #define CA_FIT_ONCE     1
 #define CA_FIT_THOROUGH 2
+#define CA_FIT_COVERED  3 /* ABI 3: ONCE, then the cover it breaks repaired with added balls (docs/fidelity.md) */
 #define CA_CONNECT_POWER  0 /* regular triangulation of selected balls and dense surface samples */
 #define CA_CONNECT_MEDIAL 1 /* regions of the selected balls on the inner Voronoi medial mesh (meshes, point clouds) */
 #define CA_CONNECT_AUTO   2 /* MEDIAL for meshes and clean point clouds, POWER for noisy clouds and caller arrays */
@@ -394,7 +395,11 @@ typedef struct ca_connect_options {
                                     docs/fidelity.md); THOROUGH: that fit and a second one with twice
                                     its boundary samples, of which the one of lower two-sided HD as
                                     ca_evaluate measures it at its defaults is kept (4-6x the CPU
-                                    time); AUTO (default, ABI 3): THOROUGH for a selection sized by
+                                    time); COVERED (ABI 3): ONCE, then the cover samples it left
+                                    uncovered covered again by added unfitted candidate balls, the
+                                    grown selection connected again and refitted keeping the cover
+                                    (fit_uncovered 0; more vertices than the selection has balls);
+                                    AUTO (default, ABI 3): THOROUGH for a selection sized by
                                     target_count on a mesh, else OFF; other values are
                                     CA_ERROR_INVALID_ARGUMENT */
     int32_t fit_iterations;      /* ABI 2. Fitting steps; default 10 */

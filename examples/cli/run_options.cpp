@@ -164,6 +164,9 @@ void add_run_options(CLI::App& app, RunOptions& o) {
     app.add_flag("--fit-thorough", "--fit, and a second fit with twice the boundary samples; the one of lower two-sided HD "
                  "is written (3-6x the fit's time; docs/fidelity.md). The default with --target-count on a mesh")
         ->group(connect);
+    app.add_flag("--fit-covered", "--fit, then the cover samples it uncovered covered again by added unfitted balls and a "
+                 "refit that keeps the cover: every cover sample stays within the dilated radius of a ball (docs/fidelity.md)")
+        ->group(connect);
     app.add_flag("--no-fit", "no fit, also with --target-count (whose skeleton the library fits thoroughly by default)")
         ->group(connect);
 
@@ -209,12 +212,17 @@ bool finish_run_options(const CLI::App& app, RunOptions& o, std::string& error) 
         return false;
     }
     o.proxy.shapes = o.proxies == "spheres" ? CA_PROXY_SHAPES_SPHERES : CA_PROXY_SHAPES_CAPSULES;
-    if (app.count("--no-fit") && (app.count("--fit") || app.count("--fit-thorough"))) {
-        error = "--no-fit cannot be combined with --fit or --fit-thorough";
+    if (app.count("--no-fit") && (app.count("--fit") || app.count("--fit-thorough") || app.count("--fit-covered"))) {
+        error = "--no-fit cannot be combined with --fit, --fit-thorough or --fit-covered";
+        return false;
+    }
+    if (app.count("--fit-thorough") && app.count("--fit-covered")) {
+        error = "--fit-thorough cannot be combined with --fit-covered";
         return false;
     }
     // no flag: the library's default (CA_FIT_AUTO)
     if (app.count("--fit-thorough")) o.connect.fit = CA_FIT_THOROUGH;
+    else if (app.count("--fit-covered")) o.connect.fit = CA_FIT_COVERED;
     else if (app.count("--fit")) o.connect.fit = CA_FIT_ONCE;
     else if (app.count("--no-fit")) o.connect.fit = CA_FIT_OFF;
     // the delta searches measure the default connection, fitted with --fit; with --fit-thorough the

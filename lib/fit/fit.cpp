@@ -66,6 +66,16 @@ double sd_nearest(const Primitive& q, const std::vector<Ball>& balls, const Vec3
     return kInf;
 }
 
+// Whether ball b covers s with its dilated radius (offset delta or scale); whether some ball does.
+bool reaches(const Selection& sel, const Ball& b, const Vec3& s) {
+    return covers(b.center, sel.delta > 0 ? b.radius + sel.delta : b.radius * sel.scale, s);
+}
+bool covered(const Selection& sel, const std::vector<Ball>& balls, const Vec3& s) {
+    for (const Ball& b : balls)
+        if (reaches(sel, b, s)) return true;
+    return false;
+}
+
 class Fitter {
 public:
     Fitter(const CandidateSet& set, const FitOptions& opt, const Monitor& monitor, int threads)
@@ -167,7 +177,8 @@ public:
     // The damped, weighted Gauss-Newton step (to subtract from the parameters), 4 per ball.
     // Each residual's gradient is that of its closest primitive (NearestSphere), so the normal
     // equations are summed per primitive in dense 12 x 12 blocks, then scattered.
-    Eigen::VectorXd step(const Residuals& res, const std::vector<Ball>& balls, double damping) const {
+    Eigen::VectorXd step(const Residuals& res, const std::vector<Ball>& balls, double damping,
+                         const std::vector<uint8_t>& fixed) const {
         const size_t n = 4 * balls.size();
         const Eigen::Index N = Eigen::Index(n);
         const size_t np = res.prims.size();
@@ -215,10 +226,23 @@ public:
         const Eigen::VectorXd hd = H.diagonal();
         const double mean_diag = std::max(hd.sum() / double(n), 1e-12);
         for (Eigen::Index i = 0; i < N; ++i) H.coeffRef(i, i) += damping * hd[i] + opt_.regularization * mean_diag;
+        // a held ball's parameters are taken out of the system (its rows and columns replaced by
+        // the identity with a zero right-hand side), so the others are solved with it in place
+        if (!fixed.empty()) {
+            for (int k = 0; k < H.outerSize(); ++k)
+                for (Eigen::SparseMatrix<double>::InnerIterator it(H, k); it; ++it)
+                    if (fixed[size_t(it.row()) / 4] || fixed[size_t(it.col()) / 4])
+                        it.valueRef() = it.row() == it.col() ? 1.0 : 0.0;
+            for (Eigen::Index i = 0; i < N; ++i)
+                if (fixed[size_t(i) / 4]) grad[i] = 0;
+        }
         Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(H);
         if (ldlt.info() != Eigen::Success) return Eigen::VectorXd::Zero(N);
         Eigen::VectorXd x = ldlt.solve(grad);
         if (!x.allFinite()) return Eigen::VectorXd::Zero(N);
+        if (!fixed.empty())
+            for (Eigen::Index i = 0; i < N; ++i)
+                if (fixed[size_t(i) / 4]) x[i] = 0;
         return x;
     }
 
@@ -251,6 +275,43 @@ public:
         return out;
     }
 
+    // `to` moved back towards `from` (whose balls cover every sample of `keep`) until every such
+    // sample is covered again: each ball that covered a sample now lost, in `from`, has its share
+    // t of the move (centre and radius along the straight path) halved, up to 8 times, then 0; a
+    // centre the path takes out of the shape stays at `from`'s.
+    std::vector<Ball> pull_back(const std::vector<Ball>& from, const std::vector<Ball>& to, const Selection& sel,
+                                const std::vector<uint32_t>& keep) const {
+        std::vector<double> t(from.size(), 1.0);
+        std::vector<uint8_t> halved(from.size(), 0);
+        auto blend = [&](size_t i) {
+            Ball b;
+            b.center = from[i].center + t[i] * (to[i].center - from[i].center);
+            b.radius = from[i].radius + t[i] * (to[i].radius - from[i].radius);
+            return b;
+        };
+        std::vector<Ball> out = to;
+        for (int pass = 0; pass < 10; ++pass) {
+            bool lost_any = false;
+            std::vector<uint8_t> shrink(from.size(), 0);
+            for (uint32_t k : keep) {
+                const Vec3& x = set_.cover_samples[k];
+                if (covered(sel, out, x)) continue;
+                lost_any = true;
+                for (size_t i = 0; i < from.size(); ++i)
+                    if (t[i] > 0 && reaches(sel, from[i], x)) shrink[i] = 1;
+            }
+            if (!lost_any) break;
+            for (size_t i = 0; i < from.size(); ++i)
+                if (shrink[i]) {
+                    t[i] = ++halved[i] > 8 || pass == 9 ? 0.0 : t[i] / 2;
+                    out[i] = blend(i);
+                }
+        }
+        for (size_t i = 0; i < from.size(); ++i)
+            if (t[i] > 0 && t[i] < 1 && !winding_->inside(out[i].center)) out[i] = from[i];
+        return out;
+    }
+
 private:
     const CandidateSet& set_;
     const FitOptions& opt_;
@@ -261,22 +322,16 @@ private:
     std::vector<Vec3> surface_;
 };
 
-// Cover samples that no ball covers with its dilated radius (offset delta or scale).
-size_t count_uncovered(const CandidateSet& set, const Selection& sel, const std::vector<Ball>& balls) {
-    size_t n = 0;
-    for (const Vec3& s : set.cover_samples) {
-        bool ok = false;
-        for (const Ball& b : balls) {
-            const double rd = sel.delta > 0 ? b.radius + sel.delta : b.radius * sel.scale;
-            if (covers(b.center, rd, s)) { ok = true; break; }
-        }
-        n += !ok;
-    }
-    return n;
+// Whether these balls cover every sample of `keep` (indices into set.cover_samples).
+bool keeps_cover(const CandidateSet& set, const Selection& sel, const std::vector<Ball>& balls,
+                 const std::vector<uint32_t>& keep) {
+    for (uint32_t i : keep)
+        if (!covered(sel, balls, set.cover_samples[i])) return false;
+    return true;
 }
 
 Status fit_impl(const CandidateSet& set, const Selection& sel, const FitOptions& opt, const Monitor& monitor,
-                Skeleton& sk, FitStats& stats) {
+                Skeleton& sk, FitStats& stats, const FitHold* hold) {
     const auto t0 = Clock::now();
     stats = FitStats{};
     if (set.surface.point_cloud || set.surface.mesh.triangles.empty() || sk.balls.empty() ||
@@ -284,7 +339,19 @@ Status fit_impl(const CandidateSet& set, const Selection& sel, const FitOptions&
         return Status::success();
     if (!(opt.power >= 2) || !(opt.regularization >= 0) || !(opt.radius_tolerance >= 0))
         return fail(Code::invalid_argument, "fit: power must be >= 2, regularization and radius_tolerance >= 0");
+    if (hold && !hold->fixed.empty() && hold->fixed.size() != sk.balls.size())
+        return fail(Code::invalid_argument, "fit: one held flag per ball");
     canonicalize(sk);
+    const std::vector<uint8_t> no_fixed;
+    const std::vector<uint8_t>& fixed = hold ? hold->fixed : no_fixed;
+    // with keep_cover: the cover samples the starting balls cover, which every iterate that is
+    // taken or returned must still cover
+    std::vector<uint32_t> keep;
+    const bool keep_cover = hold && hold->keep_cover;
+    if (keep_cover)
+        for (uint32_t i = 0; i < set.cover_samples.size(); ++i)
+            if (covered(sel, sk.balls, set.cover_samples[i])) keep.push_back(i);
+    auto admissible = [&](const std::vector<Ball>& balls) { return !keep_cover || keeps_cover(set, sel, balls, keep); };
     auto cancelled = [] { return fail(Code::cancelled, "fit: cancelled"); };
     const Fitter fitter(set, opt, monitor, resolve_threads(opt.threads));
     double drawn = 0;
@@ -300,6 +367,14 @@ Status fit_impl(const CandidateSet& set, const Selection& sel, const FitOptions&
     // projection's change alone.
     const std::vector<double> allow = fitter.allowance(sk.balls);
     sk.balls = fitter.moved(sk.balls, Eigen::VectorXd::Zero(Eigen::Index(4 * sk.balls.size())), 0, allow);
+    // a projection that uncovers a kept sample leaves nothing to start from that keeps the cover
+    if (!admissible(sk.balls)) {
+        sk.balls = best;
+        stats.error_after = best_err;
+        stats.uncovered = uncovered_samples(set, sel, sk.balls).size();
+        stats.time_s = seconds_since(t0);
+        return Status::success();
+    }
     if (!fitter.residuals(sk, drawn, res)) return cancelled();
     if (res.max_abs < best_err) {
         best_err = res.max_abs;
@@ -311,10 +386,14 @@ Status fit_impl(const CandidateSet& set, const Selection& sel, const FitOptions&
     for (uint32_t it = 0; it < opt.iterations; ++it) {
         if (!monitor.report("fit", double(it) / opt.iterations)) return cancelled();
         ++stats.iterations;
-        const Eigen::VectorXd dx = fitter.step(res, sk.balls, damping);
+        const Eigen::VectorXd dx = fitter.step(res, sk.balls, damping, fixed);
         bool taken = false;
         for (double alpha : {1.0, 0.5, 0.25}) {
             trial.balls = fitter.moved(sk.balls, dx, alpha, allow);
+            // with keep_cover a trial that uncovers a kept sample is pulled back towards the
+            // iterate it starts from (which keeps the cover), ball by ball, as far as needed
+            if (keep_cover) trial.balls = fitter.pull_back(sk.balls, trial.balls, sel, keep);
+            if (!admissible(trial.balls)) continue;
             if (!fitter.residuals(trial, drawn, trial_res)) return cancelled();
             // every trial is a projected iterate: one refused on the L^p mean may still have the
             // lowest maximum residual, the measure the kept skeleton is chosen by
@@ -338,7 +417,7 @@ Status fit_impl(const CandidateSet& set, const Selection& sel, const FitOptions&
     }
     sk.balls = best;
     stats.error_after = best_err;
-    stats.uncovered = count_uncovered(set, sel, sk.balls);
+    stats.uncovered = uncovered_samples(set, sel, sk.balls).size();
     stats.time_s = seconds_since(t0);
     monitor.report("fit", 1.0);
     return Status::success();
@@ -346,9 +425,16 @@ Status fit_impl(const CandidateSet& set, const Selection& sel, const FitOptions&
 
 }  // namespace
 
+std::vector<uint32_t> uncovered_samples(const CandidateSet& set, const Selection& sel, const std::vector<Ball>& balls) {
+    std::vector<uint32_t> out;
+    for (uint32_t i = 0; i < set.cover_samples.size(); ++i)
+        if (!covered(sel, balls, set.cover_samples[i])) out.push_back(i);
+    return out;
+}
+
 Status fit_once(const CandidateSet& set, const Selection& sel, const FitOptions& opt, const Monitor& monitor,
-                Skeleton& sk, FitStats& stats) {
-    return fit_impl(set, sel, opt, monitor, sk, stats);
+                Skeleton& sk, FitStats& stats, const FitHold* hold) {
+    return fit_impl(set, sel, opt, monitor, sk, stats, hold);
 }
 
 }  // namespace ca

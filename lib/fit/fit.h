@@ -17,9 +17,11 @@
 // most the centre's distance to the surface plus an allowance: radius_tolerance, or the excess the
 // connected ball had over its centre's distance if larger.
 // The thorough fit (FitOptions::thorough, off by default; choose.cpp) runs this fit and a second
-// one and keeps the one the evaluator measures closer.
+// one and keeps the one the evaluator measures closer. The covered fit (cover.cpp) repairs the
+// cover the fit breaks with added balls and refits keeping it.
 #pragma once
 #include "candidates.h"
+#include "connect.h"
 #include "selection.h"
 #include "skeleton.h"
 
@@ -38,6 +40,9 @@ struct FitOptions {
     // connected skeleton; of the two, the one of lower two-sided Hausdorff distance as evaluate()
     // measures it at its default options is kept (the first on a tie). 4-6x the fit's CPU time.
     bool thorough = false;
+    // Off by default. On: the covered fit (fit_covered, called by the connection step): this fit
+    // (thorough or not), then the cover it breaks repaired with added balls and a refit that keeps it.
+    bool keep_cover = false;
 };
 
 struct FitStats {
@@ -49,20 +54,47 @@ struct FitStats {
     // second fit, and which was kept (0 the first, 1 the second)
     double hd_first = 0, hd_second = 0;
     uint32_t kept = 0;
+    // covered fit only (cover.cpp): cover samples the first fit left uncovered, balls added to
+    // cover them again, and the balls' count after the repair
+    size_t uncovered_first = 0;
+    uint32_t added = 0;
+};
+
+// What a fit must keep (cover.cpp's refit): balls it may not move, and the cover. With keep_cover
+// every trial is pulled back towards the iterate it starts from (each ball that covered a sample
+// the trial loses has its share of the move halved, up to 8 times, then 0) until every cover
+// sample that the starting balls cover is within the dilated radius of some ball again, so every
+// iterate, and the returned balls, keep that cover.
+struct FitHold {
+    std::vector<uint8_t> fixed;   // per ball of the skeleton, non-zero = held where it is (empty: none)
+    bool keep_cover = false;
 };
 
 // The second fit of the thorough one: these options with twice the boundary samples of E (the
 // bulges between the regular samples are those the evaluator's denser draw finds).
 FitOptions second_fit_options(const FitOptions& opt);
 
-// One fit (fit.cpp), the thorough option ignored.
+// One fit (fit.cpp), the thorough option ignored; `hold` (may be null) what it must keep.
 Status fit_once(const CandidateSet& set, const Selection& sel, const FitOptions& opt, const Monitor& monitor,
-                Skeleton& sk, FitStats& stats);
+                Skeleton& sk, FitStats& stats, const FitHold* hold = nullptr);
+
+// Cover samples that none of these balls covers within its dilated radius under sel's dilation
+// (offset delta or scale), as indices into set.cover_samples.
+std::vector<uint32_t> uncovered_samples(const CandidateSet& set, const Selection& sel, const std::vector<Ball>& balls);
 
 // Fits sk's balls (internal units; sk as made by connect_balls from set and sel) in place: one fit,
 // or with opt.thorough the better of two (choose.cpp).
 // Needs a triangle mesh: for point clouds and caller arrays it leaves sk unchanged.
 Status fit_skeleton(const CandidateSet& set, const Selection& sel, const FitOptions& opt,
                     const Monitor& monitor, Skeleton& sk, FitStats& stats);
+
+// The covered fit (cover.cpp): fit_skeleton with opt, then the cover samples it uncovered (of
+// those the selected balls covered) are covered again by candidate balls in their original place,
+// the grown selection is connected again (copt; `report`, may be null, gets that connection's),
+// and a second fit (one, opt.thorough ignored) moves the fitted balls further with the added ones
+// held and the cover kept. sk's balls are then sel's, in order, followed by the added ones; every
+// cover sample the selected balls covered is covered by them within the dilated radius.
+Status fit_covered(const CandidateSet& set, const Selection& sel, const FitOptions& opt, const ConnectOptions& copt,
+                   const Monitor& monitor, Skeleton& sk, FitStats& stats, ConnectReport* report);
 
 }  // namespace ca

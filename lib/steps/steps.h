@@ -47,12 +47,13 @@ Status candidates_from_arrays(const std::vector<Vec3>& samples, const std::vecto
 
 // ---- step 3: connection (connect_step.cpp); before step 2, whose searches connect probes ----
 
-// How the balls are fitted after connecting (fit.h): not at all, one fit, or the thorough fit;
+// How the balls are fitted after connecting (fit.h): not at all, one fit, the thorough fit, or the
+// covered fit (one fit, then the cover it breaks repaired: fit_covered);
 // automatic: the thorough fit for a selection sized by target_count (few balls, which the fit
 // brings closest to the shape), one fit for a selection a target_error search judged fitted (so
 // the HD it reported is the one connected), else none: a plain selection stays unfitted, so its
 // balls keep covering every sample.
-enum class FitMode : int32_t { automatic = -1, off = 0, once = 1, thorough = 2 };
+enum class FitMode : int32_t { automatic = -1, off = 0, once = 1, thorough = 2, covered = 3 };
 
 struct ConnectRequest {
     ConnectOptions connect;       // the route (automatic by default) and the repairs

@@ -514,13 +514,13 @@ static void test_probe_fit(void) {
         CHECK(connected_hd(ctx, set, sel, 2) <= fitted);
         ca_selection_destroy(sel);
     }
-    {   /* fit values other than 0, 1, 2 are refused */
+    {   /* fit values other than -1, 0, 1, 2, 3 are refused */
         ca_connect_options cop;
         ca_skeleton* sk = NULL;
         ca_select_options_init(&so);
         CHECK(ca_select(ctx, set, &so, &sel) == CA_OK);
         ca_connect_options_init(&cop);
-        cop.fit = 3;
+        cop.fit = 4;
         CHECK(ca_connect(ctx, set, sel, &cop, &sk) == CA_ERROR_INVALID_ARGUMENT && sk == NULL);
         CHECK(strstr(ca_context_last_error(ctx), "fit") != NULL);
         ca_selection_destroy(sel);

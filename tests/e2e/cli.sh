@@ -171,6 +171,11 @@ check "--fit moves the balls" bash -c "! cmp -s '$tmp/e.ma' '$tmp/f.ma'"
 check "--fit-thorough runs" test $? -eq 0
 check "--fit-thorough is no farther than --fit" awk -v t="$(json_field hd_two_sided "$tmp/ft.json")" -v f="$(json_field hd_two_sided "$tmp/f.json")" 'BEGIN{exit !(t > 0 && t <= f + 1e-9)}'
 check "--fit-thorough keeps the balls and edges" test "$(json_field selected "$tmp/ft.json") $(json_field edges "$tmp/ft.json")" = "$(json_field selected "$tmp/e.json") $(json_field edges "$tmp/e.json")"
+# the covered fit keeps the cover (the fit's own count of uncovered samples is 0) with added balls
+"$tool" "$data/fox.obj" -o "$tmp/fc.ma" --fit-covered --evaluate --json > "$tmp/fc.json"
+check "--fit-covered runs" test $? -eq 0
+check "--fit-covered leaves no sample uncovered" test "$(grep -o '"fit":{[^}]*}' "$tmp/fc.json" | grep -o '"uncovered":[0-9]*' | cut -d: -f2)" = 0
+check "--fit-covered adds balls on the fox" test "$(json_field selected "$tmp/fc.json")" -gt "$(json_field selected "$tmp/e.json")"
 "$tool" evaluate "$data/fox.obj" "$tmp/bad.ma" > /dev/null 2> "$tmp/err"
 check "evaluate: a malformed .ma is a clear failure" test $? -eq 3 -a -s "$tmp/err"
 

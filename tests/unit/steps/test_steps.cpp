@@ -125,6 +125,15 @@ TEST_CASE("steps: the automatic route, the fit on meshes only, and requests chec
     REQUIRE(ca::connect_step(set, sel.selection, kr, ca::Monitor{}, k).ok());
     CHECK(k.fitted);
     CHECK(k.fit.error_after <= k.fit.error_before);
+    {   // the covered fit through the step: the cover kept, the added balls after the selected ones
+        ca::ConnectRequest covered = kr;
+        covered.fit = ca::FitMode::covered;
+        ca::ConnectResult c;
+        REQUIRE(ca::connect_step(set, sel.selection, covered, ca::Monitor{}, c).ok());
+        CHECK(c.fitted);
+        CHECK(c.fit.uncovered == 0);
+        CHECK(c.skeleton.balls.size() == sel.selection.indices.size() + c.fit.added);
+    }
 
     // the same balls from caller arrays: no surface, so the power route and no fit
     std::vector<ca::Vec3> samples, centers;
@@ -147,7 +156,7 @@ TEST_CASE("steps: the automatic route, the fit on meshes only, and requests chec
     ca::Monitor stopped;
     stopped.cancel_flag = &cancel;
     ca::ConnectRequest bad_connect;
-    bad_connect.fit = static_cast<ca::FitMode>(3);
+    bad_connect.fit = static_cast<ca::FitMode>(4);
     ca::Status st = ca::connect_step(set, sel.selection, bad_connect, stopped, k);
     CHECK(st.code == ca::Code::invalid_argument);
     CHECK(st.message.find("fit") != std::string::npos);
