@@ -12,6 +12,7 @@
 #include "hole_caps.h"
 #include "surface.h"
 
+#include <atomic>
 #include <functional>
 #include <memory>
 
@@ -51,7 +52,7 @@ class CloudReach {
 public:
     CloudReach(std::vector<Vec3> pts, std::shared_ptr<const PointCloudWinding> winding, int threads = 1);
     ~CloudReach();
-    bool within(const Ball& b) const;
+    bool within(const Ball& b) const;   // a ball of radius 0: its centre, as a point of a sphere
     double reach() const { return reach_; }
     // At most a quarter of the rays from q leave the grown bounding box without meeting a wall.
     bool enclosed(const Vec3& q) const;
@@ -65,7 +66,14 @@ private:
     Vec3 lo_ = Vec3::Zero();
     double cell_ = 1;
     size_t dims_[3] = {0, 0, 0};
-    std::vector<uint8_t> walls_;
+    std::vector<uint8_t> walls_;   // per voxel: wall (within the wall radius), near / maybe (all / part within the reach)
+    // far probes' verdicts (0 not yet known, 1 inside and enclosed, 2 not) per cell of side
+    // side_cell_ from lo_: a cache of a pure function, filled by whichever thread asks first
+    bool far_point_inside(const Vec3& q) const;
+    bool point_within(const Vec3& q) const;   // within the reach, or inside and enclosed
+    double side_cell_ = 1;
+    size_t side_dims_[3] = {0, 0, 0};
+    std::unique_ptr<std::atomic<uint8_t>[]> verdicts_;
 };
 
 struct CandidateSet {

@@ -17,7 +17,11 @@
 //   Rays march on a voxel grid whose voxels within the wall radius of a point are walls (a voxel
 //   is a wall when any part of it is), so a step of one voxel cannot cross a wall.
 // - The sphere is probed at kReachDirections evenly spread points; a ball with radius + centre
-//   distance within the reach cannot leave it and is not probed.
+//   distance within the reach cannot leave it and is not probed. Whether a probe is within the
+//   reach of a point is read from its voxel where all of the voxel is or none of it is, else
+//   computed; a far probe takes the verdict (inside
+//   and enclosed) of the centre of its cell of side reach / 2, computed once per cell: that
+//   centre lies more than a quarter of the reach from the cloud, on the probe's side of it.
 #include "candidates_internal.h"
 
 #include "kdtree.h"
@@ -31,10 +35,11 @@ namespace ca {
 namespace {
 
 constexpr size_t kReachDirections = 64;
-constexpr size_t kRays = 24;
-constexpr size_t kOpenRays = kRays / 4;
+constexpr size_t kRays = 32;
+constexpr size_t kOpenRays = kRays / 16;
 constexpr double kWallRadius = 0.75;   // x the median 8th-neighbour distance
 constexpr size_t kMaxCells = 192;      // voxels along the longest side at most
+constexpr uint8_t kWall = 1, kNear = 2, kMaybe = 4;  // voxel flags
 
 // n evenly spread unit vectors (Fibonacci points on the sphere).
 std::vector<Vec3> sphere_directions(size_t n) {
@@ -76,9 +81,12 @@ CloudReach::CloudReach(std::vector<Vec3> points, std::shared_ptr<const PointClou
     lo_ = lo - Vec3::Constant(reach_ + cell_);
     for (int a = 0; a < 3; ++a) dims_[a] = size_t(std::ceil((hi[a] - lo[a] + 2 * (reach_ + cell_)) / cell_)) + 1;
     walls_.assign(dims_[0] * dims_[1] * dims_[2], 0);
-    // a voxel is a wall when its centre is within wall + half its diagonal of a point
-    const double grow = wall + 0.8660254037844386 * cell_;
-    const long span = long(std::ceil(grow / cell_));
+    // a voxel is a wall (kWall) when its centre is within wall + half its diagonal of a point; it
+    // is near (kNear) when all of it is within the reach of one, and may be (kMaybe) when part of it
+    // is
+    const double half = 0.8660254037844386 * cell_, grow = wall + half;
+    const double near = std::max(0.0, reach_ - half), maybe = reach_ + half;
+    const long span = long(std::ceil(std::max(grow, maybe) / cell_));
     for (const Vec3& p : pts) {
         const Vec3 g = (p - lo_) / cell_;
         const long ci = long(g.x()), cj = long(g.y()), ck = long(g.z());
@@ -87,9 +95,35 @@ CloudReach::CloudReach(std::vector<Vec3> points, std::shared_ptr<const PointClou
                 for (long k = ck - span; k <= ck + span; ++k) {
                     if (i < 0 || j < 0 || k < 0 || size_t(i) >= dims_[0] || size_t(j) >= dims_[1] || size_t(k) >= dims_[2]) continue;
                     const Vec3 c = lo_ + cell_ * Vec3(double(i) + 0.5, double(j) + 0.5, double(k) + 0.5);
-                    if ((c - p).squaredNorm() <= grow * grow) walls_[(size_t(i) * dims_[1] + size_t(j)) * dims_[2] + size_t(k)] = 1;
+                    const double d2 = (c - p).squaredNorm();
+                    uint8_t& v = walls_[(size_t(i) * dims_[1] + size_t(j)) * dims_[2] + size_t(k)];
+                    if (d2 <= grow * grow) v |= kWall;
+                    if (d2 <= near * near) v |= kNear;
+                    if (d2 <= maybe * maybe) v |= kMaybe;
                 }
     }
+    // the far points' verdicts, one per cell of side reach / 2
+    side_cell_ = 0.5 * reach_;
+    for (int a = 0; a < 3; ++a) side_dims_[a] = size_t(std::ceil(double(dims_[a]) * cell_ / side_cell_)) + 1;
+    const size_t cells = side_dims_[0] * side_dims_[1] * side_dims_[2];
+    verdicts_ = std::make_unique<std::atomic<uint8_t>[]>(cells);
+    for (size_t i = 0; i < cells; ++i) verdicts_[i].store(0, std::memory_order_relaxed);
+}
+
+bool CloudReach::far_point_inside(const Vec3& q) const {
+    const Vec3 g = (q - lo_) / side_cell_;
+    if ((g.array() < 0).any() || g.x() >= double(side_dims_[0]) || g.y() >= double(side_dims_[1]) || g.z() >= double(side_dims_[2]))
+        return false;
+    const size_t i = size_t(g.x()), j = size_t(g.y()), k = size_t(g.z());
+    std::atomic<uint8_t>& verdict = verdicts_[(i * side_dims_[1] + j) * side_dims_[2] + k];
+    uint8_t v = verdict.load(std::memory_order_relaxed);
+    if (v == 0) {
+        // a pure function of the cell: threads that race store the same verdict
+        const Vec3 c = lo_ + side_cell_ * Vec3(double(i) + 0.5, double(j) + 0.5, double(k) + 0.5);
+        v = winding_->inside(c) && enclosed(c) ? 1 : 2;
+        verdict.store(v, std::memory_order_relaxed);
+    }
+    return v == 1;
 }
 
 bool CloudReach::enclosed(const Vec3& q) const {
@@ -102,7 +136,7 @@ bool CloudReach::enclosed(const Vec3& q) const {
             x += step;
             const Vec3 g = (x - lo_) / cell_;
             if ((g.array() < 0).any() || g.x() >= double(dims_[0]) || g.y() >= double(dims_[1]) || g.z() >= double(dims_[2])) break;
-            if (walls_[(size_t(g.x()) * dims_[1] + size_t(g.y())) * dims_[2] + size_t(g.z())]) { hit = true; break; }
+            if (walls_[(size_t(g.x()) * dims_[1] + size_t(g.y())) * dims_[2] + size_t(g.z())] & kWall) { hit = true; break; }
         }
         if (!hit && ++open > kOpenRays) return false;
         // too many open rays already decided; too few left to open it: enclosed
@@ -112,14 +146,21 @@ bool CloudReach::enclosed(const Vec3& q) const {
 }
 
 bool CloudReach::within(const Ball& b) const {
-    if (!(b.radius > 0)) return true;
-    if (b.radius + tree_->distance(b.center) <= reach_) return true;
-    for (const Vec3& d : directions_) {
-        const Vec3 q = b.center + b.radius * d;
-        if (tree_->distance(q) <= reach_) continue;
-        if (!winding_->inside(q) || !enclosed(q)) return false;
-    }
+    const double r = b.radius > 0 ? b.radius : 0;
+    if (r + tree_->distance(b.center) <= reach_) return true;
+    if (r == 0) return point_within(b.center);
+    for (const Vec3& d : directions_)
+        if (!point_within(b.center + r * d)) return false;
     return true;
+}
+
+bool CloudReach::point_within(const Vec3& q) const {
+    const Vec3 g = (q - lo_) / cell_;
+    if ((g.array() < 0).any() || g.x() >= double(dims_[0]) || g.y() >= double(dims_[1]) || g.z() >= double(dims_[2]))
+        return false;   // beyond the grid: farther than the reach from every point
+    const uint8_t v = walls_[(size_t(g.x()) * dims_[1] + size_t(g.y())) * dims_[2] + size_t(g.z())];
+    if ((v & kNear) || ((v & kMaybe) && tree_->distance(q) <= reach_)) return true;
+    return far_point_inside(q);
 }
 
 CloudReach::~CloudReach() = default;

@@ -184,16 +184,18 @@ bool InsideTest::point_ok(Probes* probes, const Vec3& p, double r, double tol, d
     return outside_tol > 0 && impl_->distance && impl_->distance->distance_below(p, outside_tol) < outside_tol;
 }
 
-// Point clouds: the element's interpolated balls stay within reach of the cloud (CloudReach), tested
+// Point clouds: the element's interpolated balls (or, for a segment with `balls` false, its centre
+// line) stay within reach of the cloud (CloudReach), tested
 // at spacing max(h, reach / 2): the rule itself allows the reach, and each test costs a sphere of
 // distance queries. True where the candidate set has no reach rule (meshes, caller arrays).
-bool InsideTest::segment_within_reach(const Ball& a, const Ball& b, double h) const {
+bool InsideTest::segment_within_reach(const Ball& a, const Ball& b, double h, bool balls) const {
     const CloudReach* reach = impl_->cloud_reach.get();
     if (!reach) return true;
     const int n = std::max(1, int(std::ceil((b.center - a.center).norm() / std::max(h, 0.5 * reach->reach()))));
     for (int i = 1; i < n; ++i) {
         const double t = double(i) / n;
-        if (!reach->within({a.center + (b.center - a.center) * t, (1 - t) * a.radius + t * b.radius})) return false;
+        const double r = balls ? (1 - t) * a.radius + t * b.radius : 0;
+        if (!reach->within({a.center + (b.center - a.center) * t, r})) return false;
     }
     return true;
 }
@@ -215,8 +217,9 @@ bool InsideTest::triangle_within_reach(const Ball& a, const Ball& b, const Ball&
     return true;
 }
 
-bool InsideTest::segment_inside(const Ball& a, const Ball& b, double h, double tol, double outside_tol) const {
-    if (!segment_within_reach(a, b, h)) return false;
+bool InsideTest::segment_inside(const Ball& a, const Ball& b, double h, double tol, double outside_tol,
+                                bool reach_balls) const {
+    if (!segment_within_reach(a, b, h, reach_balls)) return false;
     const int n = std::max(1, int(std::ceil((b.center - a.center).norm() / h)));
     const Ball* own[2] = {&a, &b};
     std::unique_ptr<Probes> probes = impl_->winding ? std::make_unique<Probes>(*impl_) : nullptr;
