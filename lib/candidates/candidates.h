@@ -54,7 +54,7 @@ public:
     ~CloudReach();
     bool within(const Ball& b) const;   // a ball of radius 0: its centre, as a point of a sphere
     double reach() const { return reach_; }
-    // At most a quarter of the rays from q leave the grown bounding box without meeting a wall.
+    // At most 1/16 of the rays from q leave the grown bounding box without meeting a wall.
     bool enclosed(const Vec3& q) const;
 private:
     std::vector<Vec3> pts_;

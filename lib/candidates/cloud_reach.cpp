@@ -8,8 +8,11 @@
 // that lies farther than the reach from the nearest cloud point must be inside by the winding
 // number and enclosed by the cloud: of kRays rays from q, evenly spread over all directions, at
 // most kOpenRays leave the (grown) bounding box without coming within the wall radius of a cloud
-// point. Rays need no normals, so wrong signs cannot mislead them; a hole lets through the rays
-// that see it, so points near a large hole count as outside and points deep inside do not.
+// point (kOpenRays = 1/16 of them: from under a hemisphere's dome the open side takes at least
+// 15 % of the directions, so nothing under an open sheet is enclosed, while a closed cloud's
+// walls stop every ray). Rays need no normals, so wrong signs cannot mislead them; a hole lets
+// through the rays that see it, so points whose view of a hole exceeds 1/16 of the directions
+// count as outside and points deeper inside do not.
 // - The reach is max(kCloudReach, median 8th-neighbour distance): nearer than the gaps between
 //   points, a sphere point cannot be told from one touching the unsampled surface between them.
 // - The wall radius is 0.75 x the median 8th-neighbour distance (as the fallback balls' rays):
@@ -20,8 +23,9 @@
 //   distance within the reach cannot leave it and is not probed. Whether a probe is within the
 //   reach of a point is read from its voxel where all of the voxel is or none of it is, else
 //   computed; a far probe takes the verdict (inside
-//   and enclosed) of the centre of its cell of side reach / 2, computed once per cell: that
-//   centre lies more than a quarter of the reach from the cloud, on the probe's side of it.
+//   and enclosed) of the centre of its cell of side reach, computed once per cell: that centre
+//   lies within the empty ball of radius reach around the probe, so on the probe's side of the
+//   cloud and more than an eighth of the reach from it.
 #include "candidates_internal.h"
 
 #include "kdtree.h"
@@ -102,8 +106,8 @@ CloudReach::CloudReach(std::vector<Vec3> points, std::shared_ptr<const PointClou
                     if (d2 <= maybe * maybe) v |= kMaybe;
                 }
     }
-    // the far points' verdicts, one per cell of side reach / 2
-    side_cell_ = 0.5 * reach_;
+    // the far points' verdicts, one per cell of side reach
+    side_cell_ = reach_;
     for (int a = 0; a < 3; ++a) side_dims_[a] = size_t(std::ceil(double(dims_[a]) * cell_ / side_cell_)) + 1;
     const size_t cells = side_dims_[0] * side_dims_[1] * side_dims_[2];
     verdicts_ = std::make_unique<std::atomic<uint8_t>[]>(cells);
