@@ -23,9 +23,10 @@
 //   distance within the reach cannot leave it and is not probed. Whether a probe is within the
 //   reach of a point is read from its voxel where all of the voxel is or none of it is, else
 //   computed; a far probe takes the verdict (inside
-//   and enclosed) of the centre of its cell of side reach, computed once per cell: that centre
-//   lies within the empty ball of radius reach around the probe, so on the probe's side of the
-//   cloud and more than an eighth of the reach from it.
+//   and enclosed) of the centre of its cell of side reach / 2, computed once per cell: that
+//   centre lies within the empty ball of radius reach around the probe, so on the probe's side of
+//   the cloud and more than half the reach from it (cells of side reach, which give centres up to
+//   0.87 of the reach away, judge too coarsely near thin parts).
 #include "candidates_internal.h"
 
 #include "kdtree.h"
@@ -106,8 +107,8 @@ CloudReach::CloudReach(std::vector<Vec3> points, std::shared_ptr<const PointClou
                     if (d2 <= maybe * maybe) v |= kMaybe;
                 }
     }
-    // the far points' verdicts, one per cell of side reach
-    side_cell_ = reach_;
+    // the far points' verdicts, one per cell of side reach / 2
+    side_cell_ = 0.5 * reach_;
     for (int a = 0; a < 3; ++a) side_dims_[a] = size_t(std::ceil(double(dims_[a]) * cell_ / side_cell_)) + 1;
     const size_t cells = side_dims_[0] * side_dims_[1] * side_dims_[2];
     verdicts_ = std::make_unique<std::atomic<uint8_t>[]>(cells);
