@@ -12,6 +12,7 @@
 #include "hole_caps.h"
 #include "surface.h"
 
+#include <atomic>
 #include <functional>
 #include <memory>
 
@@ -40,6 +41,40 @@ struct CandidateOptions {
 class WindingNumber;
 class MeshDistance;
 class PointCloudWinding;
+class PointTree;
+
+// Point clouds (cloud_reach.cpp): whether a ball stays within reach of the cloud: every point of
+// its sphere farther than reach() from the nearest cloud point is inside by the winding number and
+// enclosed by the cloud (rays from it meet the cloud). reach() is max(kCloudReach, the median
+// 8th-neighbour distance). The candidate step drops the candidates that are not and bounds the
+// fallback balls by it; the connection step keeps no element whose interpolated balls are not.
+class CloudReach {
+public:
+    CloudReach(std::vector<Vec3> pts, std::shared_ptr<const PointCloudWinding> winding, int threads = 1);
+    ~CloudReach();
+    bool within(const Ball& b) const;   // a ball of radius 0: its centre, as a point of a sphere
+    double reach() const { return reach_; }
+    // At most 1/16 of the rays from q leave the grown bounding box without meeting a wall.
+    bool enclosed(const Vec3& q) const;
+private:
+    std::vector<Vec3> pts_;
+    std::unique_ptr<PointTree> tree_;
+    std::shared_ptr<const PointCloudWinding> winding_;
+    std::vector<Vec3> directions_, rays_;
+    double reach_ = 0;
+    // the wall grid: voxels of side cell_ from lo_, 1 where a cloud point is within the wall radius
+    Vec3 lo_ = Vec3::Zero();
+    double cell_ = 1;
+    size_t dims_[3] = {0, 0, 0};
+    std::vector<uint8_t> walls_;   // per voxel: wall (within the wall radius), near / maybe (all / part within the reach)
+    // far probes' verdicts (0 not yet known, 1 inside and enclosed, 2 not) per cell of side
+    // side_cell_ from lo_: a cache of a pure function, filled by whichever thread asks first
+    bool far_point_inside(const Vec3& q) const;
+    bool point_within(const Vec3& q) const;   // within the reach, or inside and enclosed
+    double side_cell_ = 1;
+    size_t side_dims_[3] = {0, 0, 0};
+    std::unique_ptr<std::atomic<uint8_t>[]> verdicts_;
+};
 
 struct CandidateSet {
     Surface surface;                      // empty mesh when built from caller arrays
@@ -62,7 +97,10 @@ struct CandidateSet {
     // Point clouds: the winding number of the (de-duplicated, oriented) points, the inside test
     // of the candidates, the fallback balls and the connection step.
     std::shared_ptr<const PointCloudWinding> cloud_winding;
+    // Point clouds: the reach rule (CloudReach above), shared with the connection step.
+    std::shared_ptr<const CloudReach> cloud_reach;
     size_t outliers = 0;                  // point clouds: points dropped as outliers (cloud_outliers.cpp)
+    size_t beyond_reach = 0;              // point clouds: candidates dropped as reaching outside the cloud (cloud_reach.cpp)
     size_t outside_local_plane = 0;       // point clouds: candidates dropped outside the local surface (cloud_local_planes.cpp)
     double noise_ratio = 0;               // point clouds: median off-plane distance / spacing (cloud_local_planes.cpp)
     double noise_scale_growth = 0;        // point clouds: the same over 16 and 8 neighbours (cloud_local_planes.cpp)
@@ -86,6 +124,9 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
 // Every cover sample that no candidate reaches within kFallbackReach gets a small inner ball
 // under it (fallback_balls.cpp), so a cover exists for every offset delta >= kFallbackReach.
 constexpr double kFallbackReach = 0.005;   // unit-cube units (0.5 % of the longest bbox side)
+// Point clouds: no candidate's sphere reaches outside farther than this from every cloud point
+// (or than the cloud's median 8th-neighbour distance, if larger; cloud_reach.cpp).
+constexpr double kCloudReach = 0.03;   // unit-cube units (3 % of the longest bbox side)
 // `caps` (optional): distances to the hole caps of an open mesh, which also bound the radius.
 // `threads`: for the coverage queries (0 = all cores). When `monitor` says stop (tested in the
 // coverage queries and every Monitor::kCheckEvery samples; its progress callback is not called)
@@ -106,6 +147,9 @@ struct CloudNoise {
     // The normals were estimated or re-oriented (not given and trusted): some signs are wrong, so
     // the side of each ball is chosen by rays through the cloud, not by the normal's sign alone.
     bool untrusted_signs = false;
+    // Not noise but the same kind of bound: a ball stops growing where it would no longer pass
+    // this (cloud_reach.cpp: its sphere stays within reach of the cloud); null: no such bound.
+    std::function<bool(const Ball&)> within_reach;
 };
 size_t add_cloud_fallback_balls(CandidateSet& set, const PointCloudWinding& winding, const std::vector<Vec3>& normals,
                                 const CloudNoise& noise = {}, int threads = 0, const Monitor& monitor = Monitor{});

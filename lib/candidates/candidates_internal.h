@@ -92,6 +92,9 @@ private:
 };
 // Drops the balls whose centre is above the local plane (height > 0); returns how many.
 size_t drop_outside_local_planes(const LocalPlanes& planes, int threads, const Monitor& monitor, std::vector<Ball>& balls);
+// Drops the balls that are not within reach; returns how many (0 when `monitor` stopped it: the
+// caller tests monitor.stopped()).
+size_t drop_beyond_reach(const CloudReach& reach, int threads, const Monitor& monitor, std::vector<Ball>& balls);
 // point_cloud.cpp: the candidates (Voronoi or random) and fallback balls of an oriented point cloud.
 Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monitor, int threads, CandidateSet& out);
 

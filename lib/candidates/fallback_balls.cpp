@@ -79,7 +79,8 @@ using cand::unreached_samples;
 // `noise_depth` > 0 (noisy clouds): the inside test is unreliable within that depth, so when no
 // shallow point is inside, deeper ones are tried, doubling from kFallbackReach up to it.
 bool grow_ball(const Vec3& s, const Vec3& n, const std::function<bool(const Vec3&)>& inside,
-               const std::function<double(const Vec3&)>& radius_at, Ball& best, double noise_depth = 0) {
+               const std::function<double(const Vec3&)>& radius_at, Ball& best, double noise_depth = 0,
+               const std::function<bool(const Ball&)>& fits = nullptr) {
     // first depth inside the shape: half the reach, smaller for thinner parts
     best = {s, -1};
     double depth = 0.5 * kFallbackReach;
@@ -101,6 +102,7 @@ bool grow_ball(const Vec3& s, const Vec3& n, const std::function<bool(const Vec3
         if (!inside(c)) return false;
         const double r = radius_at(c);
         if (t - r > 0.5 * kFallbackReach) return false;
+        if (fits && !fits({c, r})) return false;
         ball = {c, r};
         return true;
     };
@@ -233,12 +235,12 @@ size_t add_cloud_fallback_balls(CandidateSet& set, const PointCloudWinding& wind
             // n: towards the more open side
             const double front = rays->escaping(s, n), behind = rays->escaping(s, -n);
             if (behind > front) n = -n;
-            grown = grow_ball(s, n, inside, radius_at, best, noise.depth);
+            grown = grow_ball(s, n, inside, radius_at, best, noise.depth, noise.within_reach);
             const bool clear = std::min(front, behind) <= kEnclosed && std::abs(front - behind) >= kEnclosed;
-            if (!grown && clear) grown = grow_ball(s, n, anywhere, radius_at, best);
-            if (!grown) grown = grow_ball(s, -n, inside, radius_at, best, noise.depth);
+            if (!grown && clear) grown = grow_ball(s, n, anywhere, radius_at, best, 0, noise.within_reach);
+            if (!grown) grown = grow_ball(s, -n, inside, radius_at, best, noise.depth, noise.within_reach);
         } else {
-            grown = grow_ball(s, n, inside, radius_at, best, noise.depth);
+            grown = grow_ball(s, n, inside, radius_at, best, noise.depth, noise.within_reach);
         }
         if (!grown) continue;
         set.balls.push_back(best);

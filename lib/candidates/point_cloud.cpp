@@ -206,12 +206,18 @@ Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monito
                     : random_cloud_candidates(opt, upts, *winding, threads, monitor, out.balls);
     if (!st.ok()) return st;
     if (planes.noisy()) out.outside_local_plane = drop_outside_local_planes(planes, threads, monitor, out.balls);
+    // no ball reaches outside far from every point (cloud_reach.cpp); the fallback balls below
+    // cover what the dropped ones reached, grown only while they stay within reach
+    auto reach = std::make_shared<const CloudReach>(upts, winding, threads);
+    out.beyond_reach = drop_beyond_reach(*reach, threads, monitor, out.balls);
+    if (monitor.stopped()) return monitor.stop_status("candidates");
     CloudNoise noise;
     if (planes.noisy()) {
         noise.depth = kNoiseBand * planes.noise();
         noise.below_surface = [&planes](const Vec3& c) { return planes.height(c) <= 0; };
     }
     noise.untrusted_signs = out.surface.normals_source != NormalSource::given;
+    noise.within_reach = [&reach](const Ball& b) { return reach->within(b); };
     out.fallback_balls = add_cloud_fallback_balls(out, *winding, sample_normals, noise, threads, monitor);
     if (monitor.stopped()) return monitor.stop_status("fallback balls");
     if (!opt.volumetric_only) {
@@ -219,6 +225,7 @@ Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monito
         if (monitor.stopped()) return monitor.stop_status("surface balls");
     }
     out.cloud_winding = std::move(winding);
+    out.cloud_reach = std::move(reach);
     return Status::success();
 }
 

@@ -127,13 +127,20 @@ public:
     // >= interpolated radius - envelope_tol):
     // the reconstruction of the element (cone, slab) does not bulge out of the shape.
     // outside_tol > 0 (meshes) also accepts test points outside the shape by at most outside_tol.
-    bool segment_inside(const Ball& a, const Ball& b, double h, double envelope_tol = -1, double outside_tol = 0) const;
+    // Point clouds: the element's interpolated balls must also stay within reach of the cloud
+    // (CloudReach, candidates.h), whatever the tolerances.
+    // reach_balls false: only the segment's centre line must stay within reach (the centre-line
+    // passes of reconnection: a connected shape keeps a connected skeleton).
+    bool segment_inside(const Ball& a, const Ball& b, double h, double envelope_tol = -1, double outside_tol = 0,
+                        bool reach_balls = true) const;
     bool triangle_inside(const Ball& a, const Ball& b, const Ball& c, double h, double envelope_tol = -1) const;
 private:
     struct Impl;
     class Probes;   // per-element cache of exact distances (inside_test.cpp)
     bool point_ok(Probes* probes, const Vec3& p, double r, double tol, double outside_tol,
                   const Ball* const* own, int n_own) const;
+    bool segment_within_reach(const Ball& a, const Ball& b, double h, bool balls = true) const;
+    bool triangle_within_reach(const Ball& a, const Ball& b, const Ball& c, double h) const;
     std::unique_ptr<Impl> impl_;
 };
 

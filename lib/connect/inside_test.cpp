@@ -48,6 +48,7 @@ struct InsideTest::Impl {
     std::shared_ptr<const MeshDistance> caps;       // open meshes: the hole caps (envelope rule)
     bool closed = false;                      // winding number integer-valued (shortcut allowed)
     std::shared_ptr<const PointCloudWinding> cloud_winding;   // point clouds (the candidate set's)
+    std::shared_ptr<const CloudReach> cloud_reach;            // point clouds: the reach rule (candidates.h)
     std::vector<Vec3> cloud_points;           // point clouds: the points (envelope rule)
     std::unique_ptr<PointTree> cloud_tree;
     std::vector<Vec3> centers;                // the candidate balls (point clouds without a winding number)
@@ -134,6 +135,7 @@ InsideTest::InsideTest(const CandidateSet& set) : impl_(std::make_unique<Impl>()
         return;
     }
     impl_->cloud_winding = set.cloud_winding;
+    impl_->cloud_reach = set.cloud_reach;
     // the distance to the surface of a point cloud: to its nearest point (an overestimate by at
     // most the sample spacing, far below the envelope tolerance delta)
     impl_->cloud_points = set.dense_samples.empty() ? set.cover_samples : set.dense_samples;
@@ -182,7 +184,42 @@ bool InsideTest::point_ok(Probes* probes, const Vec3& p, double r, double tol, d
     return outside_tol > 0 && impl_->distance && impl_->distance->distance_below(p, outside_tol) < outside_tol;
 }
 
-bool InsideTest::segment_inside(const Ball& a, const Ball& b, double h, double tol, double outside_tol) const {
+// Point clouds: the element's interpolated balls (or, for a segment with `balls` false, its centre
+// line) stay within reach of the cloud (CloudReach), tested
+// at spacing max(h, reach / 2): the rule itself allows the reach, and each test costs a sphere of
+// distance queries. True where the candidate set has no reach rule (meshes, caller arrays).
+bool InsideTest::segment_within_reach(const Ball& a, const Ball& b, double h, bool balls) const {
+    const CloudReach* reach = impl_->cloud_reach.get();
+    if (!reach) return true;
+    const int n = std::max(1, int(std::ceil((b.center - a.center).norm() / std::max(h, 0.5 * reach->reach()))));
+    for (int i = 1; i < n; ++i) {
+        const double t = double(i) / n;
+        const double r = balls ? (1 - t) * a.radius + t * b.radius : 0;
+        if (!reach->within({a.center + (b.center - a.center) * t, r})) return false;
+    }
+    return true;
+}
+
+bool InsideTest::triangle_within_reach(const Ball& a, const Ball& b, const Ball& c, double h) const {
+    const CloudReach* reach = impl_->cloud_reach.get();
+    if (!reach) return true;
+    const double longest = std::max({(b.center - a.center).norm(), (c.center - b.center).norm(),
+                                     (a.center - c.center).norm()});
+    const int n = std::max(1, int(std::ceil(longest / std::max(h, 0.5 * reach->reach()))));
+    for (int i = 0; i <= n; ++i)
+        for (int j = 0; i + j <= n; ++j) {
+            const int k = n - i - j;
+            if (i == n || j == n || k == n) continue;   // the vertices themselves
+            const Vec3 p = (a.center * i + b.center * j + c.center * k) / double(n);
+            const double r = (a.radius * i + b.radius * j + c.radius * k) / double(n);
+            if (!reach->within({p, r})) return false;
+        }
+    return true;
+}
+
+bool InsideTest::segment_inside(const Ball& a, const Ball& b, double h, double tol, double outside_tol,
+                                bool reach_balls) const {
+    if (!segment_within_reach(a, b, h, reach_balls)) return false;
     const int n = std::max(1, int(std::ceil((b.center - a.center).norm() / h)));
     const Ball* own[2] = {&a, &b};
     std::unique_ptr<Probes> probes = impl_->winding ? std::make_unique<Probes>(*impl_) : nullptr;
@@ -195,6 +232,7 @@ bool InsideTest::segment_inside(const Ball& a, const Ball& b, double h, double t
 }
 
 bool InsideTest::triangle_inside(const Ball& a, const Ball& b, const Ball& c, double h, double tol) const {
+    if (!triangle_within_reach(a, b, c, h)) return false;
     const double longest = std::max({(b.center - a.center).norm(), (c.center - b.center).norm(),
                                      (a.center - c.center).norm()});
     const int n = std::max(1, int(std::ceil(longest / h)));

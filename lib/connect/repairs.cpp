@@ -215,7 +215,8 @@ void reconnect(const InsideTest& test, double h, double tol, Skeleton& s, const 
             if (components <= 1) break;
             if (uf.find(p.i) == uf.find(p.j)) continue;
             if (pass == 2 && (*ball_part)[p.i] != (*ball_part)[p.j]) continue;
-            if (!test.segment_inside(s.balls[p.i], s.balls[p.j], h, pass == 0 ? tol : -1, pass == 2 ? 4 * h : h)) continue;
+            if (!test.segment_inside(s.balls[p.i], s.balls[p.j], h, pass == 0 ? tol : -1, pass == 2 ? 4 * h : h, pass == 0))
+                continue;
             uf.unite(p.i, p.j);
             s.edges.push_back({p.i, p.j});
             --components;
