@@ -50,7 +50,10 @@ class PointTree;
 // fallback balls by it; the connection step keeps no element whose interpolated balls are not.
 class CloudReach {
 public:
-    CloudReach(std::vector<Vec3> pts, std::shared_ptr<const PointCloudWinding> winding, int threads = 1);
+    // Stopped by `monitor` (tested every few thousand points), the grid is incomplete: the caller
+    // tests monitor.stopped() and drops the object.
+    CloudReach(std::vector<Vec3> pts, std::shared_ptr<const PointCloudWinding> winding, int threads = 1,
+               const Monitor& monitor = Monitor{});
     ~CloudReach();
     bool within(const Ball& b) const;   // a ball of radius 0: its centre, as a point of a sphere
     double reach() const { return reach_; }

@@ -60,7 +60,8 @@ std::vector<Vec3> sphere_directions(size_t n) {
 
 }  // namespace
 
-CloudReach::CloudReach(std::vector<Vec3> points, std::shared_ptr<const PointCloudWinding> winding, int threads)
+CloudReach::CloudReach(std::vector<Vec3> points, std::shared_ptr<const PointCloudWinding> winding, int threads,
+                       const Monitor& monitor)
     : pts_(std::move(points)), winding_(std::move(winding)) {
     const std::vector<Vec3>& pts = pts_;
     tree_ = std::make_unique<PointTree>(pts_);
@@ -89,10 +90,14 @@ CloudReach::CloudReach(std::vector<Vec3> points, std::shared_ptr<const PointClou
     // a voxel is a wall (kWall) when its centre is within wall + half its diagonal of a point; it
     // is near (kNear) when all of it is within the reach of one, and may be (kMaybe) when part of it
     // is
-    const double half = 0.8660254037844386 * cell_, grow = wall + half;
+    // stamping costs a block of voxels per point: tested for a stop request every few thousand
+    const double half = 0.8660254037844386 * cell_;
+    const double grow = wall + half;
     const double near = std::max(0.0, reach_ - half), maybe = reach_ + half;
     const long span = long(std::ceil(std::max(grow, maybe) / cell_));
-    for (const Vec3& p : pts) {
+    for (size_t n = 0; n < pts.size(); ++n) {
+        if (monitor.stopped_at(n)) return;
+        const Vec3& p = pts[n];
         const Vec3 g = (p - lo_) / cell_;
         const long ci = long(g.x()), cj = long(g.y()), ck = long(g.z());
         for (long i = ci - span; i <= ci + span; ++i)

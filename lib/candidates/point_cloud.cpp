@@ -208,7 +208,8 @@ Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monito
     if (planes.noisy()) out.outside_local_plane = drop_outside_local_planes(planes, threads, monitor, out.balls);
     // no ball reaches outside far from every point (cloud_reach.cpp); the fallback balls below
     // cover what the dropped ones reached, grown only while they stay within reach
-    auto reach = std::make_shared<const CloudReach>(upts, winding, threads);
+    auto reach = std::make_shared<const CloudReach>(upts, winding, threads, monitor);
+    if (monitor.stopped()) return monitor.stop_status("candidates");
     out.beyond_reach = drop_beyond_reach(*reach, threads, monitor, out.balls);
     if (monitor.stopped()) return monitor.stop_status("candidates");
     CloudNoise noise;
