@@ -48,6 +48,9 @@ Status voronoi_vertices(const std::vector<Vec3>& pts, int threads, const Monitor
     constexpr double kBoundMargin = 1e-9;
     if (!parallel_for(raw.size(), threads, 8192, monitor, "delaunay", [&](size_t begin, size_t end) {
             for (size_t i = begin; i < end; ++i) {
+                // a query near the centre of co-spherical samples visits all of them: the stop
+                // request is tested every few queries, not only per chunk
+                if (i % 64 == 0 && monitor.stopped()) return;
                 const double bound2 = raw[i].radius * raw[i].radius * (1 + kBoundMargin);
                 const double d2 = sample_tree.nearest_squared_below(raw[i].center, bound2);
                 if (d2 < bound2) raw[i].radius = std::min(raw[i].radius, std::sqrt(d2));
