@@ -200,21 +200,33 @@ bool InsideTest::segment_within_reach(const Ball& a, const Ball& b, double h, bo
     return true;
 }
 
-bool InsideTest::triangle_within_reach(const Ball& a, const Ball& b, const Ball& c, double h) const {
-    const CloudReach* reach = impl_->cloud_reach.get();
-    if (!reach) return true;
+namespace {
+
+// The interpolated balls of a triangle at the points (i a + j b + k c) / n of its lattice, n steps
+// of at most `step` along its longest side, the corners left out: true when `ok` accepts them all.
+template <class Ok>
+bool triangle_lattice_ok(const Ball& a, const Ball& b, const Ball& c, double step, Ok&& ok) {
     const double longest = std::max({(b.center - a.center).norm(), (c.center - b.center).norm(),
                                      (a.center - c.center).norm()});
-    const int n = std::max(1, int(std::ceil(longest / std::max(h, 0.5 * reach->reach()))));
+    const int n = std::max(1, int(std::ceil(longest / step)));
     for (int i = 0; i <= n; ++i)
         for (int j = 0; i + j <= n; ++j) {
             const int k = n - i - j;
             if (i == n || j == n || k == n) continue;   // the vertices themselves
             const Vec3 p = (a.center * i + b.center * j + c.center * k) / double(n);
             const double r = (a.radius * i + b.radius * j + c.radius * k) / double(n);
-            if (!reach->within({p, r})) return false;
+            if (!ok(p, r)) return false;
         }
     return true;
+}
+
+}  // namespace
+
+bool InsideTest::triangle_within_reach(const Ball& a, const Ball& b, const Ball& c, double h) const {
+    const CloudReach* reach = impl_->cloud_reach.get();
+    if (!reach) return true;
+    return triangle_lattice_ok(a, b, c, std::max(h, 0.5 * reach->reach()),
+                               [reach](const Vec3& p, double r) { return reach->within({p, r}); });
 }
 
 bool InsideTest::segment_inside(const Ball& a, const Ball& b, double h, double tol, double outside_tol,
@@ -233,20 +245,11 @@ bool InsideTest::segment_inside(const Ball& a, const Ball& b, double h, double t
 
 bool InsideTest::triangle_inside(const Ball& a, const Ball& b, const Ball& c, double h, double tol) const {
     if (!triangle_within_reach(a, b, c, h)) return false;
-    const double longest = std::max({(b.center - a.center).norm(), (c.center - b.center).norm(),
-                                     (a.center - c.center).norm()});
-    const int n = std::max(1, int(std::ceil(longest / h)));
     const Ball* own[3] = {&a, &b, &c};
     std::unique_ptr<Probes> probes = impl_->winding ? std::make_unique<Probes>(*impl_) : nullptr;
-    for (int i = 0; i <= n; ++i)
-        for (int j = 0; i + j <= n; ++j) {
-            const int k = n - i - j;
-            if (i == n || j == n || k == n) continue;   // the vertices themselves
-            const Vec3 p = (a.center * i + b.center * j + c.center * k) / double(n);
-            const double r = (a.radius * i + b.radius * j + c.radius * k) / double(n);
-            if (!point_ok(probes.get(), p, r, tol, 0, own, 3)) return false;
-        }
-    return true;
+    return triangle_lattice_ok(a, b, c, h, [&](const Vec3& p, double r) {
+        return point_ok(probes.get(), p, r, tol, 0, own, 3);
+    });
 }
 
 }  // namespace ca
