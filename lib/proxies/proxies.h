@@ -23,9 +23,10 @@ namespace ca {
 class WindingNumber;
 class MeshDistance;
 
-enum class ProxyKind : int32_t { sphere = 0, capsule = 1 };
-// What the output may hold: spheres only, or tapered capsules and spheres.
-enum class ProxyShapes : int32_t { spheres = 0, capsules = 1 };
+enum class ProxyKind : int32_t { sphere = 0, capsule = 1, box = 2 };
+// What the output may hold: spheres only; tapered capsules and spheres; oriented boxes and spheres;
+// or all three, each part of the shape taking whichever primitive serves it best.
+enum class ProxyShapes : int32_t { spheres = 0, capsules = 1, boxes = 2, all = 3 };
 enum class ProxyMode : int32_t { inscribed = 0, conservative = 1 };
 
 struct ProxyOptions {
@@ -39,11 +40,18 @@ struct ProxyOptions {
     int32_t threads = 0;               // 0 = all cores
 };
 
-// One primitive: a sphere (ball a; b equals a) or the convex hull of balls a and b.
+// One primitive, convex: a sphere (ball a; b equals a), the convex hull of balls a and b (a tapered
+// capsule), or an oriented box: centre a.center (b equals a, both radii 0), its edges along the
+// columns of `axes` (orthonormal, right-handed), half their lengths in `half`.
 struct Proxy {
     ProxyKind kind = ProxyKind::sphere;
     Ball a, b;
+    Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();
+    Vec3 half = Vec3::Zero();
 };
+
+// An oriented box primitive (axes orthonormal and right-handed, half-lengths >= 0).
+Proxy make_box(const Vec3& center, const Eigen::Matrix3d& axes, const Vec3& half);
 
 // Exact signed distance (negative inside) to a primitive.
 double proxy_distance(const Proxy& p, const Vec3& x);
@@ -107,8 +115,9 @@ double outside_bound(const Proxy& p, const ShapeQueries& shape, double enough = 
 // between its balls, which are measured as spheres of their own). The true excess is never below it.
 double outside_measured(const Proxy& p, const ShapeQueries& shape);
 
-// p with both radii reduced by `by` (at least 0): every signed distance grows by `by` while the
-// radii stay positive, and the primitive shrinks within that offset otherwise.
+// p with both radii (a box: its half-lengths) reduced by `by` (at least 0); a negative `by` grows
+// it. Every signed distance outside p grows by at least `by` (a sphere or capsule: exactly, while
+// the radii stay positive), so growing by the largest signed distance of some points holds them.
 Proxy shrunk(const Proxy& p, double by);
 
 // The choice (choose_proxies.cpp): cost[c * points + i] is candidate c's error at point i.

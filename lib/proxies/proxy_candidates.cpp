@@ -6,6 +6,7 @@
 #include "evaluate.h"
 
 #include <algorithm>
+#include <limits>
 #include <set>
 
 namespace ca {
@@ -23,13 +24,34 @@ constexpr size_t kMaxChainHops = 48;
 
 }  // namespace
 
+Proxy make_box(const Vec3& center, const Eigen::Matrix3d& axes, const Vec3& half) {
+    Proxy p;
+    p.kind = ProxyKind::box;
+    p.a = p.b = Ball{center, 0.0};
+    p.axes = axes;
+    p.half = half;
+    return p;
+}
+
 double proxy_distance(const Proxy& p, const Vec3& x) {
-    if (p.kind == ProxyKind::sphere) return sd_sphere(x, p.a.center, p.a.radius);
-    return sd_cone(x, p.a.center, p.a.radius, p.b.center, p.b.radius);
+    switch (p.kind) {
+    case ProxyKind::sphere: return sd_sphere(x, p.a.center, p.a.radius);
+    case ProxyKind::capsule: return sd_cone(x, p.a.center, p.a.radius, p.b.center, p.b.radius);
+    case ProxyKind::box: {
+        // in the box's frame: q > 0 along an axis where x lies beyond that pair of faces
+        const Vec3 q = (p.axes.transpose() * (x - p.a.center)).cwiseAbs() - p.half;
+        return q.cwiseMax(0.0).norm() + std::min(q.maxCoeff(), 0.0);
+    }
+    }
+    return std::numeric_limits<double>::infinity();
 }
 
 Proxy shrunk(const Proxy& p, double by) {
     Proxy q = p;
+    if (p.kind == ProxyKind::box) {
+        q.half = (p.half.array() - by).cwiseMax(0.0);
+        return q;
+    }
     q.a.radius = std::max(0.0, p.a.radius - by);
     q.b.radius = std::max(0.0, p.b.radius - by);
     return q;
