@@ -15,9 +15,12 @@ void publish(ca_proxy_set& r, const ca::ProxyResult& p) {
     r.kinds.assign(r.allocator, n);
     r.centers.assign(r.allocator, 6 * n);
     r.radii.assign(r.allocator, 2 * n);
+    r.frames.assign(r.allocator, 12 * n);
     for (size_t i = 0; i < n; ++i) {
         const ca::Proxy& q = p.proxies[i];
         r.kinds.data[i] = static_cast<int32_t>(q.kind);
+        for (int k = 0; k < 9; ++k) r.frames.data[12 * i + size_t(k)] = q.axes(k % 3, k / 3);
+        for (int k = 0; k < 3; ++k) r.frames.data[12 * i + 9 + size_t(k)] = q.half[k];
         for (int k = 0; k < 3; ++k) {
             r.centers.data[6 * i + size_t(k)] = q.a.center[k];
             r.centers.data[6 * i + 3 + size_t(k)] = q.b.center[k];
@@ -42,6 +45,21 @@ void publish(ca_proxy_set& r, const ca::ProxyResult& p) {
     o.candidates = s.candidates;
     o.surface_cells = s.surface_cells;
     o.time_s = s.time_s;
+}
+
+// Primitive i of a set, as the core holds it.
+ca::Proxy proxy_at(const ca_proxy_set& r, size_t i) {
+    ca::Proxy q;
+    q.kind = static_cast<ca::ProxyKind>(r.kinds.data[i]);
+    for (int k = 0; k < 3; ++k) {
+        q.a.center[k] = r.centers.data[6 * i + size_t(k)];
+        q.b.center[k] = r.centers.data[6 * i + 3 + size_t(k)];
+    }
+    q.a.radius = r.radii.data[2 * i];
+    q.b.radius = r.radii.data[2 * i + 1];
+    for (int k = 0; k < 9; ++k) q.axes(k % 3, k / 3) = r.frames.data[12 * i + size_t(k)];
+    for (int k = 0; k < 3; ++k) q.half[k] = r.frames.data[12 * i + 9 + size_t(k)];
+    return q;
 }
 
 }  // namespace
@@ -77,6 +95,31 @@ const double* ca_proxy_set_radii(const ca_proxy_set* p) { return p ? p->radii.da
 ca_status ca_proxy_set_stats(const ca_proxy_set* p, ca_proxy_stats* stats) {
     if (!p || !stats) return CA_ERROR_NULL_POINTER;
     return guarded_status([&] { return write_output(p->stats, stats); });
+}
+
+ca_status ca_proxy_set_placement(const ca_proxy_set* p, size_t index, ca_proxy_placement* placement) {
+    if (!p || !placement) return CA_ERROR_NULL_POINTER;
+    return guarded_status([&]() -> Status {
+        if (index >= p->kinds.size)
+            return ca::fail(ca::Code::invalid_argument, "proxy index " + std::to_string(index) + " out of range (" +
+                                                            std::to_string(p->kinds.size) + " primitives)");
+        const ca::ProxyPlacement pl = ca::proxy_placement(proxy_at(*p, index));
+        ca_proxy_placement o = zeroed<ca_proxy_placement>();
+        o.kind = static_cast<int32_t>(pl.kind);
+        for (int k = 0; k < 3; ++k) {
+            o.center[k] = pl.translation[k];
+            o.axis[k] = pl.axis[k];
+            o.half_extents[k] = 0.5 * pl.size[k];
+        }
+        o.rotation[0] = pl.rotation.x();
+        o.rotation[1] = pl.rotation.y();
+        o.rotation[2] = pl.rotation.z();
+        o.rotation[3] = pl.rotation.w();
+        o.radius_top = pl.radius_top;
+        o.radius_bottom = pl.radius_bottom;
+        o.height = pl.height;
+        return write_output(o, placement);
+    });
 }
 
 }  // extern "C"

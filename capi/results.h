@@ -44,8 +44,11 @@ struct ca_proxy_set {
     capi::Allocator allocator;
     capi::Array<int32_t> kinds;
     capi::Array<double> centers, radii;
+    capi::Array<double> frames;   // a box's edge directions (3 columns) then half-lengths: 12 per primitive
     ca_proxy_stats stats{};
-    void release_arrays() { kinds.release(allocator); centers.release(allocator); radii.release(allocator); }
+    void release_arrays() {
+        kinds.release(allocator); centers.release(allocator); radii.release(allocator); frames.release(allocator);
+    }
 };
 
 namespace capi {

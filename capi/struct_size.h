@@ -154,6 +154,7 @@ CA_PUBLISHED(ca_correspondence_options, {3, sizeof(ca_correspondence_options)})
 CA_PUBLISHED(ca_rig_options, {3, sizeof(ca_rig_options)})
 CA_PUBLISHED(ca_proxy_options, {3, sizeof(ca_proxy_options)})
 CA_PUBLISHED(ca_proxy_stats, {3, sizeof(ca_proxy_stats)})
+CA_PUBLISHED(ca_proxy_placement, {3, sizeof(ca_proxy_placement)})
 #undef CA_PUBLISHED
 
 static_assert(offsetof(ca_context_desc, threads) == offsetof(abi1::ca_context_desc, threads) &&

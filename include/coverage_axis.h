@@ -596,10 +596,13 @@ CA_API const uint32_t* ca_rig_vertex_branches(const ca_rig* rig); /* the branch 
      corners of the triangles it is given). */
 #define CA_PROXY_SHAPES_SPHERES  0 /* spheres only */
 #define CA_PROXY_SHAPES_CAPSULES 1 /* tapered capsules and spheres */
+#define CA_PROXY_SHAPES_BOXES    2 /* oriented boxes and spheres */
+#define CA_PROXY_SHAPES_ALL      3 /* spheres, tapered capsules and oriented boxes */
 #define CA_PROXY_INSCRIBED       0
 #define CA_PROXY_CONSERVATIVE    1
 #define CA_PROXY_SPHERE          0 /* kind of one primitive */
 #define CA_PROXY_CAPSULE         1
+#define CA_PROXY_BOX             2
 
 typedef struct ca_proxy_options {
     uint32_t struct_size;        /* sizeof(ca_proxy_options) */
@@ -628,10 +631,12 @@ CA_API ca_status ca_proxies(ca_context* ctx, const ca_candidate_set* set, const 
 CA_API void ca_proxy_set_destroy(ca_proxy_set* proxies);
 
 CA_API size_t ca_proxy_set_count(const ca_proxy_set* proxies);
-CA_API const int32_t* ca_proxy_set_kinds(const ca_proxy_set* proxies);   /* CA_PROXY_SPHERE or CAPSULE per primitive */
+CA_API const int32_t* ca_proxy_set_kinds(const ca_proxy_set* proxies);   /* CA_PROXY_SPHERE, CAPSULE or BOX per primitive */
 CA_API const double* ca_proxy_set_centers(const ca_proxy_set* proxies);  /* a then b, x y z each: 6 per primitive
-                                                                           (a sphere's b is its a) */
-CA_API const double* ca_proxy_set_radii(const ca_proxy_set* proxies);    /* radius of a, of b: 2 per primitive */
+                                                                           (a sphere's b is its a; a box: its
+                                                                           centre twice) */
+CA_API const double* ca_proxy_set_radii(const ca_proxy_set* proxies);    /* radius of a, of b: 2 per primitive
+                                                                           (a box: 0 and 0) */
 
 typedef struct ca_proxy_stats {
     uint32_t struct_size;        /* set by the caller: sizeof(ca_proxy_stats) */
@@ -655,6 +660,31 @@ typedef struct ca_proxy_stats {
 } ca_proxy_stats;
 
 CA_API ca_status ca_proxy_set_stats(const ca_proxy_set* proxies, ca_proxy_stats* stats);
+
+/* One primitive as an engine places it, in the caller's units: a node at `center` turned by the
+   unit quaternion `rotation` (x y z w; node frame to the caller's frame) holds, in its own frame
+   (glTF KHR_implicit_shapes' conventions):
+   - CA_PROXY_SPHERE: a sphere of radius radius_top (= radius_bottom) at its origin;
+   - CA_PROXY_CAPSULE: the convex hull of a ball of radius_top at (0, +height/2, 0) and one of
+     radius_bottom at (0, -height/2, 0), height > 0 (the set's ball b on top, a at the bottom);
+   - CA_PROXY_BOX: the box of half extents half_extents[0..2] along its x, y, z axes.
+   A capsule one of whose balls holds the other (or whose balls coincide) is placed as that larger
+   ball, kind CA_PROXY_SPHERE. `axis` is the node's +Y axis in the caller's frame (a capsule: the
+   unit vector from a to b). Unused fields are 0 (height of a sphere, half_extents of a capsule). */
+typedef struct ca_proxy_placement {
+    uint32_t struct_size;        /* set by the caller: sizeof(ca_proxy_placement) */
+    int32_t kind;                /* CA_PROXY_SPHERE, CA_PROXY_CAPSULE or CA_PROXY_BOX */
+    double center[3];            /* the node's translation */
+    double rotation[4];          /* the node's rotation, x y z w, w >= 0 */
+    double axis[3];              /* the node's +Y axis */
+    double radius_top, radius_bottom, height;
+    double half_extents[3];
+} ca_proxy_placement;
+
+/* Fills `placement` for primitive `index` (< ca_proxy_set_count), up to its struct_size.
+   CA_ERROR_NULL_POINTER for a NULL set or placement, CA_ERROR_INVALID_ARGUMENT for an index out of
+   range, CA_ERROR_STRUCT_SIZE for a struct_size this library did not publish. */
+CA_API ca_status ca_proxy_set_placement(const ca_proxy_set* proxies, size_t index, ca_proxy_placement* placement);
 
 #ifdef __cplusplus
 }

@@ -196,12 +196,24 @@ namespace CoverageAxis
             public double time_s;
         }
 
+        [StructLayout(LayoutKind.Sequential)]
+        public unsafe struct ProxyPlacement
+        {
+            public uint struct_size;
+            public int kind;
+            public fixed double center[3];
+            public fixed double rotation[4];
+            public fixed double axis[3];
+            public double radius_top, radius_bottom, height;
+            public fixed double half_extents[3];
+        }
+
         /// <summary>Every struct declared here, in header order (for the layout check).</summary>
         public static readonly Type[] Structs = {
             typeof(ContextDesc), typeof(SurfaceView), typeof(CandidateOptions), typeof(SelectOptions),
             typeof(SelectStats), typeof(ConnectOptions), typeof(SkeletonStats), typeof(SkeletonView),
             typeof(EvaluateOptions), typeof(Evaluation), typeof(CorrespondenceOptions), typeof(RigOptions),
-            typeof(ProxyOptions), typeof(ProxyStats),
+            typeof(ProxyOptions), typeof(ProxyStats), typeof(ProxyPlacement),
         };
 
         [DllImport(Lib)] public static extern uint ca_version();
@@ -292,6 +304,7 @@ namespace CoverageAxis
         [DllImport(Lib)] public static extern IntPtr ca_proxy_set_centers(ProxySetHandle p);
         [DllImport(Lib)] public static extern IntPtr ca_proxy_set_radii(ProxySetHandle p);
         [DllImport(Lib)] public static extern int ca_proxy_set_stats(ProxySetHandle p, ref ProxyStats stats);
+        [DllImport(Lib)] public static extern int ca_proxy_set_placement(ProxySetHandle p, UIntPtr index, ref ProxyPlacement placement);
 
         public static uint SizeOf<T>() { return (uint)Marshal.SizeOf(typeof(T)); }
 

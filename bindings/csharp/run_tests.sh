@@ -6,6 +6,6 @@ set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 out=$1 lib=$2
 mkdir -p "$out"
-mcs -nologo -warnaserror -target:library -out:"$out/CoverageAxis.dll" "$here/CoverageAxis.cs"
+mcs -nologo -warnaserror -unsafe -target:library -out:"$out/CoverageAxis.dll" "$here/CoverageAxis.cs"
 mcs -nologo -warnaserror -r:"$out/CoverageAxis.dll" -out:"$out/TestCoverageAxis.exe" "$here/tests/TestCoverageAxis.cs"
 LD_LIBRARY_PATH="$lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" mono "$out/TestCoverageAxis.exe" "$3" "$4" "$5"

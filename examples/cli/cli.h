@@ -54,6 +54,7 @@ struct Outputs {
     std::string ma, obj, ply, gltf, preview, export_samples, export_candidates;
     std::string correspondence, rig;   // --correspondence FILE.json, --rig OUT.glb
     std::string proxies_json;   // the engine proxies (--proxies) and their stats
+    std::string colliders;      // --colliders OUT.glb: the input mesh with the proxies as glTF physics
 };
 
 // A failed run: a library status (CA_ERROR_*, exit 1) or a tool error (FILE_ERROR exit 3,
@@ -120,8 +121,9 @@ int parse_command_line(CLI::App& app, int argc, char** argv, std::string& error)
 
 // --correspondence and --rig (rig_outputs.cpp): nothing when neither is asked for; adds "rig"
 // (joints, branches) to the report.
+// The rig file carries the engine proxies (if any) as colliders.
 bool write_rig_outputs(ca_context* ctx, const caio::MeshData& mesh, const ca_skeleton* sk, const RunOptions& o,
-                       const Outputs& out, Json& report, Failure& failure);
+                       const Outputs& out, const std::vector<caio::ProxyData>& proxies, Json& report, Failure& failure);
 
 int evaluate_command(int argc, char** argv);
 int batch_command(int argc, char** argv);

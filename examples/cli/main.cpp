@@ -155,6 +155,9 @@ int single_run(int argc, char** argv) {
     app.add_option("--ply", out.ply, "also write .ply (radius property, edge element)")->group(files);
     app.add_option("--gltf", out.gltf, "also write glTF 2.0: OUT.glb or OUT.gltf (balls, edges, faces, _RADIUS)")->group(files);
     app.add_option("--proxies-json", out.proxies_json, "write the engine proxies (--proxies) and their errors as JSON")->group(files);
+    app.add_option("--colliders", out.colliders,
+                   "write the input mesh with the engine proxies (--proxies) as glTF physics colliders: OUT.glb or OUT.gltf")
+        ->group(files);
     app.add_option("--preview", out.preview, "also draw the mesh and the skeleton: OUT.png or OUT.svg")->group(files);
     app.add_option("--export-samples", out.export_samples, "write the covered surface samples (v x y z)")->group(files);
     app.add_option("--export-candidates", out.export_candidates, "write the candidate balls (v x y z r)")->group(files);
@@ -183,6 +186,8 @@ int single_run(int argc, char** argv) {
     if (!cli::finish_run_options(app, o, err)) return report_failure({"USAGE_ERROR", -1, err + " (see coverage-axis --help)", 2}, json, input);
     if (!out.proxies_json.empty() && o.proxies.empty())
         return report_failure({"USAGE_ERROR", -1, "--proxies-json needs --proxies spheres|capsules (see coverage-axis --help)", 2}, json, input);
+    if (!out.colliders.empty() && o.proxies.empty())
+        return report_failure({"USAGE_ERROR", -1, "--colliders needs --proxies spheres|capsules (see coverage-axis --help)", 2}, json, input);
     if (out.ma.empty() && input == "-")
         return report_failure({"USAGE_ERROR", -1, "reading standard input needs -o OUT.ma", 2}, json, input);
     if (out.ma.empty()) out.ma = default_ma_path(input);

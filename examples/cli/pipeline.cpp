@@ -1,8 +1,9 @@
 // pipeline.cpp: one run of the tool through the library's C ABI: read the input, candidates
 // (generated or from files), selection, connection, then the outputs (.ma, .obj, .ply, glTF,
-// preview) and the JSON report. Failures come back as a Failure (never printed here), so the
-// single run and the batch command report them alike.
+// preview, colliders) and the JSON report. Failures come back as a Failure (never printed here),
+// so the single run and the batch command report them alike.
 #include "cli.h"
+#include "gltf_physics.h"
 #include "gltf_writer.h"
 #include "output_file.h"
 
@@ -245,19 +246,33 @@ caio::SkeletonData skeleton_data(const ca_skeleton* sk) {
     return sd;
 }
 
-// The proxies' primitives as the writers take them.
+// The proxies' primitives, and how an engine places each, as the writers take them.
 std::vector<caio::ProxyData> proxy_data(const ca_proxy_set* p) {
     std::vector<caio::ProxyData> out(ca_proxy_set_count(p));
     const int32_t* kinds = ca_proxy_set_kinds(p);
     const double *centers = ca_proxy_set_centers(p), *radii = ca_proxy_set_radii(p);
     for (size_t i = 0; i < out.size(); ++i) {
-        out[i].capsule = kinds[i] == CA_PROXY_CAPSULE;
+        caio::ProxyData& d = out[i];
+        d.kind = kinds[i];
         for (int k = 0; k < 3; ++k) {
-            out[i].a[k] = centers[6 * i + size_t(k)];
-            out[i].b[k] = centers[6 * i + 3 + size_t(k)];
+            d.a[k] = centers[6 * i + size_t(k)];
+            d.b[k] = centers[6 * i + 3 + size_t(k)];
         }
-        out[i].radius_a = radii[2 * i];
-        out[i].radius_b = radii[2 * i + 1];
+        d.radius_a = radii[2 * i];
+        d.radius_b = radii[2 * i + 1];
+        ca_proxy_placement pl;
+        pl.struct_size = sizeof pl;
+        ca_proxy_set_placement(p, i, &pl);   // i < count: cannot fail
+        caio::ColliderShape& c = d.placed;
+        c.kind = pl.kind;
+        for (int k = 0; k < 3; ++k) {
+            c.translation[k] = pl.center[k];
+            c.size[k] = 2 * pl.half_extents[k];
+        }
+        for (int k = 0; k < 4; ++k) c.rotation[k] = pl.rotation[k];
+        c.radius_top = pl.radius_top;
+        c.radius_bottom = pl.radius_bottom;
+        c.height = pl.height;
     }
     return out;
 }
@@ -290,7 +305,12 @@ bool write_proxies_json(const std::string& path, const std::vector<caio::ProxyDa
     Json list = Json::array();
     for (const caio::ProxyData& p : proxies) {
         const Json a = {p.a[0], p.a[1], p.a[2]}, b = {p.b[0], p.b[1], p.b[2]};
-        if (p.capsule) list.push_back({{"kind", "capsule"}, {"a", a}, {"radius_a", p.radius_a}, {"b", b}, {"radius_b", p.radius_b}});
+        const caio::ColliderShape& c = p.placed;
+        if (p.kind == CA_PROXY_CAPSULE)
+            list.push_back({{"kind", "capsule"}, {"a", a}, {"radius_a", p.radius_a}, {"b", b}, {"radius_b", p.radius_b}});
+        else if (p.kind == CA_PROXY_BOX)
+            list.push_back({{"kind", "box"}, {"center", a}, {"rotation", {c.rotation[0], c.rotation[1], c.rotation[2], c.rotation[3]}},
+                            {"half_extents", {c.size[0] / 2, c.size[1] / 2, c.size[2] / 2}}});
         else list.push_back({{"kind", "sphere"}, {"center", a}, {"radius", p.radius_a}});
     }
     Json doc = {{"proxies", list}};
@@ -306,6 +326,7 @@ bool write_outputs(const caio::MeshData& mesh, const caio::SkeletonData& sd, con
     if (!caio::write_ma(out.ma, sd, err) || (!out.obj.empty() && !caio::write_obj(out.obj, sd, err)) ||
         (!out.ply.empty() && !caio::write_ply(out.ply, sd, err)) ||
         (!out.gltf.empty() && !caio::write_gltf(out.gltf, sd, err, proxies)) ||
+        (!out.colliders.empty() && !caio::write_colliders(out.colliders, mesh, proxies, err)) ||
         (!out.preview.empty() && !caio::write_preview(out.preview, mesh, sd, o.preview, err)))
         return failure = file_failure(err), false;
     return true;
@@ -315,7 +336,7 @@ Json outputs_json(const Outputs& out) {
     Json j = {{"ma", out.ma}};
     for (const auto& [key, path] : {std::pair<const char*, const std::string&>{"obj", out.obj}, {"ply", out.ply},
                                     {"gltf", out.gltf}, {"preview", out.preview}, {"proxies_json", out.proxies_json},
-                                    {"correspondence", out.correspondence}, {"rig", out.rig}})
+                                    {"correspondence", out.correspondence}, {"rig", out.rig}, {"colliders", out.colliders}})
         if (!path.empty()) j[key] = path;
     return j;
 }
@@ -389,7 +410,7 @@ Outcome run_pipeline(const std::string& input, const RunOptions& o, const Output
     Json rig_report = Json::object();
     if (!(out.correspondence.empty() && out.rig.empty()) &&
         (!context_for(owned, desc, o.time_limit_s, t_start, "rig", r.failure) ||
-         !write_rig_outputs(owned.ctx, mesh, owned.sk, o, out, rig_report, r.failure)))
+         !write_rig_outputs(owned.ctx, mesh, owned.sk, o, out, proxies, rig_report, r.failure)))
         return r;
     const double t_write = since(t0);
 

@@ -1,6 +1,7 @@
 // rig_outputs.cpp: --correspondence FILE.json and --rig OUT.glb: the input's vertices matched to
 // the skeleton (ca_correspond) and the rig (ca_rig_build), written as JSON (per vertex, in input
-// order: balls, weights, nearest primitive, branch) and as a skinned glTF (rig_writer.h).
+// order: balls, weights, nearest primitive, branch) and as a skinned glTF (rig_writer.h) with the
+// engine proxies, if any, as colliders.
 #include "cli.h"
 #include "output_file.h"
 #include "rig_writer.h"
@@ -10,7 +11,7 @@
 namespace cli {
 
 bool write_rig_outputs(ca_context* ctx, const caio::MeshData& mesh, const ca_skeleton* sk, const RunOptions& o,
-                       const Outputs& out, Json& report, Failure& failure) {
+                       const Outputs& out, const std::vector<caio::ProxyData>& proxies, Json& report, Failure& failure) {
     if (out.correspondence.empty() && out.rig.empty()) return true;
     const ca_surface_view surface = surface_view(mesh, o.point_normals);
     ca_skeleton_view view;
@@ -60,7 +61,7 @@ bool write_rig_outputs(ca_context* ctx, const caio::MeshData& mesh, const ca_ske
         data.parents.assign(ca_rig_joint_parents(rig.get()), ca_rig_joint_parents(rig.get()) + nj);
         data.vertex_joints.assign(ca_rig_vertex_joints(rig.get()), ca_rig_vertex_joints(rig.get()) + CA_INFLUENCES * nv);
         data.vertex_weights.assign(ca_rig_vertex_weights(rig.get()), ca_rig_vertex_weights(rig.get()) + CA_INFLUENCES * nv);
-        if (!caio::write_rig_glb(out.rig, mesh, data, err)) return failure = file_failure(err), false;
+        if (!caio::write_rig_glb(out.rig, mesh, data, err, proxies)) return failure = file_failure(err), false;
     }
     return true;
 }

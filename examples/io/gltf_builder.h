@@ -1,10 +1,14 @@
-// gltf_builder.h: what the glTF 2.0 writers share (the skeleton's, gltf_writer.cpp, and the
-// rig's, rig_writer.cpp): a binary buffer with its bufferViews and accessors, and the .glb
-// container around a document and its buffer.
+// gltf_builder.h: what the glTF 2.0 writers share (the skeleton's, gltf_writer.cpp, the rig's,
+// rig_writer.cpp, and the colliders', gltf_physics.cpp): a binary buffer with its bufferViews and
+// accessors, the .glb container around a document and its buffer, and the choice between .glb and
+// a self-contained .gltf by the path's extension.
 #pragma once
+#include "output_file.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -83,6 +87,44 @@ inline std::string glb(const json& doc, const std::string& bin) {
     append_u32(out, 0x004E4942u);  // "BIN\0"
     out += bin;
     return out;
+}
+
+// Whether `path` ends in `suffix` (lower case), in any case.
+inline bool ends_with(const std::string& path, const char* suffix) {
+    const size_t n = std::strlen(suffix);
+    if (path.size() < n) return false;
+    for (size_t i = 0; i < n; ++i)
+        if (std::tolower(static_cast<unsigned char>(path[path.size() - n + i])) != suffix[i]) return false;
+    return true;
+}
+
+inline std::string base64(const std::string& bytes) {
+    static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    out.reserve((bytes.size() + 2) / 3 * 4);
+    for (size_t i = 0; i < bytes.size(); i += 3) {
+        const uint32_t b0 = uint8_t(bytes[i]), b1 = i + 1 < bytes.size() ? uint8_t(bytes[i + 1]) : 0,
+                       b2 = i + 2 < bytes.size() ? uint8_t(bytes[i + 2]) : 0;
+        const uint32_t v = (b0 << 16) | (b1 << 8) | b2;
+        out += table[(v >> 18) & 63];
+        out += table[(v >> 12) & 63];
+        out += i + 1 < bytes.size() ? table[(v >> 6) & 63] : '=';
+        out += i + 2 < bytes.size() ? table[v & 63] : '=';
+    }
+    return out;
+}
+
+// Writes `doc` (its one buffer without a uri) and `bin` (padded to 4 bytes): .glb as the binary
+// container, .gltf as JSON with the buffer embedded as a base64 data URI (one self-contained file).
+// False with "path: what" for another extension or a write error.
+inline bool write_document(const std::string& path, json doc, const std::string& bin, std::string& error) {
+    if (ends_with(path, ".glb")) return write_bytes(path, glb(doc, bin), error);
+    if (!ends_with(path, ".gltf")) {
+        error = path + ": a glTF file ends in .glb or .gltf";
+        return false;
+    }
+    doc["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64(bin);
+    return write_bytes(path, doc.dump(1) + "\n", error);
 }
 
 }  // namespace gltf

@@ -4,7 +4,7 @@
 #include "gltf_writer.h"
 
 #include "gltf_builder.h"
-#include "output_file.h"
+#include "gltf_physics.h"
 
 #include <nlohmann/json.hpp>
 
@@ -55,22 +55,6 @@ json material(const char* name, std::initializer_list<double> rgba, bool blend) 
     return m;
 }
 
-std::string base64(const std::string& bytes) {
-    static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    out.reserve((bytes.size() + 2) / 3 * 4);
-    for (size_t i = 0; i < bytes.size(); i += 3) {
-        const uint32_t b0 = uint8_t(bytes[i]), b1 = i + 1 < bytes.size() ? uint8_t(bytes[i + 1]) : 0,
-                       b2 = i + 2 < bytes.size() ? uint8_t(bytes[i + 2]) : 0;
-        const uint32_t v = (b0 << 16) | (b1 << 8) | b2;
-        out += table[(v >> 18) & 63];
-        out += table[(v >> 12) & 63];
-        out += i + 1 < bytes.size() ? table[(v >> 6) & 63] : '=';
-        out += i + 2 < bytes.size() ? table[v & 63] : '=';
-    }
-    return out;
-}
-
 // The glTF document (without its buffer's uri) and the binary buffer.
 json build(const SkeletonData& s, const std::vector<ProxyData>& proxies, std::string& bin) {
     Builder b;
@@ -117,50 +101,48 @@ json build(const SkeletonData& s, const std::vector<ProxyData>& proxies, std::st
         nodes.push_back(std::move(n));
     }
     if (!children.empty()) nodes[0]["children"] = children;
-    json scene_nodes = json::array({0});
+    const json scene_nodes = json::array({0});
+    bin = std::move(b.bin);
+    while (bin.size() % 4) bin.push_back('\0');
+    json doc = {{"asset", {{"version", "2.0"}, {"generator", "coverage-axis"}}},
+                {"scene", 0},
+                {"scenes", {{{"name", "coverage axis skeleton"}, {"nodes", scene_nodes}}}},
+                {"nodes", nodes},
+                {"meshes", meshes},
+                {"materials", {material("ball", {0.25, 0.45, 0.9, 0.3}, true), material("edge", {0.1, 0.1, 0.1, 1.0}, false),
+                               material("face", {0.9, 0.35, 0.2, 0.6}, true)}},
+                {"accessors", b.accessors},
+                {"bufferViews", b.views},
+                {"buffers", {{{"byteLength", bin.size()}}}}};
     if (!proxies.empty()) {
-        json group = {{"name", "proxies"}, {"children", json::array()}};
-        const size_t group_index = nodes.size();
-        nodes.push_back(group);
+        // the proxies as static colliders (gltf_physics.h) under "proxies", their parameters also
+        // in `extras`; a sphere shows the ball mesh on a child node (a collider's node is not scaled)
+        std::vector<ColliderShape> shapes;
+        for (const ProxyData& p : proxies) shapes.push_back(p.placed);
+        gltf::ColliderOptions options;
+        options.group = "proxies";
+        options.name = "proxy";
+        const std::vector<size_t> placed = gltf::add_colliders(doc, shapes, options);
+        json& all = doc["nodes"];
         for (size_t i = 0; i < proxies.size(); ++i) {
             const ProxyData& p = proxies[i];
             const json a = {p.a[0], p.a[1], p.a[2]}, b = {p.b[0], p.b[1], p.b[2]};
-            json node = {{"name", std::string(p.capsule ? "capsule_" : "sphere_") + std::to_string(i)}};
-            if (p.capsule) {
-                node["translation"] = {0.5 * (p.a[0] + p.b[0]), 0.5 * (p.a[1] + p.b[1]), 0.5 * (p.a[2] + p.b[2])};
+            json& node = all[placed[i]];
+            if (p.kind == 1) {
                 node["extras"] = {{"kind", "capsule"}, {"a", a}, {"radius_a", p.radius_a}, {"b", b}, {"radius_b", p.radius_b}};
+            } else if (p.kind == 2) {
+                const ColliderShape& c = p.placed;
+                node["extras"] = {{"kind", "box"}, {"center", a}, {"rotation", {c.rotation[0], c.rotation[1], c.rotation[2], c.rotation[3]}},
+                                  {"half_extents", {c.size[0] / 2, c.size[1] / 2, c.size[2] / 2}}};
             } else {
-                node["mesh"] = 0;
-                node["translation"] = a;
-                node["scale"] = {p.radius_a, p.radius_a, p.radius_a};
                 node["extras"] = {{"kind", "sphere"}, {"center", a}, {"radius", p.radius_a}};
+                node["children"] = {all.size()};
+                all.push_back({{"name", "ball_mesh_" + std::to_string(i)}, {"mesh", 0},
+                               {"scale", {p.radius_a, p.radius_a, p.radius_a}}});
             }
-            nodes[group_index]["children"].push_back(nodes.size());
-            nodes.push_back(std::move(node));
         }
-        scene_nodes.push_back(group_index);
     }
-
-    bin = std::move(b.bin);
-    while (bin.size() % 4) bin.push_back('\0');
-    return {{"asset", {{"version", "2.0"}, {"generator", "coverage-axis"}}},
-            {"scene", 0},
-            {"scenes", {{{"name", "coverage axis skeleton"}, {"nodes", scene_nodes}}}},
-            {"nodes", nodes},
-            {"meshes", meshes},
-            {"materials", {material("ball", {0.25, 0.45, 0.9, 0.3}, true), material("edge", {0.1, 0.1, 0.1, 1.0}, false),
-                           material("face", {0.9, 0.35, 0.2, 0.6}, true)}},
-            {"accessors", b.accessors},
-            {"bufferViews", b.views},
-            {"buffers", {{{"byteLength", bin.size()}}}}};
-}
-
-bool ends_with(const std::string& s, const char* suffix) {
-    const size_t n = std::strlen(suffix);
-    if (s.size() < n) return false;
-    for (size_t i = 0; i < n; ++i)
-        if (std::tolower(static_cast<unsigned char>(s[s.size() - n + i])) != suffix[i]) return false;
-    return true;
+    return doc;
 }
 
 }  // namespace
@@ -177,22 +159,18 @@ bool write_gltf(const std::string& path, const SkeletonData& s, std::string& err
             if (i >= nv) { error = path + ": edge index out of range"; return false; }
         for (uint32_t i : s.faces)
             if (i >= nv) { error = path + ": face index out of range"; return false; }
-        const bool glb = ends_with(path, ".glb");
-        if (!glb && !ends_with(path, ".gltf")) {
+        if (!gltf::ends_with(path, ".glb") && !gltf::ends_with(path, ".gltf")) {
             error = path + ": a glTF file ends in .glb or .gltf";
             return false;
         }
-        std::string bin;
-        for (const ProxyData& p : proxies)
-            for (double v : {p.a[0], p.a[1], p.a[2], p.b[0], p.b[1], p.b[2], p.radius_a, p.radius_b})
-                if (!std::isfinite(v)) { error = path + ": a proxy has a NaN or infinite value"; return false; }
-        json doc = build(s, proxies, bin);
-        if (!glb) {
-            doc["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64(bin);
-            return write_bytes(path, doc.dump(1) + "\n", error);
+        const std::string what = proxies_finite(proxies);
+        if (!what.empty()) {
+            error = path + ": " + what;
+            return false;
         }
-        const std::string out = gltf::glb(doc, bin);
-        return write_bytes(path, out, error);
+        std::string bin;
+        const json doc = build(s, proxies, bin);
+        return gltf::write_document(path, doc, bin, error);
     } catch (const std::exception& e) {
         error = path + ": " + e.what();
         return false;

@@ -2,10 +2,12 @@
 // one node per ball (a shared unit-sphere mesh, translated to the centre and scaled by the
 // radius), the edges as a LINES primitive and the faces as a TRIANGLES primitive of one
 // "skeleton" mesh whose vertices carry the radius as the custom attribute _RADIUS. Engine proxies,
-// when given, are the children of a "proxies" node: one node per primitive at its centre (a
-// capsule: the midpoint of its segment; a sphere also shows the ball mesh) with its parameters in
-// `extras` ({"kind": "sphere", "center", "radius"} or {"kind": "capsule", "a", "radius_a", "b",
-// "radius_b"}, in the skeleton's units), for an importer to make colliders of.
+// when given, are the children of a "proxies" node: one node per primitive, placed and turned as
+// an engine places it, carrying its collider as glTF physics (gltf_physics.h: KHR_implicit_shapes
+// and KHR_physics_rigid_bodies, static) and its parameters in `extras` ({"kind": "sphere",
+// "center", "radius"}, {"kind": "capsule", "a", "radius_a", "b", "radius_b"} or {"kind": "box",
+// "center", "rotation", "half_extents"}, in the skeleton's units); a sphere's node has a child
+// showing the ball mesh.
 #pragma once
 #include "mesh_io.h"
 

@@ -70,12 +70,26 @@ struct SkeletonData {
     std::vector<uint32_t> faces;       // i j k per face
 };
 
-// An engine proxy (ca_proxies): a sphere (a, radius_a; b equals a) or a tapered capsule, the convex
-// hull of the balls (a, radius_a) and (b, radius_b).
+// A primitive as an engine places it (ca_proxy_placement, glTF KHR_implicit_shapes' conventions): a
+// node at `translation` turned by `rotation` (x y z w) holding, in its frame, a sphere of radius
+// radius_top at its origin (kind 0), a capsule along its +Y (kind 1: the hull of the balls of
+// radius_top at +height/2 and radius_bottom at -height/2) or a box of full extents `size` (kind 2).
+struct ColliderShape {
+    int kind = 0;
+    double translation[3] = {0, 0, 0};
+    double rotation[4] = {0, 0, 0, 1};
+    double radius_top = 0, radius_bottom = 0, height = 0;
+    double size[3] = {0, 0, 0};
+};
+
+// An engine proxy (ca_proxies): kind 0 a sphere (a, radius_a; b equals a), 1 a tapered capsule, the
+// convex hull of the balls (a, radius_a) and (b, radius_b), 2 an oriented box (its centre a, radii
+// 0); `placed` is how an engine places it (ca_proxy_set_placement).
 struct ProxyData {
-    bool capsule = false;
+    int kind = 0;
     double a[3] = {0, 0, 0}, b[3] = {0, 0, 0};
     double radius_a = 0, radius_b = 0;
+    ColliderShape placed;
 };
 
 // .ma: "nv ne nf", then "v x y z r", "e i j", "f i j k" (0-based; every face edge is an e line:

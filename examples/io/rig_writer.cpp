@@ -5,7 +5,7 @@
 #include "rig_writer.h"
 
 #include "gltf_builder.h"
-#include "output_file.h"
+#include "gltf_physics.h"
 
 #include <cmath>
 #include <exception>
@@ -117,7 +117,8 @@ json build(const MeshData& mesh, const RigData& rig, std::string& bin) {
 
 }  // namespace
 
-bool write_rig_glb(const std::string& path, const MeshData& mesh, const RigData& rig, std::string& error) {
+bool write_rig_glb(const std::string& path, const MeshData& mesh, const RigData& rig, std::string& error,
+                   const std::vector<ProxyData>& proxies) {
     try {
         std::string what;
         if (!check(mesh, rig, what)) {
@@ -129,8 +130,18 @@ bool write_rig_glb(const std::string& path, const MeshData& mesh, const RigData&
             error = path + ": the rig is written as .glb";
             return false;
         }
+        what = proxies_finite(proxies);
+        if (!what.empty()) {
+            error = path + ": " + what;
+            return false;
+        }
         std::string bin;
-        const json doc = build(mesh, rig, bin);
+        json doc = build(mesh, rig, bin);
+        if (!proxies.empty()) {
+            std::vector<ColliderShape> shapes;
+            for (const ProxyData& p : proxies) shapes.push_back(p.placed);
+            gltf::add_colliders(doc, shapes, gltf::ColliderOptions{});
+        }
         return write_bytes(path, gltf::glb(doc, bin), error);
     } catch (const std::exception& e) {
         error = path + ": " + e.what();

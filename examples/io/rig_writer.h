@@ -16,8 +16,10 @@ struct RigData {
     std::vector<double> vertex_weights;    // 4 per vertex, sum 1
 };
 
-// The mesh (its triangles; a point cloud as points) skinned to the rig. False with "path: what" on
-// inconsistent arrays, a path not ending in .glb, or a write error.
-bool write_rig_glb(const std::string& path, const MeshData& mesh, const RigData& rig, std::string& error);
+// The mesh (its triangles; a point cloud as points) skinned to the rig; engine proxies, when given,
+// as static colliders under a root node "colliders" (gltf_physics.h). False with "path: what" on
+// inconsistent arrays, a path not ending in .glb, a non-finite proxy, or a write error.
+bool write_rig_glb(const std::string& path, const MeshData& mesh, const RigData& rig, std::string& error,
+                   const std::vector<ProxyData>& proxies = {});
 
 }  // namespace caio

@@ -11,6 +11,8 @@
 //   surface_cells.cpp     the surface cut into small triangles whose corners are the samples
 //   choose_proxies.cpp    the choice of at most K candidates at the least error (greedy, swaps)
 //   proxy_stats.cpp       the achieved errors and the volume outside the shape
+//   proxy_placement.cpp   each primitive as an engine places it (a node's translation, rotation
+//                         and shape parameters)
 //   proxies.cpp           the whole step: candidates, choice, conservative growth, stats
 #pragma once
 #include "common.h"
@@ -55,6 +57,24 @@ Proxy make_box(const Vec3& center, const Eigen::Matrix3d& axes, const Vec3& half
 
 // Exact signed distance (negative inside) to a primitive.
 double proxy_distance(const Proxy& p, const Vec3& x);
+
+// How an engine places a primitive (proxy_placement.cpp; the glTF KHR_implicit_shapes conventions):
+// a node at `translation` turned by `rotation` (node frame to the primitive's frame) holds
+//  - a sphere of radius `radius_top` (= radius_bottom) at its origin;
+//  - a capsule along its +Y axis: the hull of the ball of radius_top at +height/2 and the ball of
+//    radius_bottom at -height/2 (height > 0; the library's ball b on top, a at the bottom);
+//  - a box of full extents `size` along its x y z axes, centred at its origin.
+// A capsule whose balls coincide, or one of whose balls holds the other, is that larger ball: a
+// sphere. `axis` is the node's +Y axis turned by `rotation` (a capsule: from a towards b).
+struct ProxyPlacement {
+    ProxyKind kind = ProxyKind::sphere;
+    Vec3 translation = Vec3::Zero();
+    Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
+    Vec3 axis = Vec3::UnitY();
+    double radius_top = 0, radius_bottom = 0, height = 0;
+    Vec3 size = Vec3::Zero();
+};
+ProxyPlacement proxy_placement(const Proxy& p);
 
 struct ProxyStats {
     // percent of the surface's bounding-box diagonal, as evaluate.h measures a skeleton

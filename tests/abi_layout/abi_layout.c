@@ -189,5 +189,15 @@ int main(void) {
     FIELD(ca_proxy_stats, candidates);
     FIELD(ca_proxy_stats, surface_cells);
     FIELD(ca_proxy_stats, time_s);
+    STRUCT(ca_proxy_placement);
+    FIELD(ca_proxy_placement, struct_size);
+    FIELD(ca_proxy_placement, kind);
+    FIELD(ca_proxy_placement, center);
+    FIELD(ca_proxy_placement, rotation);
+    FIELD(ca_proxy_placement, axis);
+    FIELD(ca_proxy_placement, radius_top);
+    FIELD(ca_proxy_placement, radius_bottom);
+    FIELD(ca_proxy_placement, height);
+    FIELD(ca_proxy_placement, half_extents);
     return 0;
 }

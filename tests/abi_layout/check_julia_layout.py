@@ -16,11 +16,16 @@ SIZES = {"UInt8": 1, "Int8": 1, "Int32": 4, "UInt32": 4, "Cint": 4, "Cuint": 4, 
 
 
 def type_size(t):
+    """(size, alignment) of a Julia field type; NTuple{N, T} is a C array T[N]."""
     if re.fullmatch(r"Ptr\{.*\}", t):
-        return 8
+        return 8, 8
+    m = re.fullmatch(r"NTuple\{(\d+),\s*(\w+)\}", t)
+    if m:
+        size, align = type_size(m.group(2))
+        return int(m.group(1)) * size, align
     if t not in SIZES:
         raise ValueError("no C size known for Julia type %s" % t)
-    return SIZES[t]
+    return SIZES[t], SIZES[t]
 
 
 def julia_structs(path):
@@ -38,11 +43,11 @@ def julia_structs(path):
             continue
         offset, align, laid = 0, 1, []
         for name, typ in fields:
-            size = type_size(typ)
-            offset = (offset + size - 1) // size * size
+            size, field_align = type_size(typ)
+            offset = (offset + field_align - 1) // field_align * field_align
             laid.append((name, offset, size))
             offset += size
-            align = max(align, size)
+            align = max(align, field_align)
         cname = "ca" + re.sub(r"([A-Z])", lambda c: "_" + c.group(1).lower(), m.group(1))
         out[cname] = ((offset + align - 1) // align * align, laid)
     return out

@@ -15,6 +15,7 @@ def header_structs(path):
     out = {}
     for m in re.finditer(r"typedef struct (\w+) \{(.*?)\} \1;", text, re.S):
         body = re.sub(r"/\*.*?\*/", "", m.group(2), flags=re.S)
+        body = re.sub(r"\[\w+\]", "", body)   # an array field: its name
         fields = []
         for decl in filter(None, (d.strip() for d in body.split(";"))):
             parts = decl.split(",")

@@ -217,6 +217,18 @@ struct ProxyStats
     time_s::Float64
 end
 
+struct ProxyPlacement
+    struct_size::UInt32
+    kind::Int32
+    center::NTuple{3, Float64}
+    rotation::NTuple{4, Float64}
+    axis::NTuple{3, Float64}
+    radius_top::Float64
+    radius_bottom::Float64
+    height::Float64
+    half_extents::NTuple{3, Float64}
+end
+
 # ---- errors, defaults -------------------------------------------------------------------------
 """A failed call: the library's status code and its message."""
 struct CoverageAxisError <: Exception

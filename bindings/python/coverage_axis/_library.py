@@ -16,8 +16,8 @@ import threading
 from ctypes import POINTER, CFUNCTYPE, c_char_p, c_double, c_int32, c_size_t, c_uint32, c_uint64, c_void_p
 
 from ._structs import (_CandidateOptions, _ConnectOptions, _ContextDesc, _CorrespondenceOptions, _EvaluateOptions,
-                       _Evaluation, _ProxyOptions, _ProxyStats, _RigOptions, _SelectOptions, _SelectStats,
-                       _SkeletonStats, _SkeletonView, _SurfaceView)
+                       _Evaluation, _ProxyOptions, _ProxyPlacement, _ProxyStats, _RigOptions, _SelectOptions,
+                       _SelectStats, _SkeletonStats, _SkeletonView, _SurfaceView)
 
 ABI_VERSION = 3
 
@@ -112,6 +112,7 @@ _SIGNATURES = {
     "ca_proxy_set_destroy": (None, [P]), "ca_proxy_set_count": (c_size_t, [P]),
     "ca_proxy_set_kinds": (P, [P]), "ca_proxy_set_centers": (P, [P]), "ca_proxy_set_radii": (P, [P]),
     "ca_proxy_set_stats": (c_int32, [P, POINTER(_ProxyStats)]),
+    "ca_proxy_set_placement": (c_int32, [P, c_size_t, POINTER(_ProxyPlacement)]),
 }
 
 _lock = threading.Lock()

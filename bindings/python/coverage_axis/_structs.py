@@ -98,3 +98,9 @@ class _ProxyStats(Structure):
         "hd_surface_to_proxies", "mean_surface_to_proxies", "hd_proxies_to_surface", "mean_proxies_to_surface",
         "hd_two_sided", "outside_bound", "skeleton_outside", "union_volume", "outside_volume", "radius_change",
         "diagonal")] + [("candidates", c_uint64), ("surface_cells", c_uint64), ("time_s", c_double)]
+
+
+class _ProxyPlacement(Structure):
+    _fields_ = [("struct_size", c_uint32), ("kind", c_int32), ("center", c_double * 3), ("rotation", c_double * 4),
+                ("axis", c_double * 3), ("radius_top", c_double), ("radius_bottom", c_double), ("height", c_double),
+                ("half_extents", c_double * 3)]

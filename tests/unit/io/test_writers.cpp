@@ -162,13 +162,19 @@ TEST_CASE("write_gltf: refuses bad indices and unknown extensions, writes a skel
     CHECK(doc["nodes"][0].count("mesh") == 0);
 }
 
-TEST_CASE("write_gltf: engine proxies are nodes under \"proxies\" with their parameters in extras") {
+TEST_CASE("write_gltf: engine proxies are collider nodes under \"proxies\" with their parameters in extras") {
     const caio::SkeletonData s = tetrahedron();
     caio::ProxyData sphere, capsule;
     sphere.a[0] = 1, sphere.a[1] = 2, sphere.a[2] = 3, sphere.radius_a = 0.5;
-    capsule.capsule = true;
+    sphere.placed.translation[0] = 1, sphere.placed.translation[1] = 2, sphere.placed.translation[2] = 3;
+    sphere.placed.radius_top = sphere.placed.radius_bottom = 0.5;
+    capsule.kind = 1;
     capsule.a[0] = -1, capsule.radius_a = 0.25;
     capsule.b[0] = 3, capsule.b[2] = 2, capsule.radius_b = 0.75;
+    capsule.placed.kind = 1;
+    capsule.placed.translation[0] = 1, capsule.placed.translation[2] = 1;
+    capsule.placed.rotation[2] = -0.6, capsule.placed.rotation[3] = 0.8;
+    capsule.placed.radius_top = 0.75, capsule.placed.radius_bottom = 0.25, capsule.placed.height = std::sqrt(20.0);
     std::string err;
     const std::string path = temp_path("proxies.gltf");
     REQUIRE(caio::write_gltf(path, s, err, {sphere, capsule}));
@@ -181,15 +187,34 @@ TEST_CASE("write_gltf: engine proxies are nodes under \"proxies\" with their par
     const nlohmann::json& a = doc["nodes"][group["children"][0].get<size_t>()];
     const nlohmann::json& b = doc["nodes"][group["children"][1].get<size_t>()];
     CHECK(a["extras"] == nlohmann::json{{"kind", "sphere"}, {"center", {1.0, 2.0, 3.0}}, {"radius", 0.5}});
-    CHECK(a["mesh"] == 0);
-    CHECK(a["scale"] == nlohmann::json{0.5, 0.5, 0.5});
+    CHECK(a["translation"] == nlohmann::json{1.0, 2.0, 3.0});
+    CHECK(a.count("scale") == 0);   // a collider's node is not scaled: the ball mesh is its child's
+    const nlohmann::json& ball = doc["nodes"][a["children"][0].get<size_t>()];
+    CHECK(ball["mesh"] == 0);
+    CHECK(ball["scale"] == nlohmann::json{0.5, 0.5, 0.5});
     CHECK(b["extras"] == nlohmann::json{{"kind", "capsule"}, {"a", {-1.0, 0.0, 0.0}}, {"radius_a", 0.25},
                                         {"b", {3.0, 0.0, 2.0}}, {"radius_b", 0.75}});
     CHECK(b["translation"] == nlohmann::json{1.0, 0.0, 1.0});   // the segment's midpoint
+    CHECK(b["rotation"] == nlohmann::json{0.0, 0.0, -0.6, 0.8});
     CHECK(b.count("mesh") == 0);
+    // the colliders: KHR_implicit_shapes at the document level, referenced from the nodes
+    const nlohmann::json& shapes = doc["extensions"]["KHR_implicit_shapes"]["shapes"];
+    REQUIRE(shapes.size() == 2);
+    CHECK(a["extensions"]["KHR_physics_rigid_bodies"] == nlohmann::json{{"collider", {{"geometry", {{"shape", 0}}}}}});
+    CHECK(b["extensions"]["KHR_physics_rigid_bodies"] == nlohmann::json{{"collider", {{"geometry", {{"shape", 1}}}}}});
+    CHECK(shapes[0] == nlohmann::json{{"type", "sphere"}, {"sphere", {{"radius", 0.5}}}});
+    CHECK(shapes[1] == nlohmann::json{{"type", "capsule"},
+                                      {"capsule", {{"height", std::sqrt(20.0)}, {"radiusTop", 0.75}, {"radiusBottom", 0.25}}}});
+    // a tapered capsule has no OMI twin, so no shape gets one
+    CHECK(doc["extensionsUsed"] == nlohmann::json{"KHR_implicit_shapes", "KHR_physics_rigid_bodies"});
+    CHECK(a["extensions"].count("OMI_physics_body") == 0);
     capsule.radius_b = std::nan("");
     CHECK_FALSE(caio::write_gltf(path, s, err, {capsule}));
     CHECK(err.find("NaN") != std::string::npos);
+    capsule.radius_b = 0.75;
+    capsule.placed.rotation[0] = INFINITY;
+    CHECK_FALSE(caio::write_gltf(path, s, err, {capsule}));
+    CHECK(err.find("NaN or infinite") != std::string::npos);
 }
 
 TEST_CASE("automatic_view: the direction of the largest projected bounding-box area") {

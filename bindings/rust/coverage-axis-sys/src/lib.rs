@@ -345,6 +345,18 @@ ca_struct!(#[derive(Debug, Default)] ca_proxy_stats {
     time_s: f64,
 });
 
+ca_struct!(#[derive(Debug, Default)] ca_proxy_placement {
+    struct_size: u32,
+    kind: i32,
+    center: [f64; 3],
+    rotation: [f64; 4],
+    axis: [f64; 3],
+    radius_top: f64,
+    radius_bottom: f64,
+    height: f64,
+    half_extents: [f64; 3],
+});
+
 /// Every struct this crate declares, in header order.
 pub fn layouts() -> Vec<StructLayout> {
     vec![
@@ -362,6 +374,7 @@ pub fn layouts() -> Vec<StructLayout> {
         ca_rig_options::layout(),
         ca_proxy_options::layout(),
         ca_proxy_stats::layout(),
+        ca_proxy_placement::layout(),
     ]
 }
 
@@ -510,4 +523,5 @@ extern "C" {
     pub fn ca_proxy_set_centers(proxies: *const ca_proxy_set) -> *const f64;
     pub fn ca_proxy_set_radii(proxies: *const ca_proxy_set) -> *const f64;
     pub fn ca_proxy_set_stats(proxies: *const ca_proxy_set, stats: *mut ca_proxy_stats) -> ca_status;
+    pub fn ca_proxy_set_placement(proxies: *const ca_proxy_set, index: usize, placement: *mut ca_proxy_placement) -> ca_status;
 }
