@@ -92,7 +92,7 @@ TEST_CASE("proxy_placement: random capsules and boxes map onto the library's pri
             Vec3 d(g(rng), g(rng), g(rng));
             if (trial % 10 == 0) d = Vec3(0, -1, 0);   // straight down: the turn of +Y onto -Y
             if (trial % 10 == 2) d = Vec3(0, 1, 0);    // straight up: no turn
-            d = d.normalized() * (0.5 + 2 * pos(rng));
+            d = d.normalized() * (1 + 2 * pos(rng));   // longer than the radii differ: a capsule
             const double ra = pos(rng), rb = trial % 4 == 0 ? ra : pos(rng);   // tapered, and not
             p = {ca::ProxyKind::capsule, {c, ra}, {c + d, rb}};
         } else {
