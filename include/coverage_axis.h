@@ -611,8 +611,8 @@ typedef struct ca_proxy_options {
     uint32_t count;              /* at most this many primitives (>= 1; fewer when more would not lower
                                     the error); default 16 */
     uint32_t surface_samples;    /* about this many corners of the surface cells; default 20000 */
-    uint32_t evaluate_samples;   /* stats: surface and proxy-boundary samples each; default 30000 */
-    uint32_t volume_samples;     /* stats: Monte Carlo points for the volumes; default 200000 */
+    uint32_t evaluate_samples;   /* stats: surface and proxy-boundary samples each; default 20000 */
+    uint32_t volume_samples;     /* stats: Monte Carlo points for the volumes; default 100000 */
     uint64_t seed;               /* default 1; the same seed gives the same proxies */
 } ca_proxy_options;
 
