@@ -19,9 +19,10 @@ using namespace cand;
 Status generate_candidates(Surface surface, const CandidateOptions& opt, const Monitor& monitor, CandidateSet& out) {
     out = CandidateSet{};
     out.surface = std::move(surface);
-    if (opt.cover_samples == 0 && !out.surface.point_cloud)
+    const SurfaceKind kind = out.surface.kind();
+    if (opt.cover_samples == 0 && !kind.is_cloud())
         return fail(Code::invalid_argument, "cover_samples must be at least 1");
-    if (opt.generator == Generator::voronoi && opt.voronoi_samples < 5 && !out.surface.point_cloud)
+    if (opt.generator == Generator::voronoi && opt.voronoi_samples < 5 && !kind.is_cloud())
         return fail(Code::invalid_argument, "voronoi_samples must be at least 5");
     if (opt.generator == Generator::random && opt.random_candidates == 0)
         return fail(Code::invalid_argument, "random_candidates must be at least 1");
@@ -30,7 +31,7 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
     auto t0 = Clock::now();
     if (!monitor.report("sampling", 0)) return monitor.stop_status("sampling");
     Status st;
-    if (out.surface.point_cloud) {
+    if (kind.is_cloud()) {
         out.time_sampling_s = seconds_since(t0);
         st = point_cloud_candidates(opt, monitor, threads, out);
     } else {
@@ -55,7 +56,7 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
             threads > 1);
         // open meshes: no ball reaches out through a hole (hole_caps.cpp); the caps' tree is built
         // on this thread while the surface's are built (its own member of `built`)
-        if (!out.surface.caps.triangles.empty()) built.cap_distance = std::make_shared<const MeshDistance>(out.surface.caps);
+        if (kind.is_open_mesh()) built.cap_distance = std::make_shared<const MeshDistance>(out.surface.caps);
         if (!sample_surface(mesh, opt.cover_samples, stream_seed(opt.seed, 1), out.cover_samples, monitor))
             st = monitor.stop_status("sampling");
         out.time_sampling_s = seconds_since(t0);

@@ -191,7 +191,7 @@ size_t add_fallback_balls(CandidateSet& set, const WindingNumber& winding, const
     };
     auto inside = [&](const Vec3& c) { return winding.inside(c); };
     const Mesh& mesh = set.surface.mesh;
-    if (mesh.triangles.empty() || set.cover_samples.empty()) return 0;
+    if (!set.surface.kind().is_mesh() || set.cover_samples.empty()) return 0;
     size_t added = 0;
     const std::vector<size_t> unreached = unreached_samples(set, threads, monitor);
     for (size_t k = 0; k < unreached.size(); ++k) {

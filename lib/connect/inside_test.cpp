@@ -125,13 +125,13 @@ private:
 };
 
 InsideTest::InsideTest(const CandidateSet& set) : impl_(std::make_unique<Impl>()) {
-    if (!set.surface.mesh.triangles.empty()) {
+    if (set.surface.kind().is_mesh()) {
         impl_->winding = set.winding ? set.winding : std::make_shared<const WindingNumber>(set.surface.mesh);
         impl_->distance = set.distance ? set.distance : std::make_shared<const MeshDistance>(set.surface.mesh);
         impl_->closed = set.surface.topology.closed;
         // the candidate step's caps when it built the structures, else the surface's own
         if (set.distance) impl_->caps = set.cap_distance;
-        else if (!set.surface.caps.triangles.empty()) impl_->caps = std::make_shared<const MeshDistance>(set.surface.caps);
+        else if (set.surface.kind().is_open_mesh()) impl_->caps = std::make_shared<const MeshDistance>(set.surface.caps);
         return;
     }
     impl_->cloud_winding = set.cloud_winding;

@@ -48,7 +48,7 @@ Status voronoi_diagram(const CandidateSet& set, int threads, const Monitor& moni
     Status st = delaunay_tetrahedra(pts, tets, monitor, "connect");
     if (!st.ok()) return st;
     // the inside test: the mesh's winding number, or a point cloud's own (point_winding.h)
-    const PointCloudWinding* cloud = set.surface.mesh.triangles.empty() ? set.cloud_winding.get() : nullptr;
+    const PointCloudWinding* cloud = set.surface.kind().is_mesh() ? nullptr : set.cloud_winding.get();
     const std::shared_ptr<const WindingNumber> own =
         set.winding || cloud ? nullptr : std::make_shared<const WindingNumber>(set.surface.mesh);
     const WindingNumber* winding = set.winding ? set.winding.get() : own.get();

@@ -334,8 +334,7 @@ Status fit_impl(const CandidateSet& set, const Selection& sel, const FitOptions&
                 Skeleton& sk, FitStats& stats, const FitHold* hold) {
     const auto t0 = Clock::now();
     stats = FitStats{};
-    if (set.surface.point_cloud || set.surface.mesh.triangles.empty() || sk.balls.empty() ||
-        opt.iterations == 0)
+    if (!set.surface.kind().is_mesh() || sk.balls.empty() || opt.iterations == 0)
         return Status::success();
     if (!(opt.power >= 2) || !(opt.regularization >= 0) || !(opt.radius_tolerance >= 0))
         return fail(Code::invalid_argument, "fit: power must be >= 2, regularization and radius_tolerance >= 0");
