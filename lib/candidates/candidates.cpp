@@ -4,7 +4,6 @@
 // surface balls.
 #include "candidates_internal.h"
 
-#include "bvh.h"
 #include "sampling.h"
 #include "timing.h"
 
@@ -44,19 +43,12 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
         };
         Beside structures(
             [&built, &mesh, &stop, threads] {
-                const auto tree = detail::build_triangle_tree(mesh, threads, stop);   // one tree for both
-                if (!stop()) built.winding = std::make_shared<const WindingNumber>(tree, 2.0, threads, stop);
-                if (stop()) {
-                    built.stopped = true;
-                    return;
-                }
-                built.distance = std::make_shared<const MeshDistance>(tree);
-                if (stop()) built.stopped = true;
+                if (!build_mesh_queries(mesh, threads, stop, built.queries) || stop()) built.stopped = true;
             },
             threads > 1);
         // open meshes: no ball reaches out through a hole (hole_caps.cpp); the caps' tree is built
         // on this thread while the surface's are built (its own member of `built`)
-        if (kind.is_open_mesh()) built.cap_distance = std::make_shared<const MeshDistance>(out.surface.caps);
+        if (kind.is_open_mesh()) build_cap_queries(out.surface.caps, built.queries);
         if (!sample_surface(mesh, opt.cover_samples, stream_seed(opt.seed, 1), out.cover_samples, monitor))
             st = monitor.stop_status("sampling");
         out.time_sampling_s = seconds_since(t0);
@@ -77,19 +69,17 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
         if (!st.ok()) built.abandon = true;
         structures.wait();
         if (st.ok()) st = structures_status(built, monitor);
-        const MeshDistance* cap_distance = built.cap_distance.get();
+        const MeshDistance* cap_distance = built.queries.cap_distance.get();
         if (st.ok() && cap_distance && !clamp_to_hole_caps(out, *cap_distance, threads, monitor)) st = monitor.stop_status("hole caps");
         if (st.ok()) {
             if (!out.surface.flat)
-                out.fallback_balls = add_fallback_balls(out, *built.winding, *built.distance, cap_distance, threads, monitor);
+                out.fallback_balls = add_fallback_balls(out, *built.queries.winding, *built.queries.distance, cap_distance, threads, monitor);
             if (monitor.stopped()) st = monitor.stop_status("fallback balls");
             if (st.ok() && !opt.volumetric_only) {
-                add_surface_balls(out, built.distance.get(), threads, monitor);
+                add_surface_balls(out, built.queries.distance.get(), threads, monitor);
                 if (monitor.stopped()) st = monitor.stop_status("surface balls");
             }
-            out.winding = std::move(built.winding);
-            out.distance = std::move(built.distance);
-            out.cap_distance = std::move(built.cap_distance);
+            out.queries = std::move(built.queries);
         }
         if (st.ok() && opt.connect_samples > 0)
             out.connect_samples = sample_surface(out.surface.mesh, opt.connect_samples, stream_seed(opt.seed, 4));

@@ -10,6 +10,7 @@
 #include "common.h"
 #include "delaunay.h"
 #include "hole_caps.h"
+#include "shape_queries.h"
 #include "surface.h"
 
 #include <atomic>
@@ -38,9 +39,6 @@ struct CandidateOptions {
 };
 
 // Everything later steps need, in internal (unit-cube) units.
-class WindingNumber;
-class MeshDistance;
-class PointCloudWinding;
 class PointTree;
 
 // Point clouds (cloud_reach.cpp): whether a ball stays within reach of the cloud: every point of
@@ -89,19 +87,10 @@ struct CandidateSet {
     // Empty otherwise (the medial-axis route then builds them itself).
     std::vector<Tet> voronoi_tets;
     std::vector<uint8_t> voronoi_inner;
-    // Meshes: the inside and distance queries on surface.mesh built by generate_candidates, shared
-    // with the connection step (which builds its own when they are null). Whoever changes
-    // surface.mesh afterwards must reset them.
-    std::shared_ptr<const WindingNumber> winding;
-    std::shared_ptr<const MeshDistance> distance;
-    // Open meshes: the distance to the hole caps (hole_caps.h), null when there are none; the
-    // connection step's envelope rule keeps elements from bulging out through the caps.
-    std::shared_ptr<const MeshDistance> cap_distance;
-    // Point clouds: the winding number of the (de-duplicated, oriented) points, the inside test
-    // of the candidates, the fallback balls and the connection step.
-    std::shared_ptr<const PointCloudWinding> cloud_winding;
-    // Point clouds: the reach rule (CloudReach above), shared with the connection step.
-    std::shared_ptr<const CloudReach> cloud_reach;
+    // The inside test, distances, hole caps or cloud reach of the surface (shape_queries.h), built
+    // once by generate_candidates and only read after it; none for caller arrays. Whoever changes
+    // surface.mesh afterwards must build them again.
+    ShapeQueries queries;
     size_t outliers = 0;                  // point clouds: points dropped as outliers (cloud_outliers.cpp)
     size_t beyond_reach = 0;              // point clouds: candidates dropped as reaching outside the cloud (cloud_reach.cpp)
     size_t outside_local_plane = 0;       // point clouds: candidates dropped outside the local surface (cloud_local_planes.cpp)

@@ -225,8 +225,8 @@ Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monito
         add_surface_balls(out, nullptr, threads, monitor);
         if (monitor.stopped()) return monitor.stop_status("surface balls");
     }
-    out.cloud_winding = std::move(winding);
-    out.cloud_reach = std::move(reach);
+    out.queries.cloud_winding = std::move(winding);
+    out.queries.cloud_reach = std::move(reach);
     return Status::success();
 }
 

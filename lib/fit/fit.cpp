@@ -80,12 +80,9 @@ class Fitter {
 public:
     Fitter(const CandidateSet& set, const FitOptions& opt, const Monitor& monitor, int threads)
         : set_(set), opt_(opt), monitor_(monitor), threads_(threads) {
-        const Mesh& mesh = set.surface.mesh;
-        if (set.winding) winding_ = set.winding;
-        else winding_ = std::make_shared<WindingNumber>(mesh);
-        if (set.distance) distance_ = set.distance;
-        else distance_ = std::make_shared<MeshDistance>(mesh);
-        surface_ = sample_surface(mesh, opt.surface_samples, opt.seed ^ 0x3C6EF372FE94F82Bull);
+        winding_ = set.queries.winding;
+        distance_ = set.queries.distance;
+        surface_ = sample_surface(set.surface.mesh, opt.surface_samples, opt.seed ^ 0x3C6EF372FE94F82Bull);
     }
 
     // The residuals of the skeleton with these balls and their maximum |r|, drawing `drawn`

@@ -17,8 +17,7 @@ Status proxies_step(const CandidateSet& set, const Skeleton& skeleton, const Pro
         b.center = n.to_internal(b.center);
         b.radius /= n.scale;
     }
-    ShapeQueries shape{set.winding, set.distance};
-    Status st = make_proxies(set.surface.mesh, shape, sk, opt, monitor, out);
+    Status st = make_proxies(set.surface.mesh, set.queries, sk, opt, monitor, out);
     if (!st.ok()) return st;
     for (Proxy& p : out.proxies)
         for (Ball* b : {&p.a, &p.b}) {
