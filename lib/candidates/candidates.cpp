@@ -31,7 +31,7 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
     if (!monitor.report("sampling", 0)) return monitor.stop_status("sampling");
     Status st;
     if (kind.is_cloud()) {
-        out.time_sampling_s = seconds_since(t0);
+        out.report.time_sampling_s = seconds_since(t0);
         st = point_cloud_candidates(opt, monitor, threads, out);
     } else {
         // The surface trees are built on a second thread while this one builds the hole caps' tree,
@@ -51,7 +51,7 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
         if (kind.is_open_mesh()) build_cap_queries(out.surface.caps, built.queries);
         if (!sample_surface(mesh, opt.cover_samples, stream_seed(opt.seed, 1), out.cover_samples, monitor))
             st = monitor.stop_status("sampling");
-        out.time_sampling_s = seconds_since(t0);
+        out.report.time_sampling_s = seconds_since(t0);
         // A flat mesh bounds no volume: no inner candidates and no 3-D Delaunay step; its cover is
         // made of surface balls. A Delaunay step Qhull cannot build (its retries included) leaves
         // the fallback and surface balls to cover the shape.
@@ -59,7 +59,7 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
             st = opt.generator == Generator::voronoi ? mesh_voronoi_candidates(opt, monitor, structures, built, threads, out)
                                                      : mesh_random_candidates(opt, monitor, structures, built, threads, out);
             if (st.code == Code::geometry_failure || st.code == Code::degenerate_input) {
-                out.delaunay_failed = true;
+                out.report.delaunay_failed = true;
                 out.balls.clear();
                 out.voronoi_tets.clear();
                 out.voronoi_inner.clear();
@@ -73,7 +73,7 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
         if (st.ok() && cap_distance && !clamp_to_hole_caps(out, *cap_distance, threads, monitor)) st = monitor.stop_status("hole caps");
         if (st.ok()) {
             if (!out.surface.flat)
-                out.fallback_balls = add_fallback_balls(out, *built.queries.winding, *built.queries.distance, cap_distance, threads, monitor);
+                out.report.fallback_balls = add_fallback_balls(out, *built.queries.winding, *built.queries.distance, cap_distance, threads, monitor);
             if (monitor.stopped()) st = monitor.stop_status("fallback balls");
             if (st.ok() && !opt.volumetric_only) {
                 add_surface_balls(out, built.queries.distance.get(), threads, monitor);
@@ -85,7 +85,7 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
             out.connect_samples = sample_surface(out.surface.mesh, opt.connect_samples, stream_seed(opt.seed, 4));
     }
     if (!st.ok()) return st;
-    out.time_candidates_s = seconds_since(t0) - out.time_sampling_s;
+    out.report.time_candidates_s = seconds_since(t0) - out.report.time_sampling_s;
     if (out.balls.empty())
         return fail(Code::no_candidates, "no candidate ball lies inside the shape (volumetric-only: is the surface "
                                          "closed around a volume? try more samples or the random generator)");
