@@ -27,6 +27,7 @@
 // grown there by the distances alone (the touching rule above); otherwise on the other side while
 // w > 1/2. Clouds with trusted given normals keep the normal's side.
 #include "candidates_internal.h"
+#include "median.h"
 
 #include "coverage.h"
 #include "distance.h"
@@ -133,8 +134,7 @@ public:
         for_each_neighbourhood(pts, 8, [&](size_t i, const size_t*, const double* d2, size_t found) {
             d8[i] = std::sqrt(d2[found - 1]);
         }, threads);
-        std::nth_element(d8.begin(), d8.begin() + long(d8.size() / 2), d8.end());
-        tol_ = kRayTolerance * d8[d8.size() / 2];
+        tol_ = kRayTolerance * median_of(std::move(d8));
         const auto [lo, hi] = bounding_box(pts);
         lo_ = lo - Vec3::Constant(kRayMargin), hi_ = hi + Vec3::Constant(kRayMargin);
     }
