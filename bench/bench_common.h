@@ -61,7 +61,10 @@ inline double seconds_since(std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
-// CPU time of the whole process so far (user + system, every thread), seconds.
+// The one clock of every bench's CPU times, as the benches print it above their tables.
+constexpr const char* kCpuClock = "CPU time: getrusage(RUSAGE_SELF), user + system of every thread";
+
+// CPU time of the whole process so far (user + system, every thread), seconds (kCpuClock).
 inline double cpu_seconds() {
     rusage u{};
     getrusage(RUSAGE_SELF, &u);

@@ -16,7 +16,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <map>
 #include <string>
 #include <sys/stat.h>
@@ -89,7 +88,6 @@ struct Model {
 
 }  // namespace
 
-double cpu_seconds() { return double(std::clock()) / CLOCKS_PER_SEC; }
 
 // Times one evaluation at the default options; prints wall and CPU time (both threads).
 void timing_row() {
@@ -97,19 +95,19 @@ void timing_row() {
     ca::Skeleton sk;
     synthetic(mesh, sk);
     ca::EvaluateResult r;
-    const double c0 = cpu_seconds();
+    const double c0 = bench::cpu_seconds();
     const auto t0 = std::chrono::steady_clock::now();
     const ca::Status st = ca::evaluate(mesh, sk, ca::EvaluateOptions{}, ca::Monitor{}, r);
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const double cpu = cpu_seconds() - c0;
+    const double cpu = bench::cpu_seconds() - c0;
     if (!st.ok()) {
         std::printf("timing: error: %s\n", st.message.c_str());
         return;
     }
     std::printf("timing: %zu balls vs %zu triangles: %.2f s wall, %.2f s CPU "
-                "(S->E %.3f %%, E->S %.3f %%)\n",
+                "(S->E %.3f %%, E->S %.3f %%; %s)\n",
                 sk.balls.size(), mesh.triangles.size(), secs, cpu, r.hd_surface_to_recon,
-                r.hd_recon_to_surface);
+                r.hd_recon_to_surface, bench::kCpuClock);
 }
 
 int main(int argc, char** argv) {
