@@ -13,28 +13,6 @@
 
 namespace cli {
 
-ca_surface_view surface_view(const caio::MeshData& mesh, int32_t point_normals) {
-    ca_surface_view view;
-    ca_surface_view_init(&view);
-    view.positions = mesh.positions.data();
-    view.vertex_count = mesh.positions.size() / 3;
-    view.triangles = mesh.triangles.data();
-    view.triangle_count = mesh.triangles.size() / 3;
-    view.normals = mesh.normals.empty() ? nullptr : mesh.normals.data();
-    view.normal_count = mesh.normals.size() / 3;
-    view.point_normals = point_normals;
-    return view;
-}
-
-const char* normals_name(int32_t normals) {
-    switch (normals) {
-        case CA_NORMALS_GIVEN: return "given";
-        case CA_NORMALS_ORIENTED: return "oriented";
-        case CA_NORMALS_ESTIMATED: return "estimated";
-        default: return "none";
-    }
-}
-
 Failure library_failure(ca_context* ctx, ca_status st, const std::string& step) {
     Failure f;
     const std::string name = ca_status_string(st);
