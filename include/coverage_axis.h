@@ -596,10 +596,13 @@ CA_API const uint32_t* ca_rig_vertex_branches(const ca_rig* rig); /* the branch 
      corners of the triangles it is given). */
 #define CA_PROXY_SHAPES_SPHERES  0 /* spheres only */
 #define CA_PROXY_SHAPES_CAPSULES 1 /* tapered capsules and spheres */
+#define CA_PROXY_SHAPES_BOXES    2 /* oriented boxes and spheres */
+#define CA_PROXY_SHAPES_ALL      3 /* spheres, tapered capsules and oriented boxes */
 #define CA_PROXY_INSCRIBED       0
 #define CA_PROXY_CONSERVATIVE    1
 #define CA_PROXY_SPHERE          0 /* kind of one primitive */
 #define CA_PROXY_CAPSULE         1
+#define CA_PROXY_BOX             2
 
 typedef struct ca_proxy_options {
     uint32_t struct_size;        /* sizeof(ca_proxy_options) */

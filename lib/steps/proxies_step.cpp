@@ -20,14 +20,18 @@ Status proxies_step(const CandidateSet& set, const Skeleton& skeleton, const Pro
     ShapeQueries shape{set.winding, set.distance};
     Status st = make_proxies(set.surface.mesh, shape, sk, opt, monitor, out);
     if (!st.ok()) return st;
-    for (Proxy& p : out.proxies)
+    for (Proxy& p : out.proxies) {
         for (Ball* b : {&p.a, &p.b}) {
             b->center = n.to_user(b->center);
             b->radius *= n.scale;
         }
+        p.half *= n.scale;  // boxes; the axes are directions
+    }
     out.stats.diagonal *= n.scale;
     out.stats.union_volume *= n.scale * n.scale * n.scale;
     out.stats.outside_volume *= n.scale * n.scale * n.scale;
+    out.stats.outside_objective *= n.scale * n.scale * n.scale;
+    out.stats.outside_lower_bound *= n.scale * n.scale * n.scale;
     return Status::success();
 }
 
