@@ -12,6 +12,9 @@
 //    L(u) = sum_i u_i + (sum of the at most K most negative reduced costs c_j - sum_{i in j} u_i)
 //    is at most the optimum (the cardinality limit stays in the relaxed problem), subgradient
 //    ascent on u with the incumbent's cost as target.
+//  - The greedy again, priced by the reduced costs at the best multipliers (clamped at 0, plus a
+//    thousandth of the cost): they charge a column for the rows other columns cover more cheaply,
+//    which the plain greedy does not see; then the local search again.
 //  - CBC (run_cbc with costs and the cardinality row) on a core: the chosen columns, every column
 //    of negative reduced cost at the best multipliers and each row's cheapest few, with a node
 //    limit; a cheaper cover it finds becomes the incumbent. Its bound counts only when the core
@@ -87,7 +90,8 @@ void drop_redundant(const Columns& P, std::vector<uint32_t>& sel) {
 // columns of `allowed` (null: all), at most `limit` columns; returns the columns added (may leave
 // rows uncovered when the limit ends it).
 std::vector<uint32_t> greedy(const Columns& P, double mu, std::vector<uint8_t> covered, const std::vector<uint8_t>* allowed,
-                             size_t limit) {
+                             size_t limit, const std::vector<double>* prices = nullptr) {
+    const std::vector<double>& cost = prices ? *prices : P.cost;
     std::vector<uint32_t> fresh(P.C, 0);
     size_t left = 0;
     for (uint32_t r = 0; r < P.R; ++r) left += !covered[r];
@@ -96,14 +100,14 @@ std::vector<uint32_t> greedy(const Columns& P, double mu, std::vector<uint8_t> c
     for (uint32_t j = 0; j < P.C; ++j) {
         if (allowed && !(*allowed)[j]) continue;
         for (uint32_t k = P.ptr[j]; k < P.ptr[j + 1]; ++k) fresh[j] += !covered[P.idx[k]];
-        if (fresh[j]) heap.push({(P.cost[j] + mu) / fresh[j], j});
+        if (fresh[j]) heap.push({(cost[j] + mu) / fresh[j], j});
     }
     std::vector<uint32_t> out;
     while (left > 0 && out.size() < limit && !heap.empty()) {
         const auto [score, j] = heap.top();
         heap.pop();
         if (fresh[j] == 0) continue;
-        const double now = (P.cost[j] + mu) / fresh[j];
+        const double now = (cost[j] + mu) / fresh[j];
         if (now > score) {  // scores only grow as rows get covered: re-queue at the true score
             heap.push({now, j});
             continue;
@@ -120,8 +124,8 @@ std::vector<uint32_t> greedy(const Columns& P, double mu, std::vector<uint8_t> c
     return out;
 }
 
-std::vector<uint32_t> greedy_cover(const Columns& P, double mu) {
-    std::vector<uint32_t> sel = greedy(P, mu, std::vector<uint8_t>(P.R, 0), nullptr, P.C);
+std::vector<uint32_t> greedy_cover(const Columns& P, double mu, const std::vector<double>* prices = nullptr) {
+    std::vector<uint32_t> sel = greedy(P, mu, std::vector<uint8_t>(P.R, 0), nullptr, P.C, prices);
     drop_redundant(P, sel);
     return sel;
 }
@@ -313,6 +317,8 @@ Status solve_weighted_cover(const WeightedCoverProblem& problem, const WeightedC
     const Deadline deadline = Deadline::after(opt.time_limit_s).earliest(monitor.deadline);
     if (P.R == 0) return Status::success();
 
+    const auto t0 = Clock::now();
+    int greedy_runs = 0;
     // ---- greedy at rising prices ----
     double smallest = 0, largest = 0;
     for (double c : P.cost) {
@@ -335,6 +341,7 @@ Status solve_weighted_cover(const WeightedCoverProblem& problem, const WeightedC
     double mu = smallest > 0 ? smallest : 1.0;
     for (int d = 0; d < kPriceDoublings && fits < 0; ++d, mu *= 2) {
         if (monitor.stopped()) return monitor.stop_status("weighted cover");
+        ++greedy_runs;
         if (consider(greedy_cover(P, mu))) fits = mu;
         else too_low = mu;
     }
@@ -349,9 +356,35 @@ Status solve_weighted_cover(const WeightedCoverProblem& problem, const WeightedC
     (void)largest;
 
     // ---- local search, bound, CBC on the core, local search again ----
+    const double t_greedy = seconds_since(t0);
+    const double v_greedy = best_value;
     improve(P, best, monitor, deadline);
     best_value = total(P, best);
+    const double t_search = seconds_since(t0);
     const Bound bound = lagrangian(P, best_value, opt.lagrange_iterations, monitor, deadline);
+    const double t_bound = seconds_since(t0);
+    // ---- the greedy again on the reduced costs at the best multipliers (clamped at 0: a column
+    // the relaxation wants is nearly free), which see what the rows' other columns cost ----
+    if (!bound.reduced.empty() && bound.value < best_value * (1 - 1e-6)) {
+        std::vector<double> prices(P.C);
+        for (uint32_t j = 0; j < P.C; ++j) prices[j] = std::max(bound.reduced[j], 0.0) + 1e-3 * P.cost[j];
+        double lo = 0, hi = -1;
+        std::vector<uint32_t> sel = greedy_cover(P, 0.0, &prices);
+        if (consider(sel)) hi = 0;
+        double m = smallest > 0 ? smallest : 1.0;
+        for (int d = 0; d < kPriceDoublings && hi < 0 && !monitor.stopped(); ++d, m *= 2) {
+            if (consider(greedy_cover(P, m, &prices))) hi = m;
+            else lo = m;
+        }
+        for (int b = 0; b < kPriceBisections && hi > 0 && !monitor.stopped(); ++b) {
+            const double mid = 0.5 * (lo + hi);
+            if (consider(greedy_cover(P, mid, &prices))) hi = mid;
+            else lo = mid;
+        }
+        improve(P, best, monitor, deadline);
+        best_value = total(P, best);
+    }
+    const double t_reduced = seconds_since(t0), v_reduced = best_value;
     out.lower_bound = std::min(bound.value, best_value);
     if (opt.cbc_nodes > 0 && !bound.reduced.empty() && bound.value < best_value * (1 - 1e-6) && !deadline.expired() &&
         !monitor.stopped()) {
@@ -370,7 +403,9 @@ Status solve_weighted_cover(const WeightedCoverProblem& problem, const WeightedC
         std::vector<uint32_t> cols;
         for (uint32_t j = 0; j < P.C; ++j)
             if (core[j]) cols.push_back(j);
-        if (cols.size() <= opt.cbc_max_columns) {
+        size_t incidences = 0;
+        for (uint32_t j : cols) incidences += P.ptr[j + 1] - P.ptr[j];
+        if (incidences <= opt.cbc_max_incidences) {
             sc::Problem Q;
             Q.R = P.R;
             Q.C = uint32_t(cols.size());
@@ -386,7 +421,7 @@ Status solve_weighted_cover(const WeightedCoverProblem& problem, const WeightedC
             std::iota(Q.row_id.begin(), Q.row_id.end(), 0u);
             sc::fill_rows(Q);
             sc::CbcSettings cs;
-            cs.time_limit_s = deadline.limit_s();
+            cs.time_limit_s = std::min(deadline.limit_s() > 0 ? deadline.limit_s() : opt.cbc_time_limit_s, opt.cbc_time_limit_s);
             cs.threads = 1;
             cs.max_nodes = opt.cbc_nodes;
             cs.costs = &qcost;
@@ -411,6 +446,11 @@ Status solve_weighted_cover(const WeightedCoverProblem& problem, const WeightedC
                 out.lower_bound = std::max(out.lower_bound, std::min(cbc.bound, best_value));
         }
     }
+    monitor.note(1, "weighted cover: greedy " + std::to_string(greedy_runs) + " runs " + std::to_string(t_greedy) + " s (" +
+                        std::to_string(v_greedy) + "), search " + std::to_string(t_search - t_greedy) + " s (" +
+                        std::to_string(total(P, best)) + "), bound " + std::to_string(t_bound - t_search) + " s (" +
+                        std::to_string(bound.value) + "), reduced-cost greedy " + std::to_string(t_reduced - t_bound) + " s (" +
+                        std::to_string(v_reduced) + "), CBC " + std::to_string(seconds_since(t0) - t_reduced) + " s");
     if (monitor.cancelled()) return monitor.stop_status("weighted cover");
     out.selected = best;
     out.objective = best_value;

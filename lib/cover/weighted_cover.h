@@ -4,7 +4,8 @@
 // points, columns are primitives, costs their volume outside the shape). Solved by the set-cover
 // engine's parts: a greedy cover whose price per column is raised until it uses at most K
 // columns, a local search of add-and-drop and re-cover moves, the Lagrangian bound of the
-// covering rows (the K most negative reduced costs), and CBC (run_cbc, behind the library's CBC
+// covering rows (the K most negative reduced costs), the same greedy on the reduced costs at the
+// bound's multipliers (then the local search again), and CBC (run_cbc, behind the library's CBC
 // mutex) on a core of columns of small reduced cost with a node limit. Deterministic: fixed
 // iteration and node counts, the time limit only cuts a solve short.
 #pragma once
@@ -21,9 +22,10 @@ struct WeightedCoverProblem {
 
 struct WeightedCoverOptions {
     double time_limit_s = 2.0;          // safety: <= 0 none; cuts the Lagrangian, local search and CBC short
-    int lagrange_iterations = 300;      // subgradient steps for the lower bound
-    int cbc_nodes = 200;                // CBC's node limit on the core (0: no CBC)
-    size_t cbc_max_columns = 4000;      // the core's size limit (columns)
+    int lagrange_iterations = 100;      // subgradient steps for the lower bound
+    int cbc_nodes = 50;                 // CBC's node limit on the core (0: no CBC)
+    size_t cbc_max_incidences = 60000;  // CBC runs only on a core this small (column-row incidences)
+    double cbc_time_limit_s = 0.5;      // and at most this long (checked between its nodes)
 };
 
 struct WeightedCoverResult {

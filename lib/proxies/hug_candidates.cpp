@@ -2,8 +2,8 @@
 // primitives (proxy_candidates.cpp). Each skeleton primitive is a candidate at several growths
 // (offsets): medial balls touch the surface, and a grown one holds the band of surface around its
 // contacts, a larger band for a larger growth at the price of more volume outside. Oriented boxes
-// are fitted to groups of surface points: the nodes of a tree that halves a group across its box's
-// longest side (a plank, a wall, a table top becomes one node), and the points a skeleton primitive
+// are fitted to groups of surface points: the nodes of a tree that cuts a group in two where the
+// children's boxes have the least volume (a plank, a wall, a table top becomes one node), and the points a skeleton primitive
 // holds (hug_choice.cpp). A box is the tighter of the one in the points' principal axes and the
 // one in the model's axes (buildings and furniture are mostly axis-aligned). The same groups give
 // capsules along their principal axis (a limb whose skeleton has no single long edge).
@@ -19,9 +19,11 @@ namespace ca {
 namespace {
 
 // Offsets in internal units (the model's longest side is 1).
-const std::vector<double> kOffsets = {0.0, 0.004, 0.01, 0.02, 0.035, 0.06, 0.1};
+const std::vector<double> kOffsets = {0.0, 0.005, 0.012, 0.025, 0.045, 0.07};
 // The tree stops halving at this depth (at most 2^depth leaves).
 constexpr int kMaxDepth = 14;
+// A group is cut by one of kCuts - 1 evenly spaced planes across each side of its box.
+constexpr int kCuts = 8;
 
 Proxy box_in_frame(const std::vector<Vec3>& points, const std::vector<uint32_t>& indices, const Eigen::Matrix3d& axes) {
     Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
@@ -96,12 +98,36 @@ std::vector<std::vector<uint32_t>> point_groups(const std::vector<Vec3>& points,
         const Proxy box = fit_box(points, node.indices);
         out.push_back(node.indices);
         if (node.depth >= kMaxDepth || node.indices.size() < 2 * min_size) continue;
-        int axis = 0;
-        box.half.maxCoeff(&axis);
-        const Vec3 dir = box.axes.col(axis);
-        const double mid = dir.dot(box.a.center);
+        // the cut of least total child volume (boxes in this box's frame) among kCuts planes
+        // across each of its sides: an L of two planks is cut where they meet
+        Vec3 best_dir = box.axes.col(0);
+        double best_cut = 0, best_volume = std::numeric_limits<double>::infinity();
+        for (int axis = 0; axis < 3; ++axis)
+            for (int q = 1; q < kCuts; ++q) {
+                const Vec3 dir = box.axes.col(axis);
+                const double cut = dir.dot(box.a.center) + box.half[axis] * (2.0 * q / kCuts - 1);
+                Vec3 lo[2], hi[2];
+                for (int k = 0; k < 2; ++k) {
+                    lo[k] = Vec3::Constant(std::numeric_limits<double>::infinity());
+                    hi[k] = -lo[k];
+                }
+                for (uint32_t i : node.indices) {
+                    const Vec3 local = box.axes.transpose() * points[i];
+                    const int k = dir.dot(points[i]) < cut ? 0 : 1;
+                    lo[k] = lo[k].cwiseMin(local);
+                    hi[k] = hi[k].cwiseMax(local);
+                }
+                double volume = 0;
+                for (int k = 0; k < 2; ++k)
+                    if (lo[k].x() <= hi[k].x()) volume += (hi[k] - lo[k]).prod();
+                if (volume < best_volume * (1 - 1e-12)) {
+                    best_volume = volume;
+                    best_dir = dir;
+                    best_cut = cut;
+                }
+            }
         Node left{{}, node.depth + 1}, right{{}, node.depth + 1};
-        for (uint32_t i : node.indices) (dir.dot(points[i]) < mid ? left : right).indices.push_back(i);
+        for (uint32_t i : node.indices) (best_dir.dot(points[i]) < best_cut ? left : right).indices.push_back(i);
         if (left.indices.empty() || right.indices.empty()) continue;  // all points in one place
         stack.push_back(std::move(right));
         stack.push_back(std::move(left));

@@ -13,6 +13,7 @@
 
 #include "kdtree.h"
 #include "parallel.h"
+#include "timing.h"
 #include "weighted_cover.h"
 
 #include <algorithm>
@@ -23,11 +24,11 @@ namespace ca {
 namespace {
 
 // Voxels of the inside grid over the mesh's box.
-constexpr size_t kGridVoxels = 150000;
+constexpr size_t kGridVoxels = 60000;
 // Point groups of the box tree stop at this many points.
 constexpr size_t kMinGroup = 12;
 // Boxes are also fitted to the points a skeleton primitive holds at this offset (internal units).
-constexpr double kBoxOffset = 0.02;
+constexpr double kBoxOffset = 0.025;
 // Price of a primitive beside its outside volume, as a share of the shape's volume (on the
 // voxels): a primitive is added only where it cuts the outside volume by more than that, so a
 // capsule-shaped part stays one capsule rather than pieces that differ by a voxel or two.
@@ -66,10 +67,12 @@ std::vector<uint32_t> near_points(const PointTree& tree, const Proxy& p, double 
 Status hug_choice(const Mesh& mesh, const ShapeQueries& shape, const Skeleton& skeleton, const std::vector<Vec3>& points,
                   const ProxyOptions& opt, int threads, const Monitor& monitor, HugChoice& out) {
     out = HugChoice{};
+    const auto t0 = Clock::now();
     if (points.empty()) return fail(Code::degenerate_input, "proxies: no surface points");
     InsideGrid grid;
     Status st = inside_grid(mesh, shape, kGridVoxels, threads, monitor, grid);
     if (!st.ok()) return st;
+    const double t_grid = seconds_since(t0);
     const PointTree tree(points);
     const double cell = grid.step * grid.step * grid.step;
     const double price =
@@ -154,6 +157,7 @@ Status hug_choice(const Mesh& mesh, const ShapeQueries& shape, const Skeleton& s
         columns.push_back(std::move(all));
     }
 
+    const double t_candidates = seconds_since(t0);
     // ---- the weighted cover ----
     WeightedCoverProblem problem;
     problem.rows = uint32_t(points.size());
@@ -175,6 +179,9 @@ Status hug_choice(const Mesh& mesh, const ShapeQueries& shape, const Skeleton& s
     out.lower_bound = std::max(0.0, result.lower_bound - double(opt.count) * price);
     out.lower_bound = std::min(out.lower_bound, out.objective);
     out.candidates = columns.size();
+    monitor.note(0, "proxies: hug: " + std::to_string(columns.size()) + " candidates, " + std::to_string(problem.idx.size()) +
+                        " incidences; seconds: grid " + std::to_string(t_grid) + ", candidates " + std::to_string(t_candidates - t_grid) + ", cover " +
+                        std::to_string(seconds_since(t0) - t_candidates) + (result.cbc_improved ? " (CBC improved)" : ""));
     return Status::success();
 }
 

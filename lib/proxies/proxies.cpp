@@ -38,7 +38,7 @@ constexpr double kMinGain = 0.01;
 // computed to about 1e-16 of the model's size.
 constexpr double kContainMargin = 1e-9;
 // Conservative: the surface points the cover must hold (a seeded subset of the cells' corners).
-constexpr size_t kHugPoints = 3000;
+constexpr size_t kHugPoints = 2000;
 // Inscribed with boxes: boxes are fitted to groups of the choice's points down to this many.
 constexpr size_t kInscribedBoxGroup = 24;
 

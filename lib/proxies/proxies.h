@@ -171,8 +171,8 @@ Proxy fit_box(const std::vector<Vec3>& points, const std::vector<uint32_t>& indi
 // by the radius at both ends, the radius the least that holds them all (a sphere when they
 // project to one point).
 Proxy fit_capsule(const std::vector<Vec3>& points, const std::vector<uint32_t>& indices);
-// Groups of points for boxes: the nodes of a tree that halves each group across its box's longest
-// side, down to groups of min_size points.
+// Groups of points for boxes: the nodes of a tree that cuts each group in two where the two
+// children's boxes have the least total volume, down to groups of min_size points.
 std::vector<std::vector<uint32_t>> point_groups(const std::vector<Vec3>& points, size_t min_size);
 
 struct HugChoice {
