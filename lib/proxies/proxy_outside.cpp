@@ -36,11 +36,6 @@ constexpr double kBoxFinest = 0.01;
 
 }  // namespace
 
-double ShapeQueries::depth(const Vec3& x) const {
-    const double d = distance->distance(x);
-    return winding->inside(x) ? d : -d;
-}
-
 namespace {
 
 // A box: the union of its cells, each inside the ball around its centre of radius its half-
