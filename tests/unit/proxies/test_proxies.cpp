@@ -2,8 +2,8 @@
 // sphere, a capsule one capsule with its end points and radii; conservative proxies contain fresh
 // samples of the triangles (drawn here, not the library's), checked with a brute-force distance to
 // each primitive; inscribed proxies reach no farther outside the shape than the skeleton's own
-// balls and edges, measured on fresh samples of both boundaries (the library's inside test and
-// distance, themselves tested against brute force). Boxes: on an L of two planks, boxes leave far
+// balls and edges (every shapes value), measured on fresh samples of both boundaries (the
+// library's inside test and distance, themselves tested against brute force). Boxes: on an L of two planks, boxes leave far
 // less volume outside than capsules; the cover's lower bound never exceeds its objective.
 #include <doctest/doctest.h>
 
@@ -89,6 +89,19 @@ std::vector<ca::Vec3> fresh_boundary_samples(const ca::Proxy& p, size_t n, std::
     std::normal_distribution<double> g(0, 1);
     const double reach = (p.b.center - p.a.center).norm() + std::max(p.a.radius, p.b.radius) + 1e-9;
     std::vector<ca::Vec3> out;
+    if (p.kind == ca::ProxyKind::box) {  // a uniform point of a face chosen by its area
+        const double area[3] = {p.half.y() * p.half.z(), p.half.z() * p.half.x(), p.half.x() * p.half.y()};
+        for (size_t i = 0; i < n; ++i) {
+            double pick = u(rng) * (area[0] + area[1] + area[2]);
+            int a = 0;
+            while (a < 2 && pick > area[a]) pick -= area[a++];
+            ca::Vec3 q;
+            for (int k = 0; k < 3; ++k) q[k] = (2 * u(rng) - 1) * p.half[k];
+            q[a] = (u(rng) < 0.5 ? -1 : 1) * p.half[a];
+            out.push_back(p.a.center + p.axes * q);
+        }
+        return out;
+    }
     for (size_t i = 0; i < n; ++i) {
         const double t = p.kind == ca::ProxyKind::sphere ? 0 : u(rng);
         const ca::Vec3 c = p.a.center + t * (p.b.center - p.a.center);
@@ -226,7 +239,8 @@ TEST_CASE("proxies: inscribed proxies reach no farther outside than the skeleton
                 for (const ca::Vec3& x : fresh_boundary_samples(q, 200, rng)) pts.push_back(x);
             skeleton_out = farthest_outside(mesh, pts);
         }
-        for (ca::ProxyShapes shapes : {ca::ProxyShapes::spheres, ca::ProxyShapes::capsules}) {
+        for (ca::ProxyShapes shapes : {ca::ProxyShapes::spheres, ca::ProxyShapes::capsules, ca::ProxyShapes::boxes,
+                                       ca::ProxyShapes::all}) {
             CAPTURE(int(shapes));
             const ca::ProxyResult r = proxies(p, shapes, ca::ProxyMode::inscribed, 6);
             std::vector<ca::Vec3> pts;
