@@ -412,6 +412,7 @@ Outcome run_pipeline(const std::string& input, const RunOptions& o, const Output
     j["input_vertices"] = mesh.positions.size() / 3;
     j["input_triangles"] = mesh.triangles.size() / 3;
     j["input_normals"] = mesh.triangles.empty() && !mesh.normals.empty();
+    j["dropped"] = mesh.dropped;
     j["normals"] = normals_name(owned.normals);
     j["flipped"] = owned.flipped;
     j["surface_samples"] = ca_candidate_set_sample_count(owned.set);
