@@ -28,8 +28,9 @@ namespace {
 // Every index writes only its own output, so the results do not depend on the thread count.
 constexpr size_t kBatch = 4096;
 
-Status evaluate_impl(const Mesh& surface, const Skeleton& skeleton_in, const EvaluateOptions& opt,
-                     const Monitor& monitor, EvaluateResult& out) {
+// `distance`: the surface's distance query, or null (built here for a mesh).
+Status evaluate_impl(const Mesh& surface, const MeshDistance* distance, const Skeleton& skeleton_in,
+                     const EvaluateOptions& opt, const Monitor& monitor, EvaluateResult& out) {
     // ---- validation ----
     if (skeleton_in.balls.empty()) return fail(Code::invalid_argument, "evaluate: empty skeleton");
     if (surface.vertices.empty()) return fail(Code::degenerate_input, "evaluate: empty surface");
@@ -121,7 +122,9 @@ Status evaluate_impl(const Mesh& surface, const Skeleton& skeleton_in, const Eva
     // ---- h(E -> S) ----
     std::vector<double> d_es(boundary.size());
     if (!surface.triangles.empty()) {
-        const MeshDistance md(surface);
+        std::unique_ptr<const MeshDistance> own;
+        if (!distance) own = std::make_unique<const MeshDistance>(surface);
+        const MeshDistance& md = distance ? *distance : *own;
         if (!parallel_for(boundary.size(), threads, kBatch, monitor, "evaluate", 0.5, 1.0, [&](size_t b, size_t e) {
                 for (size_t i = b; i < e; ++i) d_es[i] = md.distance(boundary[i]);
             }))
@@ -166,7 +169,15 @@ Status evaluate_impl(const Mesh& surface, const Skeleton& skeleton_in, const Eva
 Status evaluate(const Mesh& surface, const Skeleton& skeleton, const EvaluateOptions& opt,
                 const Monitor& monitor, EvaluateResult& out) {
     const auto t0 = Clock::now();
-    const Status st = evaluate_impl(surface, skeleton, opt, monitor, out);
+    const Status st = evaluate_impl(surface, nullptr, skeleton, opt, monitor, out);
+    out.time_s = seconds_since(t0);
+    return st;
+}
+
+Status evaluate(const Mesh& surface, const ShapeQueries& queries, const Skeleton& skeleton,
+                const EvaluateOptions& opt, const Monitor& monitor, EvaluateResult& out) {
+    const auto t0 = Clock::now();
+    const Status st = evaluate_impl(surface, queries.distance.get(), skeleton, opt, monitor, out);
     out.time_s = seconds_since(t0);
     return st;
 }

@@ -5,6 +5,7 @@
 // to the input surface (exact point-to-triangle distances through an AABB tree).
 #pragma once
 #include "common.h"
+#include "shape_queries.h"
 #include "skeleton.h"
 
 namespace ca {
@@ -46,5 +47,9 @@ struct EvaluateResult {
 // Mesh input (triangles non-empty) or point cloud (triangles empty: distance to nearest point).
 Status evaluate(const Mesh& surface, const Skeleton& skeleton, const EvaluateOptions& opt,
                 const Monitor& monitor, EvaluateResult& out);
+// The same on a candidate set's surface (the mesh `queries` were built on, shape_queries.h): its
+// distance query is used, not built again (the searches evaluate every probe).
+Status evaluate(const Mesh& surface, const ShapeQueries& queries, const Skeleton& skeleton,
+                const EvaluateOptions& opt, const Monitor& monitor, EvaluateResult& out);
 
 }  // namespace ca

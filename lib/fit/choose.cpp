@@ -39,9 +39,9 @@ Status fit_skeleton(const CandidateSet& set, const Selection& sel, const FitOpti
     EvaluateOptions eo;
     eo.threads = opt.threads;
     EvaluateResult first_eval, second_eval;
-    st = evaluate(set.surface.mesh, sk, eo, monitor, first_eval);
+    st = evaluate(set.surface.mesh, set.queries, sk, eo, monitor, first_eval);
     if (!st.ok()) return st;
-    st = evaluate(set.surface.mesh, second, eo, monitor, second_eval);
+    st = evaluate(set.surface.mesh, set.queries, second, eo, monitor, second_eval);
     if (!st.ok()) return st;
     const double hd_first = first_eval.hd_two_sided, hd_second = second_eval.hd_two_sided;
     if (hd_second < hd_first) {

@@ -11,7 +11,7 @@ Status probe_delta(const CandidateSet& set, const SelectOptions& opt, const Conn
     if (st.ok()) st = connect_balls(set, out.selection, connect, monitor, out.skeleton);
     FitStats fit_stats;
     if (st.ok() && fit) st = fit_skeleton(set, out.selection, *fit, monitor, out.skeleton, fit_stats);
-    if (st.ok()) st = evaluate(set.surface.mesh, out.skeleton, evaluate_opt, monitor, out.evaluation);
+    if (st.ok()) st = evaluate(set.surface.mesh, set.queries, out.skeleton, evaluate_opt, monitor, out.evaluation);
     if (!st.ok()) return st;
     out.summary.delta = out.selection.delta;
     out.summary.balls = out.selection.indices.size();

@@ -25,7 +25,7 @@ Status select_target_count_hd(const CandidateSet& set, const SelectOptions& opt,
     if (opt.target_count == 0) return fail(Code::invalid_argument, "the lowest-HD search needs target_count > 0");
     if (opt.dilation != Dilation::offset)
         return fail(Code::invalid_argument, "the lowest-HD search for target_count varies delta: it needs the offset dilation");
-    if (set.surface.mesh.vertices.empty())
+    if (!set.surface.kind().has_surface())
         return fail(Code::invalid_argument,
                     "the lowest-HD search measures the skeleton against the surface: the candidate set has none (caller arrays)");
     if (tc.max_probes == 0) return fail(Code::invalid_argument, "max_probes must be at least 1");
