@@ -26,6 +26,8 @@ const Names kSolvers = {{"exact", CA_SOLVER_EXACT}, {"greedy", CA_SOLVER_GREEDY}
 const Names kEfforts = {{"fast", CA_EFFORT_FAST}, {"prove", CA_EFFORT_PROVE}};
 const Names kRoutes = {{"auto", CA_CONNECT_AUTO}, {"medial", CA_CONNECT_MEDIAL}, {"power", CA_CONNECT_POWER}};
 const Names kProxyModes = {{"inscribed", CA_PROXY_INSCRIBED}, {"conservative", CA_PROXY_CONSERVATIVE}};
+const Names kProxyShapes = {{"spheres", CA_PROXY_SHAPES_SPHERES}, {"capsules", CA_PROXY_SHAPES_CAPSULES},
+                            {"boxes", CA_PROXY_SHAPES_BOXES}, {"all", CA_PROXY_SHAPES_ALL}};
 const Names kGenerators = {{"voronoi", CA_CANDIDATES_VORONOI}, {"random", CA_CANDIDATES_RANDOM}};
 const Names kNormals = {{"given", CA_POINT_NORMALS_TRUSTED}, {"unoriented", CA_POINT_NORMALS_UNORIENTED},
                         {"estimate", CA_POINT_NORMALS_ESTIMATE}};
@@ -180,8 +182,10 @@ void add_run_options(CLI::App& app, RunOptions& o) {
     app.add_option("--preview-size", o.preview_size, "WIDTHxHEIGHT in pixels")->capture_default_str()->group(look);
 
     const std::string engine = "Engine proxies (docs/proxies.md)";
-    app.add_option("--proxies", o.proxies, "also choose spheres, or tapered capsules and spheres, for game engines from the skeleton")
-        ->check(CLI::IsMember({"spheres", "capsules"}))->group(engine);
+    app.add_option("--proxies", o.proxies,
+                   "also choose primitives for game engines from the skeleton: spheres; capsules (tapered capsules and "
+                   "spheres); boxes (oriented boxes and spheres); all (each part takes the primitive that serves it best)")
+        ->check(CLI::IsMember(keys(kProxyShapes)))->group(engine);
     app.add_option("--proxy-count", o.proxy.count, "at most K proxies")->capture_default_str()->check(at_least(1))->group(engine);
     app.add_option("--proxy-mode", o.proxy_mode, "inscribed (inside the shape) | conservative (containing the surface)")
         ->capture_default_str()->check(CLI::IsMember(keys(kProxyModes)))->group(engine);
@@ -208,10 +212,10 @@ bool finish_run_options(const CLI::App& app, RunOptions& o, std::string& error) 
     o.connect.method = value_of(kRoutes, o.connect_route);
     o.proxy.mode = value_of(kProxyModes, o.proxy_mode);
     if (o.proxies.empty() && (app.count("--proxy-count") || app.count("--proxy-mode"))) {
-        error = "--proxy-count and --proxy-mode need --proxies spheres|capsules";
+        error = "--proxy-count and --proxy-mode need --proxies spheres|capsules|boxes|all";
         return false;
     }
-    o.proxy.shapes = o.proxies == "spheres" ? CA_PROXY_SHAPES_SPHERES : CA_PROXY_SHAPES_CAPSULES;
+    if (!o.proxies.empty()) o.proxy.shapes = value_of(kProxyShapes, o.proxies);
     if (app.count("--no-fit") && (app.count("--fit") || app.count("--fit-thorough") || app.count("--fit-covered"))) {
         error = "--no-fit cannot be combined with --fit, --fit-thorough or --fit-covered";
         return false;

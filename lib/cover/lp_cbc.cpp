@@ -335,6 +335,8 @@ CbcOutcome run_cbc_unguarded(const Problem& P, size_t incumbent, const CbcSettin
     std::vector<int> rowidx(P.crow.begin(), P.crow.end());
     for (uint32_t c = 0; c <= P.C; ++c) colstart[c] = CoinBigIndex(P.cptr[c]);
     std::vector<double> val(P.crow.size(), 1.0), lb(P.C, 0.0), ub(P.C, 1.0), obj(P.C, 1.0), rlb(P.R, 1.0);
+    const bool weighted = settings.costs != nullptr;
+    if (weighted) obj = *settings.costs;
     char buf[64];
 
     std::lock_guard<std::mutex> lock(cbc_mutex());
@@ -345,6 +347,11 @@ CbcOutcome run_cbc_unguarded(const Problem& P, size_t incumbent, const CbcSettin
     Cbc_loadProblem(m, int(P.C), int(P.R), colstart.data(), rowidx.data(), val.data(), lb.data(), ub.data(),
                     obj.data(), rlb.data(), nullptr);
     for (uint32_t c = 0; c < P.C; ++c) Cbc_setInteger(m, int(c));
+    if (settings.max_columns > 0) {  // sum x <= max_columns
+        std::vector<int> all(P.C);
+        std::iota(all.begin(), all.end(), 0);
+        Cbc_addRow(m, "columns", int(P.C), all.data(), ub.data(), 'L', double(settings.max_columns));
+    }
     Cbc_setParameter(m, "log", "0");  // otherwise CBC prints to stdout
     Cbc_setParameter(m, "slog", "0");
     Cbc_setParameter(m, "timeMode", "elapsed");
@@ -357,7 +364,8 @@ CbcOutcome run_cbc_unguarded(const Problem& P, size_t incumbent, const CbcSettin
     // Objective values are integral: a cover smaller than the incumbent has value <= incumbent - 1,
     // so every node whose LP bound exceeds that is pruned (a looser cutoff such as
     // incumbent - 0.5 would keep exploring nodes with bounds in (incumbent - 1, incumbent - 0.5)).
-    std::snprintf(buf, sizeof buf, "%.4f", double(incumbent) - 1.0 + kCutoffSlack);
+    if (weighted) std::snprintf(buf, sizeof buf, "%.17g", settings.cutoff);
+    else std::snprintf(buf, sizeof buf, "%.4f", double(incumbent) - 1.0 + kCutoffSlack);
     Cbc_setParameter(m, "cutoff", buf);
     // CBC's root heuristics (feasibility pump, mini branch and bound) are costly on large
     // kernels and rarely beat a local-search incumbent.
@@ -387,7 +395,14 @@ CbcOutcome run_cbc_unguarded(const Problem& P, size_t incumbent, const CbcSettin
     if (x) {
         for (uint32_t c = 0; c < P.C; ++c)
             if (x[c] > 0.5) out.solution.push_back(c);
-        out.has_solution = covers_problem(P, out.solution) && out.solution.size() < incumbent;
+        if (weighted) {
+            double value = 0;
+            for (uint32_t c : out.solution) value += obj[c];
+            out.has_solution = covers_problem(P, out.solution) && value < settings.cutoff &&
+                               (settings.max_columns == 0 || out.solution.size() <= settings.max_columns);
+        } else {
+            out.has_solution = covers_problem(P, out.solution) && out.solution.size() < incumbent;
+        }
         if (!out.has_solution) out.solution.clear();
     }
     // CBC 2.10 reports "finished, linear relaxation infeasible or worse than the cutoff"
@@ -397,8 +412,9 @@ CbcOutcome run_cbc_unguarded(const Problem& P, size_t incumbent, const CbcSettin
     // used half its time limit or more, such a claim is trusted only with a bound at or above
     // the cutoff (a genuine one can come from preprocessing with a lower LP bound), and its
     // bound is not used.
-    const double cutoff = out.has_solution ? double(out.solution.size()) - 1.0 + kCutoffSlack
-                                           : double(incumbent) - 1.0 + kCutoffSlack;
+    const double cutoff = weighted            ? settings.cutoff
+                          : out.has_solution ? double(out.solution.size()) - 1.0 + kCutoffSlack
+                                             : double(incumbent) - 1.0 + kCutoffSlack;
     const bool near_limit = time_limit_s > 0 && std::isfinite(time_limit_s) && elapsed >= 0.5 * time_limit_s;
     const bool trusted = Cbc_secondaryStatus(m) != 1 || bp >= cutoff - 1e-9 || !near_limit;
     if (trusted && std::isfinite(bp) && bp < 1e40) out.bound = bp;

@@ -136,8 +136,16 @@ struct CbcSettings {
     // false: no strong branching and no pseudo-cost trust (CBC's "strong 0", "trust 0"), for a
     // quick search for covers rather than a proof.
     bool strong_branching = true;
+    // A weighted cover (weighted_cover.cpp): per-column costs (null: 1 each, the cardinality
+    // cover above), at most max_columns columns (0: no limit), and only solutions of cost below
+    // `cutoff` (with costs; the unit cover's cutoff comes from its incumbent).
+    const std::vector<double>* costs = nullptr;
+    size_t max_columns = 0;
+    double cutoff = 0;
 };
-// Looks for covers smaller than `incumbent` (cutoff incumbent - 1 + kCutoffSlack).
+// Looks for covers smaller than `incumbent` (cutoff incumbent - 1 + kCutoffSlack); with
+// settings.costs, for covers of at most settings.max_columns columns that cost less than
+// settings.cutoff (`incumbent` unused).
 // Exceptions from CBC other than std::bad_alloc give ok = false.
 constexpr double kCutoffSlack = 1e-3;
 CbcOutcome run_cbc(const Problem& P, size_t incumbent, const CbcSettings& settings);

@@ -1,11 +1,13 @@
 // proxies.cpp: the engine-proxy step (proxies.h, docs/proxies.md), in order:
-//  - the candidates from the skeleton, each with its outside bound, and how far the skeleton's own
-//    balls and edges are measured to reach outside; inscribed: every candidate whose bound exceeds
-//    that is shrunk by the excess, so no proxy reaches farther out than the skeleton does;
-//  - the choice on costs at surface points: inscribed, the point's distance to the primitive;
-//    conservative, how far the primitive must grow to hold the point plus how far it reaches out;
-//  - conservative: every surface cell goes to the chosen primitive that needs the least growth for
-//    its corners, and each primitive grows to hold all of its cells;
+//  - how far the skeleton's own balls and edges are measured to reach outside;
+//  - inscribed: the candidates from the skeleton (and boxes fitted to groups of surface points),
+//    each with its outside bound; every one whose bound exceeds the skeleton's reach is shrunk by
+//    the excess, so no proxy reaches farther out than the skeleton does; then the choice on costs
+//    at surface points (a point's distance to the primitive);
+//  - conservative: the candidates of least volume outside the shape that together hold the
+//    surface points, at most K (hug_choice.cpp); then every surface cell goes to the chosen
+//    primitive that needs the least growth for its three corners, and each primitive grows to
+//    hold all of its cells (exact: the primitives are convex);
 //  - the stats.
 #include "proxies.h"
 
@@ -32,18 +34,20 @@ constexpr size_t kChoicePoints = 4000;
 // primitives would buy nothing worth an engine's time.
 constexpr double kEnoughTolerance = 0.005;
 constexpr double kMinGain = 0.01;
-// Conservative: how finely the choice needs to know how far a candidate reaches outside (internal
-// units), the price it pays for it.
-constexpr double kPriceResolution = 0.005;
 // Growth added to every conservative primitive beyond its cells' need: signed distances are
 // computed to about 1e-16 of the model's size.
 constexpr double kContainMargin = 1e-9;
+// Conservative: the surface points the cover must hold (a seeded subset of the cells' corners).
+constexpr size_t kHugPoints = 2000;
+// Inscribed with boxes: boxes are fitted to groups of the choice's points down to this many.
+constexpr size_t kInscribedBoxGroup = 24;
 
 Status check_request(const Mesh& mesh, const Skeleton& skeleton, const ProxyOptions& opt) {
     if (mesh.triangles.empty())
         return fail(Code::invalid_argument, "engine proxies need a triangle mesh surface (not a point cloud or caller arrays)");
-    if (opt.shapes != ProxyShapes::spheres && opt.shapes != ProxyShapes::capsules)
-        return fail(Code::invalid_argument, "proxy shapes must be spheres (0) or capsules (1)");
+    if (opt.shapes != ProxyShapes::spheres && opt.shapes != ProxyShapes::capsules && opt.shapes != ProxyShapes::boxes &&
+        opt.shapes != ProxyShapes::all)
+        return fail(Code::invalid_argument, "proxy shapes must be spheres (0), capsules (1), boxes (2) or all (3)");
     if (opt.mode != ProxyMode::inscribed && opt.mode != ProxyMode::conservative)
         return fail(Code::invalid_argument, "proxy mode must be inscribed (0) or conservative (1)");
     if (opt.count == 0) return fail(Code::invalid_argument, "proxy count must be at least 1");
@@ -80,8 +84,7 @@ Status make_proxies(const Mesh& mesh, ShapeQueries shape, const Skeleton& skelet
     const int threads = resolve_threads(opt.threads);
     if (!monitor.report("proxies", 0.0)) return monitor.stop_status("proxies");
 
-    // ---- candidates and their outside bounds; the skeleton's own bound ----
-    std::vector<Proxy> candidates = proxy_candidates(skeleton, opt.shapes);
+    // ---- the skeleton's own reach outside ----
     std::vector<Proxy> own = proxy_candidates(Skeleton{skeleton.balls, {}, {}}, ProxyShapes::spheres);
     {
         Skeleton sk = skeleton;
@@ -89,48 +92,70 @@ Status make_proxies(const Mesh& mesh, ShapeQueries shape, const Skeleton& skelet
         for (const auto& e : sk.edges)
             own.push_back({ProxyKind::capsule, sk.balls[e[0]], sk.balls[e[1]]});
     }
-    std::vector<double> bound(candidates.size()), own_reach(own.size());
+    std::vector<double> own_reach(own.size());
     if (!parallel_for(own.size(), threads, 16, monitor, "proxies", 0.0, 0.1, [&](size_t b, size_t e) {
             for (size_t i = b; i < e; ++i) own_reach[i] = outside_measured(own[i], shape);
         }))
         return monitor.stop_status("proxies");
     const double allowed = *std::max_element(own_reach.begin(), own_reach.end());
-    // inscribed: a bound within the skeleton's reach needs no shrink, so no finer answer;
-    // conservative: the bound is the choice's price of reaching outside, kPriceResolution is fine
-    const double enough = opt.mode == ProxyMode::inscribed ? allowed : kPriceResolution;
-    if (!parallel_for(candidates.size(), threads, 16, monitor, "proxies", 0.1, 0.3, [&](size_t b, size_t e) {
-            for (size_t i = b; i < e; ++i) bound[i] = outside_bound(candidates[i], shape, enough);
-        }))
-        return monitor.stop_status("proxies");
+    const SurfaceCells cells = surface_cells(mesh, opt.surface_samples);
     const double t_bounds = seconds_since(t0);
     double radius_change = 0;
-    if (opt.mode == ProxyMode::inscribed)
+    std::vector<Proxy> proxies;
+    size_t candidate_count = 0;
+    double t_costs = t_bounds, t_choice = t_bounds;
+
+    if (opt.mode == ProxyMode::inscribed) {
+        // ---- candidates and their outside bounds; every one that reaches farther out than the
+        // skeleton is shrunk by the excess ----
+        const std::vector<uint32_t> picked = random_subset(cells.points.size(), kChoicePoints, opt.seed);
+        std::vector<Proxy> candidates = proxy_candidates(skeleton, opt.shapes);
+        if (opt.shapes == ProxyShapes::boxes || opt.shapes == ProxyShapes::all) {
+            std::vector<Vec3> pts;
+            for (uint32_t i : picked) pts.push_back(cells.points[i]);
+            for (const auto& g : point_groups(pts, kInscribedBoxGroup)) candidates.push_back(fit_box(pts, g));
+        }
+        std::vector<double> bound(candidates.size());
+        // a bound within the skeleton's reach needs no shrink, so no finer answer
+        if (!parallel_for(candidates.size(), threads, 16, monitor, "proxies", 0.1, 0.3, [&](size_t b, size_t e) {
+                for (size_t i = b; i < e; ++i) bound[i] = outside_bound(candidates[i], shape, allowed);
+            }))
+            return monitor.stop_status("proxies");
         for (size_t c = 0; c < candidates.size(); ++c)
             if (bound[c] > allowed) {
                 candidates[c] = shrunk(candidates[c], bound[c] - allowed);
                 radius_change = std::max(radius_change, bound[c] - allowed);
                 bound[c] = allowed;
             }
-
-    // ---- the choice on costs at surface points ----
-    const SurfaceCells cells = surface_cells(mesh, opt.surface_samples);
-    const std::vector<uint32_t> picked = random_subset(cells.points.size(), kChoicePoints, opt.seed);
-    const size_t np = picked.size(), nc = candidates.size();
-    std::vector<float> cost(nc * np);
-    if (!parallel_for(nc, threads, 16, monitor, "proxies", 0.3, 0.6, [&](size_t b, size_t e) {
-            for (size_t c = b; c < e; ++c)
-                for (size_t i = 0; i < np; ++i) {
-                    const double d = proxy_distance(candidates[c], cells.points[picked[i]]);
-                    cost[c * np + i] = float(opt.mode == ProxyMode::inscribed ? std::max(d, 0.0) : d + bound[c]);
-                }
-        }))
-        return monitor.stop_status("proxies");
-    const double t_costs = seconds_since(t0);
-    const std::vector<uint32_t> chosen = choose_proxies(cost, nc, np, opt.count, kEnoughTolerance, kMinGain, threads);
-    const double t_choice = seconds_since(t0);
+        // ---- the choice on costs at surface points: a point's distance to the primitive ----
+        const size_t np = picked.size(), nc = candidates.size();
+        std::vector<float> cost(nc * np);
+        if (!parallel_for(nc, threads, 16, monitor, "proxies", 0.3, 0.6, [&](size_t b, size_t e) {
+                for (size_t c = b; c < e; ++c)
+                    for (size_t i = 0; i < np; ++i)
+                        cost[c * np + i] = float(std::max(proxy_distance(candidates[c], cells.points[picked[i]]), 0.0));
+            }))
+            return monitor.stop_status("proxies");
+        t_costs = seconds_since(t0);
+        const std::vector<uint32_t> chosen = choose_proxies(cost, nc, np, opt.count, kEnoughTolerance, kMinGain, threads);
+        t_choice = seconds_since(t0);
+        for (uint32_t c : chosen) proxies.push_back(candidates[c]);
+        candidate_count = nc;
+    } else {
+        // ---- conservative: the candidates of least outside volume that hold the points ----
+        const std::vector<uint32_t> picked = random_subset(cells.points.size(), kHugPoints, opt.seed);
+        std::vector<Vec3> pts;
+        for (uint32_t i : picked) pts.push_back(cells.points[i]);
+        HugChoice hug;
+        st = hug_choice(mesh, shape, skeleton, pts, opt, threads, monitor, hug);
+        if (!st.ok()) return st;
+        t_costs = t_choice = seconds_since(t0);
+        proxies = hug.chosen;
+        candidate_count = hug.candidates;
+        out.stats.outside_objective = hug.objective;
+        out.stats.outside_lower_bound = hug.lower_bound;
+    }
     if (!monitor.report("proxies", 0.7)) return monitor.stop_status("proxies");
-    std::vector<Proxy> proxies;
-    for (uint32_t c : chosen) proxies.push_back(candidates[c]);
 
     // ---- conservative: each cell to the primitive that needs the least growth for its three
     // corners; each primitive grown by the most its cells need (convex: it then holds them) ----
@@ -141,13 +166,12 @@ Status make_proxies(const Mesh& mesh, ShapeQueries shape, const Skeleton& skelet
         if (!parallel_for(ncells, threads, 4096, monitor, "proxies", 0.7, 0.8, [&](size_t b, size_t e) {
                 for (size_t i = b; i < e; ++i) {
                     const Tri& cell = cells.cells[i];
-                    double best_key = std::numeric_limits<double>::infinity();
+                    double best = std::numeric_limits<double>::infinity();
                     for (size_t j = 0; j < k; ++j) {
                         double n = -std::numeric_limits<double>::infinity();
                         for (uint32_t v : cell) n = std::max(n, proxy_distance(proxies[j], cells.points[v]));
-                        const double key = n + bound[chosen[j]];
-                        if (key < best_key) {
-                            best_key = key;
+                        if (n < best) {
+                            best = n;
                             owner[i] = uint32_t(j);
                             need[i] = n;
                         }
@@ -172,14 +196,17 @@ Status make_proxies(const Mesh& mesh, ShapeQueries shape, const Skeleton& skelet
 
     out.proxies = proxies;
     const double t_grown = seconds_since(t0);
+    const double objective = out.stats.outside_objective, lower = out.stats.outside_lower_bound;
     st = proxy_stats(mesh, proxies, shape, opt, monitor, out.stats);
     if (!st.ok()) return st;
+    out.stats.outside_objective = objective;
+    out.stats.outside_lower_bound = lower;
     out.stats.skeleton_outside = 100 * allowed / out.stats.diagonal;
     out.stats.radius_change = 100 * radius_change / out.stats.diagonal;
-    out.stats.candidates = candidates.size();
+    out.stats.candidates = candidate_count;
     out.stats.surface_cells = cells.cells.size();
     out.stats.time_s = seconds_since(t0);
-    monitor.note(0, "proxies: " + std::to_string(candidates.size()) + " candidates, " + std::to_string(cells.cells.size()) +
+    monitor.note(0, "proxies: " + std::to_string(candidate_count) + " candidates, " + std::to_string(cells.cells.size()) +
                         " cells; seconds: bounds " + std::to_string(t_bounds) + ", costs " + std::to_string(t_costs - t_bounds) +
                         ", choice " + std::to_string(t_choice - t_costs) + ", growth " + std::to_string(t_grown - t_choice) +
                         ", stats " + std::to_string(out.stats.time_s - t_grown));

@@ -10,6 +10,11 @@
 //                         the depth of its balls' centres) and how far the skeleton does reach
 //   surface_cells.cpp     the surface cut into small triangles whose corners are the samples
 //   choose_proxies.cpp    the choice of at most K candidates at the least error (greedy, swaps)
+//   inside_grid.cpp       conservative: the shape's inside on voxels, a candidate's volume outside
+//   hug_candidates.cpp    conservative: skeleton primitives grown by offsets, boxes fitted to groups
+//                         of surface points
+//   hug_choice.cpp        conservative: the candidates of least outside volume that hold every
+//                         surface point, at most K (a weighted cover, lib/cover/weighted_cover.h)
 //   proxy_stats.cpp       the achieved errors and the volume outside the shape
 //   proxy_placement.cpp   each primitive as an engine places it (a node's translation, rotation
 //                         and shape parameters)
@@ -96,6 +101,10 @@ struct ProxyStats {
     size_t surface_cells = 0;          // triangles the surface was cut into
     double diagonal = 0;               // internal units
     double time_s = 0;
+    // conservative: the choice's objective, the sum of the chosen candidates' volumes outside the
+    // shape (on the choice's voxels; overlaps counted once per primitive), and the cover solver's
+    // lower bound on it over the same candidates (internal units cubed, like the volumes above)
+    double outside_objective = 0, outside_lower_bound = 0;
 };
 
 struct ProxyResult {
@@ -143,6 +152,52 @@ Proxy shrunk(const Proxy& p, double by);
 // Deterministic: ties go to the lower index.
 std::vector<uint32_t> choose_proxies(const std::vector<float>& cost, size_t candidates, size_t points,
                                      size_t count, double tolerance, double min_gain, int threads);
+
+// ---- conservative: the choice that hugs the shape ----
+
+// The shape's inside at voxel centres origin + (i + 1/2, j + 1/2, k + 1/2) step over the mesh's
+// box (inside_grid.cpp), about `voxels` of them; beyond the lattice is outside.
+struct InsideGrid {
+    Vec3 origin = Vec3::Zero();
+    double step = 1;
+    long n[3] = {0, 0, 0};
+    std::vector<uint8_t> inside;  // x fastest
+    Vec3 center(long i, long j, long k) const {
+        return origin + step * Vec3(double(i) + 0.5, double(j) + 0.5, double(k) + 0.5);
+    }
+    bool inside_at(long i, long j, long k) const;
+};
+Status inside_grid(const Mesh& mesh, const ShapeQueries& shape, size_t voxels, int threads, const Monitor& monitor,
+                   InsideGrid& out);
+// The primitive's axis-aligned bounding box (lower, upper corner).
+std::pair<Vec3, Vec3> proxy_box(const Proxy& p);
+// For each offset (ascending, >= 0): the volume of the voxels outside the shape whose centre lies
+// within that distance of p (in p grown by it).
+std::vector<double> outside_volumes(const Proxy& p, const std::vector<double>& offsets, const InsideGrid& grid);
+
+// The candidates (hug_candidates.cpp): the offsets every skeleton primitive is grown by, and
+// boxes fitted to groups of the points.
+const std::vector<double>& hug_offsets();
+// A tight box around points[indices]: in the frame of their principal axes or in the axes' own
+// frame, whichever box is smaller.
+Proxy fit_box(const std::vector<Vec3>& points, const std::vector<uint32_t>& indices);
+// A capsule of equal radii around points[indices]: along their principal axis, the segment inset
+// by the radius at both ends, the radius the least that holds them all (a sphere when they
+// project to one point).
+Proxy fit_capsule(const std::vector<Vec3>& points, const std::vector<uint32_t>& indices);
+// Groups of points for boxes: the nodes of a tree that cuts each group in two where the two
+// children's boxes have the least total volume, down to groups of min_size points.
+std::vector<std::vector<uint32_t>> point_groups(const std::vector<Vec3>& points, size_t min_size);
+
+struct HugChoice {
+    std::vector<Proxy> chosen;          // grown by their offsets
+    double objective = 0, lower_bound = 0;
+    size_t candidates = 0;
+};
+// At most opt.count candidates that together hold every one of `points`, of least total volume
+// outside the shape (hug_choice.cpp).
+Status hug_choice(const Mesh& mesh, const ShapeQueries& shape, const Skeleton& skeleton, const std::vector<Vec3>& points,
+                  const ProxyOptions& opt, int threads, const Monitor& monitor, HugChoice& out);
 
 // The stats (proxy_stats.cpp) of `proxies` against the mesh.
 Status proxy_stats(const Mesh& mesh, const std::vector<Proxy>& proxies, const ShapeQueries& shape,

@@ -1,7 +1,8 @@
 // proxy_candidates.cpp: the primitives the choice picks from. A sphere per skeleton ball; with
 // capsules also the medial cone of every edge, and capsules that span a chain: between each ball
 // and the balls it reaches along edges, nearest first (hops), a bounded number per ball, so a
-// straight limb of many balls can become one capsule. Also the primitive's signed distance.
+// straight limb of many balls can become one capsule (shapes capsules or all; boxes are fitted to
+// surface points, hug_candidates.cpp). Also the primitive's signed distance.
 #include "proxies.h"
 #include "evaluate.h"
 
@@ -63,7 +64,7 @@ std::vector<Proxy> proxy_candidates(const Skeleton& skeleton_in, ProxyShapes sha
     const size_t n = sk.balls.size();
     std::vector<Proxy> out;
     for (const Ball& b : sk.balls) out.push_back({ProxyKind::sphere, b, b});
-    if (shapes == ProxyShapes::spheres) return out;
+    if (shapes == ProxyShapes::spheres || shapes == ProxyShapes::boxes) return out;  // boxes: fitted elsewhere
 
     std::vector<std::vector<uint32_t>> adjacent(n);
     for (const auto& e : sk.edges) {

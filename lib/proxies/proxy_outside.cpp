@@ -5,8 +5,10 @@
 // r(t) - D(c(t)) changes with t by at most |c2 - c1| + |r2 - r1| per unit (D is 1-Lipschitz), so
 // between two samples it is at most their mean plus half the step times that slope; the segment is
 // sampled coarsely and halved where that could still exceed 0 and the largest sample.
-// The other way round, any point of a primitive shows how far it reaches at least: points on the
-// interpolated spheres give a measured excess that the true one is never below.
+// A box is the union of small cells, each inside the ball around its centre (same rule, refined
+// where needed). The other way round, any point of a primitive shows how far it reaches at least:
+// points on the interpolated spheres (a box: on its faces) give a measured excess that the true
+// one is never below.
 #include "proxies.h"
 
 #include "distance.h"
@@ -29,11 +31,53 @@ constexpr double kSegmentStep = 0.004;
 // apart along the segment.
 constexpr int kMeasureDirections = 64;
 constexpr double kMeasureStep = 0.02;
+// A box's bound: its finest cells' half-diagonal (internal units).
+constexpr double kBoxFinest = 0.01;
+
+}  // namespace
+
+namespace {
+
+// A box: the union of its cells, each inside the ball around its centre of radius its half-
+// diagonal, which reaches outside by at most that radius minus the centre's depth. Cells of about
+// kCoarseStep first, halved (all three sides) while their bound could exceed `enough`, 0 and the
+// largest measured excess (a cell centre's distance outside) plus the finest cell's slack, down to
+// half-diagonals of kBoxFinest.
+double box_outside_bound(const Proxy& p, const ShapeQueries& shape, double enough) {
+    struct Cell { Vec3 c; Vec3 h; };  // in the box's frame
+    std::vector<Cell> stack;
+    int n[3];
+    for (int a = 0; a < 3; ++a) n[a] = std::max(1, int(std::ceil(2 * p.half[a] / kCoarseStep)));
+    for (int i = n[0]; i-- > 0;)
+        for (int j = n[1]; j-- > 0;)
+            for (int k = n[2]; k-- > 0;) {
+                const Vec3 h(p.half.x() / n[0], p.half.y() / n[1], p.half.z() / n[2]);
+                const Vec3 c(-p.half.x() + (2 * i + 1) * h.x(), -p.half.y() + (2 * j + 1) * h.y(), -p.half.z() + (2 * k + 1) * h.z());
+                stack.push_back({c, h});
+            }
+    double best = -std::numeric_limits<double>::infinity(), bound = 0;
+    while (!stack.empty()) {
+        const Cell cell = stack.back();
+        stack.pop_back();
+        const double depth = shape.depth(p.a.center + p.axes * cell.c);
+        best = std::max(best, -depth);
+        const double r = cell.h.norm(), upper = r - depth;
+        if (upper <= std::max({0.0, enough, best + kBoxFinest}) || r <= kBoxFinest) {
+            bound = std::max(bound, upper);
+            continue;
+        }
+        const Vec3 h = 0.5 * cell.h;
+        for (int q = 7; q >= 0; --q)
+            stack.push_back({cell.c + Vec3(q & 1 ? h.x() : -h.x(), q & 2 ? h.y() : -h.y(), q & 4 ? h.z() : -h.z()), h});
+    }
+    return std::max(0.0, bound);
+}
 
 }  // namespace
 
 double outside_bound(const Proxy& p, const ShapeQueries& shape, double enough) {
     if (p.kind == ProxyKind::sphere) return std::max(0.0, p.a.radius - shape.depth(p.a.center));
+    if (p.kind == ProxyKind::box) return box_outside_bound(p, shape, enough);
     const Vec3 e = p.b.center - p.a.center;
     const double length = e.norm(), dr = p.b.radius - p.a.radius;
     auto g = [&](double t) { return p.a.radius + t * dr - shape.depth(p.a.center + t * e); };
@@ -76,6 +120,26 @@ double outside_bound(const Proxy& p, const ShapeQueries& shape, double enough) {
 }
 
 double outside_measured(const Proxy& p, const ShapeQueries& shape) {
+    if (p.kind == ProxyKind::box) {
+        // points on its six faces, a grid kMeasureStep apart (at least the corners and centres)
+        double worst = 0;
+        for (int a = 0; a < 3; ++a)
+            for (int side = -1; side <= 1; side += 2) {
+                const int u = (a + 1) % 3, v = (a + 2) % 3;
+                const int nu = std::max(1, int(std::ceil(2 * p.half[u] / kMeasureStep)));
+                const int nv = std::max(1, int(std::ceil(2 * p.half[v] / kMeasureStep)));
+                for (int i = 0; i <= nu; ++i)
+                    for (int j = 0; j <= nv; ++j) {
+                        Vec3 q = Vec3::Zero();
+                        q[a] = side * p.half[a];
+                        q[u] = -p.half[u] + 2 * p.half[u] * i / nu;
+                        q[v] = -p.half[v] + 2 * p.half[v] * j / nv;
+                        const Vec3 x = p.a.center + p.axes * q;
+                        if (!shape.winding->inside(x)) worst = std::max(worst, shape.distance->distance(x));
+                    }
+            }
+        return worst;
+    }
     const Vec3 e = p.b.center - p.a.center;
     const double length = p.kind == ProxyKind::sphere ? 0 : e.norm(), dr = p.b.radius - p.a.radius;
     const size_t steps = std::max<size_t>(1, size_t(std::ceil(length / kMeasureStep)));

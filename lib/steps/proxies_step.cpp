@@ -24,11 +24,13 @@ Status proxies_step(const CandidateSet& set, const Skeleton& skeleton, const Pro
             b->center = n.to_user(b->center);
             b->radius *= n.scale;
         }
-        p.half *= n.scale;   // a box: the frame is a translation and a uniform scale, its axes stay
+        p.half *= n.scale;  // boxes; the axes are directions
     }
     out.stats.diagonal *= n.scale;
     out.stats.union_volume *= n.scale * n.scale * n.scale;
     out.stats.outside_volume *= n.scale * n.scale * n.scale;
+    out.stats.outside_objective *= n.scale * n.scale * n.scale;
+    out.stats.outside_lower_bound *= n.scale * n.scale * n.scale;
     return Status::success();
 }
 
