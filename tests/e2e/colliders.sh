@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # colliders.sh: end-to-end tests of --colliders, the proxies as glTF physics (docs/proxies.md):
-# conservative proxies of a sphere, a tapered capsule (meshes made here), the fox and a desk, and a
-# rotated box written from a given box primitive (collider_check write), each
+# conservative proxies of a sphere, a tapered capsule (meshes made here), the fox and a desk
+# (capsules), a rotated box (--proxies all), and the same box written from a given box primitive
+# (collider_check write), each
 #  - passes the Khronos glTF validator with 0 errors (npm gltf-validator);
 #  - reads back through @gltf-transform/core with small extension classes (read_colliders.mjs):
 #    one collider per proxy of --proxies-json, its type, parameters and world placement;
@@ -94,8 +95,8 @@ json.dump({"proxies": [{"kind": "box", "center": centre, "rotation": q, "half_ex
 EOF
 check "the test meshes are written" test -s "$tmp/tapered.obj" -a -s "$tmp/box.json"
 
-colliders() {  # colliders NAME MESH: conservative capsules as NAME.glb and NAME.json
-  "$tool" "$2" -o "$tmp/$1.ma" --proxies capsules --proxy-mode conservative --colliders "$tmp/$1.glb" \
+colliders() {  # colliders NAME MESH [SHAPES]: conservative proxies (capsules) as NAME.glb and NAME.json
+  "$tool" "$2" -o "$tmp/$1.ma" --proxies "${3:-capsules}" --proxy-mode conservative --colliders "$tmp/$1.glb" \
     --proxies-json "$tmp/$1.json" --json > "$tmp/$1.report.json"
 }
 for m in sphere tapered; do
@@ -107,16 +108,19 @@ check "--colliders on the fox exits 0" test $? -eq 0
 check "the report names the colliders file" py "j['outputs']['colliders'].endswith('fox.glb')" "$tmp/fox.report.json"
 colliders desk "$data/desk_table.obj"
 check "--colliders on the desk exits 0" test $? -eq 0
+colliders boxes "$tmp/box.obj" all
+check "--colliders with --proxies all on the rotated box exits 0" test $? -eq 0
+check "... and holds a box" py "any(p['kind'] == 'box' for p in j['proxies'])" "$tmp/boxes.json"
 "$driver" write "$tmp/box.glb" "$tmp/box.obj" "$tmp/box.json"
 check "a colliders file from a given rotated box is written" test $? -eq 0
 check "the tapered capsule's proxies hold a tapered capsule" \
   py "any(p['kind'] == 'capsule' and abs(p['radius_a'] - p['radius_b']) > 0.5 for p in j['proxies'])" "$tmp/tapered.json"
 
 files=()
-for m in sphere tapered box fox desk; do files+=("$tmp/$m.glb"); done
+for m in sphere tapered box boxes fox desk; do files+=("$tmp/$m.glb"); done
 check "the colliders files pass the glTF validator with 0 errors" \
   env NODE_PATH="$modules" node "$here/validate_gltf.js" "${files[@]}"
-for m in sphere tapered box fox desk; do
+for m in sphere tapered box boxes fox desk; do
   check "gltf-transform reads the $m's colliders back as its proxies" \
     node "$here/read_colliders.mjs" "$modules" "$tmp/$m.glb" "$tmp/$m.json"
   check "Jolt loads the $m's colliders: rays agree with the library, the surface is inside" \
