@@ -7,6 +7,8 @@
 #include "common.h"
 #include "skeleton.h"
 
+#include <memory>
+
 namespace ca {
 
 // The sphere of a primitive's simplex that attains its distance at p: its barycentric weights on
@@ -46,5 +48,19 @@ struct EvaluateResult {
 // Mesh input (triangles non-empty) or point cloud (triangles empty: distance to nearest point).
 Status evaluate(const Mesh& surface, const Skeleton& skeleton, const EvaluateOptions& opt,
                 const Monitor& monitor, EvaluateResult& out);
+
+// What evaluate() draws from the surface alone (its samples at opt.surface_samples and opt.seed,
+// the distance structure, the diagonal), built once to measure many skeletons against one
+// surface: the delta searches (lib/search) and the thorough fit measure one skeleton per probe.
+struct EvaluationSurface;
+Status prepare_evaluation(const Mesh& surface, const EvaluateOptions& opt, std::shared_ptr<const EvaluationSurface>& out);
+
+// evaluate() on a prepared surface (opt's surface_samples and seed must be those it was prepared
+// with). hd_only: only hd_two_sided (and the one-sided maxima) are computed; the means are left 0.
+// A sample that cannot raise the maximum found so far is skipped (a bound shows it: the distance
+// to the nearest surface sample, an early exit of the envelope's distance), so the maxima are
+// those evaluate() gives, at a fraction of its time.
+Status evaluate(const EvaluationSurface& surface, const Skeleton& skeleton, const EvaluateOptions& opt,
+                const Monitor& monitor, EvaluateResult& out, bool hd_only = false);
 
 }  // namespace ca

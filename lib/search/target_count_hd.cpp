@@ -31,10 +31,13 @@ Status select_target_count_hd(const CandidateSet& set, const SelectOptions& opt,
     if (tc.max_probes == 0) return fail(Code::invalid_argument, "max_probes must be at least 1");
     if (!(std::isfinite(tc.step) && tc.step > 0)) return fail(Code::invalid_argument, "step must be a finite number > 0");
 
+    std::shared_ptr<const EvaluationSurface> surface;
+    Status st = prepare_evaluation(set.surface.mesh, tc.evaluate, surface);
+    if (!st.ok()) return st;
     const size_t K = opt.target_count;
     // the target size: its errors (no cover with K balls, bad options) are the search's
     DeltaProbe best;
-    Status st = probe_delta(set, opt, tc.connect, tc.fit, tc.evaluate, monitor, best);
+    st = probe_delta(set, opt, tc.connect, tc.fit, tc.evaluate, *surface, monitor, best);
     if (!st.ok()) return st;
     best.summary.passed = true;  // select_balls returns a fitting cover only
     out.probes.push_back(best.summary);
@@ -47,7 +50,7 @@ Status select_target_count_hd(const CandidateSet& set, const SelectOptions& opt,
     for (uint32_t i = 1; i < tc.max_probes; ++i) {
         probe_opt.delta = d0 + unit * i;
         DeltaProbe p;
-        st = probe_delta(set, probe_opt, tc.connect, tc.fit, tc.evaluate, monitor, p);
+        st = probe_delta(set, probe_opt, tc.connect, tc.fit, tc.evaluate, *surface, monitor, p);
         ++solves;
         if (st.code == Code::uncoverable) continue;  // cannot happen above a delta with a cover; harmless
         if (st.code == Code::time_limit) break;      // the best so far stands

@@ -27,11 +27,14 @@ Status select_target_error(const CandidateSet& set, const SelectOptions& opt, co
                     "target_error measures the skeleton against the surface: the candidate set has none (caller arrays)");
     if (te.max_probes == 0) return fail(Code::invalid_argument, "max_probes must be at least 1");
 
+    std::shared_ptr<const EvaluationSurface> surface;
+    Status prepared = prepare_evaluation(set.surface.mesh, te.evaluate, surface);
+    if (!prepared.ok()) return prepared;
     SelectOptions probe_opt = opt;
     DeltaProbe last, best;
     auto probe = [&](double d, TargetErrorProbe& summary) {
         probe_opt.delta = d;
-        const Status st = probe_delta(set, probe_opt, te.connect, te.fit, te.evaluate, monitor, last);
+        const Status st = probe_delta(set, probe_opt, te.connect, te.fit, te.evaluate, *surface, monitor, last);
         summary = last.summary;
         return st;
     };
