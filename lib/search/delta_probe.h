@@ -18,6 +18,7 @@ struct TargetErrorProbe {
     size_t balls = 0;
     double hd = 0;                // two-sided HD, percent of the diagonal
     bool passed = false;          // target_error: hd <= E; target_count: balls <= K
+    bool exact = true;            // target_count: false when hd is the coarse measurement only
 };
 
 // One probe with everything it produced (kept by a search while it is the best so far).
