@@ -33,12 +33,6 @@ struct StageLog {
     }
 };
 
-// CPU seconds of the whole process (user + system, all threads).
-double cpu_seconds() {
-    rusage u{};
-    getrusage(RUSAGE_SELF, &u);
-    return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-}
 
 struct Run {
     ca_status status = CA_OK;
@@ -96,6 +90,7 @@ int main(int argc, char** argv) {
     if (ca_context_create(nullptr, &ctx) != CA_OK) return 1;
     const Run full = pipeline(ctx, v, finished);
     std::printf("uncancelled ca_candidates + ca_select: %.2f s (status %d)\n\n", full.seconds, int(full.status));
+    std::printf("%s\n\n", bench::kCpuClock);
     std::printf("| cancel at s | returned after s | latency s | CPU s after the request | status |\n|---|---|---|---|---|\n");
     double worst = 0, worst_cpu = 0;
     // requests every 4 % of the uncancelled run, so that no stage of more than about 0.1 s is missed
@@ -107,10 +102,10 @@ int main(int argc, char** argv) {
         std::thread worker([&] { r = pipeline(ctx, v, finished); });
         const auto t0 = std::chrono::steady_clock::now();
         while (!finished && bench::seconds_since(t0) < at) std::this_thread::sleep_for(std::chrono::milliseconds(1));
-        const double requested = bench::seconds_since(t0), cpu_at_request = cpu_seconds();
+        const double requested = bench::seconds_since(t0), cpu_at_request = bench::cpu_seconds();
         ca_context_request_cancel(ctx);
         worker.join();
-        const double latency = r.seconds - requested, cpu_after = cpu_seconds() - cpu_at_request;
+        const double latency = r.seconds - requested, cpu_after = bench::cpu_seconds() - cpu_at_request;
         if (r.status == CA_ERROR_CANCELLED) worst = std::max(worst, latency), worst_cpu = std::max(worst_cpu, cpu_after);
         std::printf("| %.2f | %.2f | %.3f | %.3f | %s |\n", requested, r.seconds, latency, cpu_after,
                     ca_status_string(r.status));

@@ -3,6 +3,7 @@
 #pragma once
 #include "coverage_axis.h"
 #include "mesh_io.h"
+#include "surface_view.h"
 
 #include <algorithm>
 #include <chrono>
@@ -61,7 +62,10 @@ inline double seconds_since(std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
-// CPU time of the whole process so far (user + system, every thread), seconds.
+// The one clock of every bench's CPU times, as the benches print it above their tables.
+constexpr const char* kCpuClock = "CPU time: getrusage(RUSAGE_SELF), user + system of every thread";
+
+// CPU time of the whole process so far (user + system, every thread), seconds (kCpuClock).
 inline double cpu_seconds() {
     rusage u{};
     getrusage(RUSAGE_SELF, &u);
@@ -143,18 +147,9 @@ inline ca_surface_view view_of(const std::vector<double>& xyz, const std::vector
     return v;
 }
 
-// A view of a mesh or point cloud read by examples/io (borrowed: valid while `mesh` lives).
-inline ca_surface_view surface_view(const caio::MeshData& mesh) {
-    ca_surface_view v;
-    ca_surface_view_init(&v);
-    v.positions = mesh.positions.data();
-    v.vertex_count = mesh.positions.size() / 3;
-    v.triangles = mesh.triangles.data();
-    v.triangle_count = mesh.triangles.size() / 3;
-    v.normals = mesh.normals.empty() ? nullptr : mesh.normals.data();
-    v.normal_count = mesh.normals.size() / 3;
-    return v;
-}
+// A view of a mesh or point cloud read by examples/io, and the name of its normals (surface_view.h).
+using caio::normals_name;
+using caio::surface_view;
 
 // The pipeline in a context of its own with `threads` worker threads (0: all cores).
 inline PipelineRun run_pipeline(const caio::MeshData& mesh, const ca_candidate_options& co, const ca_select_options& so,

@@ -18,11 +18,9 @@
 
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 
 namespace {
 
-double cpu_seconds() { return double(std::clock()) / CLOCKS_PER_SEC; }
 
 double gaussian(ca::Rng& rng) {
     const double u = 1.0 - rng.uniform(), v = rng.uniform();
@@ -61,9 +59,9 @@ void run_cloud(const std::string& name, const shapes::Cloud& c) {
         ca::Mesh m;
         m.vertices = pts;
         ca::Surface s;
-        const double t = cpu_seconds();
+        const double t = bench::cpu_seconds();
         const ca::Status st = ca::prepare_surface(m, nrm, s, true, trust);
-        const double cpu = cpu_seconds() - t;
+        const double cpu = bench::cpu_seconds() - t;
         if (!st.ok()) {
             std::printf("| %s | %c | refused: %s | | | %.2f |\n", name.c_str(), key, st.message.c_str(), cpu);
             continue;
@@ -81,6 +79,7 @@ void run_cloud(const std::string& name, const shapes::Cloud& c) {
 int main(int argc, char** argv) {
     std::string root, only;
     bench::root_and_only(argc, argv, root, only);
+    std::printf("%s\n\n", bench::kCpuClock);
     std::printf("| cloud | variant | status | normals used | wrong | cpu s |\n|---|---|---|---|---|---|\n");
     std::vector<std::string> files = {std::string(CA_TEST_DATA) + "/fish_points.xyz"};
     for (const std::string& f : bench::list_files(root + "/pointclouds", ".xyz")) files.push_back(f);

@@ -161,23 +161,15 @@ std::string status_name(ca_status st) {
     return s.substr(0, s.find(':'));
 }
 
-const char* normals_name(int32_t n) {
-    switch (n) {
-        case CA_NORMALS_GIVEN: return "given";
-        case CA_NORMALS_ORIENTED: return "oriented";
-        case CA_NORMALS_ESTIMATED: return "estimated";
-        default: return "-";
-    }
-}
 
 void print_row(const std::string& name, const char* variant, const CloudRun& r) {
     const std::string ok = r.status == CA_OK ? "yes" : "no: " + status_name(r.status);
     if (r.evaluated)
         std::printf("| %s | %s | %s | %s | %zu | %zu | %.3f | %.3f | %.3f | %.2f | %.2f |\n", name.c_str(), variant, ok.c_str(),
-                    normals_name(r.normals), r.balls, r.uncovered, r.eval.hd_surface_to_recon, r.eval.hd_recon_to_surface,
+                    bench::normals_name(r.normals), r.balls, r.uncovered, r.eval.hd_surface_to_recon, r.eval.hd_recon_to_surface,
                     r.eval.hd_two_sided, r.seconds, r.cpu_seconds);
     else
-        std::printf("| %s | %s | %s | %s | %zu | %zu | | | | %.2f | %.2f |\n", name.c_str(), variant, ok.c_str(), normals_name(r.normals),
+        std::printf("| %s | %s | %s | %s | %zu | %zu | | | | %.2f | %.2f |\n", name.c_str(), variant, ok.c_str(), bench::normals_name(r.normals),
                     r.balls, r.uncovered, r.seconds, r.cpu_seconds);
     std::fflush(stdout);
 }
@@ -339,11 +331,11 @@ int main(int argc, char** argv) {
                 const std::string ok = r.status == CA_OK ? "yes" : "no: " + status_name(r.status);
                 if (r.evaluated)
                     std::printf("| %s | %s | %s | %s | %zu | %zu | %.3f | %.3f | %.3f | %.2f |\n", name.c_str(), variant, ok.c_str(),
-                                normals_name(r.normals), r.balls, r.uncovered, r.eval.hd_surface_to_recon,
+                                bench::normals_name(r.normals), r.balls, r.uncovered, r.eval.hd_surface_to_recon,
                                 r.eval.hd_recon_to_surface, r.eval.hd_two_sided, r.seconds);
                 else
                     std::printf("| %s | %s | %s | %s | %zu | %zu | | | | %.2f |\n", name.c_str(), variant, ok.c_str(),
-                                normals_name(r.normals), r.balls, r.uncovered, r.seconds);
+                                bench::normals_name(r.normals), r.balls, r.uncovered, r.seconds);
                 std::fflush(stdout);
             }
         }

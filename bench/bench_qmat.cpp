@@ -13,6 +13,7 @@
 #include "bench_common.h"
 #include "evaluate.h"
 #include "support/mesh_convert.h"
+#include "support/shapes.h"
 
 #include <Eigen/Geometry>
 
@@ -20,8 +21,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
-#include <map>
 #include <string>
 #include <sys/stat.h>
 
@@ -47,30 +46,7 @@ ca::Skeleton to_skeleton(const caio::SkeletonData& s) {
 // An ellipsoid with semi-axes (2, 1, 0.5) as a subdivided icosahedron (20 * 4^5 = 20480
 // triangles) and a 100-ball strip skeleton inside it (2 rows of 50 balls, 98 slabs).
 void synthetic(ca::Mesh& mesh, ca::Skeleton& sk) {
-    const double g = (1 + std::sqrt(5.0)) / 2;
-    mesh.vertices = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
-                     {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
-    mesh.triangles = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9},
-                      {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2},
-                      {3, 2, 6}, {3, 6, 8}, {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10},
-                      {8, 6, 7}, {9, 8, 1}};
-    for (auto& v : mesh.vertices) v.normalize();
-    for (int level = 0; level < 5; ++level) {
-        std::map<std::pair<uint32_t, uint32_t>, uint32_t> mid;
-        auto midpoint = [&](uint32_t a, uint32_t b) {
-            const auto key = std::make_pair(std::min(a, b), std::max(a, b));
-            const auto it = mid.find(key);
-            if (it != mid.end()) return it->second;
-            mesh.vertices.push_back((mesh.vertices[a] + mesh.vertices[b]).normalized());
-            return mid[key] = uint32_t(mesh.vertices.size() - 1);
-        };
-        std::vector<ca::Tri> tris;
-        for (const ca::Tri& t : mesh.triangles) {
-            const uint32_t a = midpoint(t[0], t[1]), b = midpoint(t[1], t[2]), c = midpoint(t[2], t[0]);
-            tris.insert(tris.end(), {{t[0], a, c}, {t[1], b, a}, {t[2], c, b}, {a, b, c}});
-        }
-        mesh.triangles = std::move(tris);
-    }
+    mesh = shapes::icosphere(1.0, 5);
     for (auto& v : mesh.vertices) v = ca::Vec3(2 * v.x(), v.y(), 0.5 * v.z());
     for (int row = 0; row < 2; ++row)
         for (int i = 0; i < 50; ++i) {
@@ -93,7 +69,6 @@ struct Model {
 
 }  // namespace
 
-double cpu_seconds() { return double(std::clock()) / CLOCKS_PER_SEC; }
 
 // --target-count at 8 counts from half to twice Q-MAT's |V| (geometric steps) on one candidate set
 // per model: the balls, the HD of the skeleton ca_connect gives at its defaults (fitted thoroughly:
@@ -174,19 +149,19 @@ void timing_row() {
     ca::Skeleton sk;
     synthetic(mesh, sk);
     ca::EvaluateResult r;
-    const double c0 = cpu_seconds();
+    const double c0 = bench::cpu_seconds();
     const auto t0 = std::chrono::steady_clock::now();
     const ca::Status st = ca::evaluate(mesh, sk, ca::EvaluateOptions{}, ca::Monitor{}, r);
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const double cpu = cpu_seconds() - c0;
+    const double cpu = bench::cpu_seconds() - c0;
     if (!st.ok()) {
         std::printf("timing: error: %s\n", st.message.c_str());
         return;
     }
     std::printf("timing: %zu balls vs %zu triangles: %.2f s wall, %.2f s CPU "
-                "(S->E %.3f %%, E->S %.3f %%)\n",
+                "(S->E %.3f %%, E->S %.3f %%; %s)\n",
                 sk.balls.size(), mesh.triangles.size(), secs, cpu, r.hd_surface_to_recon,
-                r.hd_recon_to_surface);
+                r.hd_recon_to_surface, bench::kCpuClock);
 }
 
 int main(int argc, char** argv) {

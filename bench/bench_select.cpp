@@ -14,7 +14,6 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <ctime>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -22,7 +21,6 @@ namespace {
 
 double g_time_limit = 5.0;
 
-double cpu_seconds() { return double(std::clock()) / CLOCKS_PER_SEC; }
 
 // One instance: exact with the fast effort (the default) and with the prove effort (under the
 // time limit), greedy, capp on the same candidates; prints one table row.
@@ -38,10 +36,10 @@ void run_instance(const std::string& name, const ca::CandidateSet& set, double d
     const double fast_wall = bench::seconds_since(tf);
     const double fast_peak = bench::peak_rss_mb();  // candidates and the fast selection only
     o.cover.effort = ca::Effort::prove;
-    const double c0 = cpu_seconds();
+    const double c0 = bench::cpu_seconds();
     const auto t0 = std::chrono::steady_clock::now();
     ca::Status st = ca::select_balls(set, o, ca::Monitor{}, ex);
-    const double wall = bench::seconds_since(t0), cpu = cpu_seconds() - c0;
+    const double wall = bench::seconds_since(t0), cpu = bench::cpu_seconds() - c0;
     if (!st.ok()) {
         std::printf("| %s | %zu x %zu | failed: %s |\n", name.c_str(), set.cover_samples.size(), set.balls.size(), st.message.c_str());
         return;
@@ -105,7 +103,7 @@ int main(int argc, char** argv) {
         std::printf("bench_select: no models under %s/meshes/paper, skipped\n", root.c_str());
         return 0;
     }
-    std::printf("\n## Selection engine (exact time limit %.1f s; times in s; peak MB per instance incl. candidates)\n\n", g_time_limit);
+    std::printf("\n## Selection engine (exact time limit %.1f s; times in s; peak MB per instance incl. candidates)\n\n%s\n\n", g_time_limit, bench::kCpuClock);
     std::printf("| instance | rows x cols | kernel | comps/parts | fast | optimal | gap %% | wall s | prove | optimal | "
                 "greedy | capp | bound | gap %% | how | coverage | reduce | solve | wall / cpu | fast peak MB | peak MB |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");

@@ -86,7 +86,7 @@ const double* ca_candidate_set_samples(const ca_candidate_set* s) { return s ? s
 double ca_candidate_set_reference_length(const ca_candidate_set* s) { return s ? s->core.surface.norm.scale : 0; }
 int32_t ca_candidate_set_flipped(const ca_candidate_set* s) { return s && s->core.surface.flipped ? 1 : 0; }
 int32_t ca_candidate_set_normals(const ca_candidate_set* s) { return s ? int32_t(s->core.surface.normals_source) : 0; }
-uint64_t ca_candidate_set_outlier_count(const ca_candidate_set* s) { return s ? uint64_t(s->core.outliers) : 0; }
+uint64_t ca_candidate_set_outlier_count(const ca_candidate_set* s) { return s ? uint64_t(s->core.report.outliers) : 0; }
 uint64_t ca_candidate_set_normals_replaced(const ca_candidate_set* s) {
     return s ? uint64_t(s->core.surface.normals_replaced) : 0;
 }

@@ -66,7 +66,7 @@ extern "C" {
 
 /* ---- versions ------------------------------------------------------------------------------ */
 #define CA_VERSION_MAJOR 0
-#define CA_VERSION_MINOR 1
+#define CA_VERSION_MINOR 2
 #define CA_VERSION_PATCH 0
 #define CA_VERSION_NUMBER (CA_VERSION_MAJOR * 10000 + CA_VERSION_MINOR * 100 + CA_VERSION_PATCH)
 /* ABI 2: structs grow by appending (see struct_size above); *_init became static inline over
@@ -75,6 +75,9 @@ extern "C" {
    (surface balls), and every array the library reads has a count (ca_surface_view.normal_count,
    the ca_select_options mask counts). */
 #define CA_ABI_VERSION 3
+/* The shared library's SOVERSION: raised only by a release that breaks existing callers; a new
+   CA_ABI_VERSION that only appends keeps it (docs/abi.md, "Versions and releases"). */
+#define CA_SOVERSION 3
 
 CA_API uint32_t ca_version(void);     /* CA_VERSION_NUMBER of the linked library */
 CA_API uint32_t ca_abi_version(void); /* CA_ABI_VERSION of the linked library */
@@ -608,8 +611,8 @@ typedef struct ca_proxy_options {
     uint32_t count;              /* at most this many primitives (>= 1; fewer when more would not lower
                                     the error); default 16 */
     uint32_t surface_samples;    /* about this many corners of the surface cells; default 20000 */
-    uint32_t evaluate_samples;   /* stats: surface and proxy-boundary samples each; default 30000 */
-    uint32_t volume_samples;     /* stats: Monte Carlo points for the volumes; default 200000 */
+    uint32_t evaluate_samples;   /* stats: surface and proxy-boundary samples each; default 20000 */
+    uint32_t volume_samples;     /* stats: Monte Carlo points for the volumes; default 100000 */
     uint64_t seed;               /* default 1; the same seed gives the same proxies */
 } ca_proxy_options;
 

@@ -5,6 +5,7 @@
 #include "coverage_axis.h"
 #include "mesh_io.h"
 #include "preview.h"
+#include "surface_view.h"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -89,11 +90,9 @@ Failure file_failure(const std::string& message);
 // format_version, tool_version, library_version, abi_version, input: the start of every report.
 Json report_header(const std::string& input);
 
-// A borrowed view of a mesh or point cloud read from a file; a cloud's normals trusted as
-// `point_normals` (CA_POINT_NORMALS_*) says.
-ca_surface_view surface_view(const caio::MeshData& mesh, int32_t point_normals = CA_POINT_NORMALS_TRUSTED);
-// The report's name of ca_candidate_set_normals: none (a mesh), given, oriented or estimated.
-const char* normals_name(int32_t normals);
+// The surface view of a file's mesh or cloud, and the report's name of the normals (surface_view.h).
+using caio::normals_name;
+using caio::surface_view;
 // Evaluates a skeleton against the input surface (Hausdorff distances, see ca_evaluate).
 bool evaluate(ca_context* ctx, const caio::MeshData& mesh, const ca_skeleton_view& skeleton,
               const ca_evaluate_options& options, ca_evaluation& out, Failure& failure);

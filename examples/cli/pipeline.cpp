@@ -13,28 +13,6 @@
 
 namespace cli {
 
-ca_surface_view surface_view(const caio::MeshData& mesh, int32_t point_normals) {
-    ca_surface_view view;
-    ca_surface_view_init(&view);
-    view.positions = mesh.positions.data();
-    view.vertex_count = mesh.positions.size() / 3;
-    view.triangles = mesh.triangles.data();
-    view.triangle_count = mesh.triangles.size() / 3;
-    view.normals = mesh.normals.empty() ? nullptr : mesh.normals.data();
-    view.normal_count = mesh.normals.size() / 3;
-    view.point_normals = point_normals;
-    return view;
-}
-
-const char* normals_name(int32_t normals) {
-    switch (normals) {
-        case CA_NORMALS_GIVEN: return "given";
-        case CA_NORMALS_ORIENTED: return "oriented";
-        case CA_NORMALS_ESTIMATED: return "estimated";
-        default: return "none";
-    }
-}
-
 Failure library_failure(ca_context* ctx, ca_status st, const std::string& step) {
     Failure f;
     const std::string name = ca_status_string(st);
@@ -320,105 +298,30 @@ Json outputs_json(const Outputs& out) {
     return j;
 }
 
-}  // namespace
+// Seconds each stage of a run took, for the report.
+struct StageTimes {
+    double read = 0, candidates = 0, select = 0, connect = 0, write = 0, evaluate = 0, proxies = 0;
+};
 
-Outcome run_pipeline(const std::string& input, const RunOptions& o, const Outputs& out, ca_progress_fn progress,
-                     void* progress_user) {
-    Outcome r;
-    const auto t_start = Clock::now();
-    caio::MeshData mesh;
-    std::string err;
-    if (!read_input(input, o.format, o.read, mesh, err)) return r.failure = file_failure(err), r;
-    const double t_read = since(t_start);
+// --proxies: the engine proxies of the skeleton, their data for the writers and their stats.
+bool run_proxies(Owned& owned, const RunOptions& o, std::vector<caio::ProxyData>& proxies, Json& proxy_stats,
+                  Failure& failure) {
+    ca_skeleton_view view;
+    ca_skeleton_view_init(&view);
+    ca_skeleton_get_view(owned.sk, &view);
+    const ca_status st = ca_proxies(owned.ctx, owned.set, &view, &o.proxy, &owned.proxies);
+    if (st != CA_OK) return failure = library_failure(owned.ctx, st, "proxies"), false;
+    ca_proxy_stats ps;
+    ps.struct_size = sizeof ps;
+    ca_proxy_set_stats(owned.proxies, &ps);
+    proxies = proxy_data(owned.proxies);
+    proxy_stats = proxy_stats_json(ps, o, proxies.size());
+    return true;
+}
 
-    Owned owned;
-    ca_context_desc desc;
-    ca_context_desc_init(&desc);
-    desc.threads = o.threads;
-    desc.progress = progress;
-    desc.progress_user = progress_user;
-    ca_status st;
-    if (!context_for(owned, desc, o.time_limit_s, t_start, "candidates", r.failure)) return r;
-
-    auto t0 = Clock::now();
-    if (!make_candidates(owned, mesh, o, r.failure) || !export_candidates(owned.set, out, r.failure)) return r;
-    const double t_candidates = since(t0);
-
-    t0 = Clock::now();
-    if (!context_for(owned, desc, o.time_limit_s, t_start, "selection", r.failure) || !make_selection(owned, o, r.failure))
-        return r;
-    r.target_missed = r.failure.exit_code == 4;
-    const double t_select = since(t0);
-    ca_select_stats ss;
-    ss.struct_size = sizeof ss;
-    ca_selection_stats(owned.sel, &ss);
-
-    t0 = Clock::now();
-    if (!context_for(owned, desc, o.time_limit_s, t_start, "connection", r.failure)) return r;
-    if ((st = ca_connect(owned.ctx, owned.set, owned.sel, &o.connect, &owned.sk)) != CA_OK)
-        return r.failure = library_failure(owned.ctx, st, "connection"), r;
-    const double t_connect = since(t0);
-    ca_skeleton_stats ks;
-    ks.struct_size = sizeof ks;
-    ca_skeleton_stats_get(owned.sk, &ks);
-
-    // --proxies: engine proxies of the skeleton, before the writers (glTF holds them)
-    std::vector<caio::ProxyData> proxies;
-    Json proxy_stats;
-    double t_proxies = 0;
-    if (!o.proxies.empty()) {
-        t0 = Clock::now();
-        ca_skeleton_view view;
-        ca_skeleton_view_init(&view);
-        ca_skeleton_get_view(owned.sk, &view);
-        if (!context_for(owned, desc, o.time_limit_s, t_start, "proxies", r.failure)) return r;
-        if ((st = ca_proxies(owned.ctx, owned.set, &view, &o.proxy, &owned.proxies)) != CA_OK)
-            return r.failure = library_failure(owned.ctx, st, "proxies"), r;
-        ca_proxy_stats ps;
-        ps.struct_size = sizeof ps;
-        ca_proxy_set_stats(owned.proxies, &ps);
-        proxies = proxy_data(owned.proxies);
-        proxy_stats = proxy_stats_json(ps, o, proxies.size());
-        t_proxies = since(t0);
-    }
-
-    t0 = Clock::now();
-    const caio::SkeletonData sd = skeleton_data(owned.sk);
-    if (!write_outputs(mesh, sd, proxies, o, out, r.failure)) return r;
-    if (!out.proxies_json.empty() && !write_proxies_json(out.proxies_json, proxies, proxy_stats, r.failure)) return r;
-    Json rig_report = Json::object();
-    if (!(out.correspondence.empty() && out.rig.empty()) &&
-        (!context_for(owned, desc, o.time_limit_s, t_start, "rig", r.failure) ||
-         !write_rig_outputs(owned.ctx, mesh, owned.sk, o, out, rig_report, r.failure)))
-        return r;
-    const double t_write = since(t0);
-
-    // --target-count: the tool measures the HD it reached (--target-error: the library did)
-    const bool evaluate_run = o.evaluate || o.select.target_count > 0;
-    ca_evaluation ev{};
-    double t_evaluate = 0;
-    if (evaluate_run) {
-        t0 = Clock::now();
-        ca_skeleton_view view;
-        ca_skeleton_view_init(&view);
-        ca_skeleton_get_view(owned.sk, &view);
-        if (!context_for(owned, desc, o.time_limit_s, t_start, "evaluation", r.failure)) return r;
-        if (!evaluate(owned.ctx, mesh, view, o.evaluation, ev, r.failure)) return r;
-        t_evaluate = since(t0);
-    }
-
-    Json& j = r.report;
-    j = report_header(input);
-    j["input_vertices"] = mesh.positions.size() / 3;
-    j["input_triangles"] = mesh.triangles.size() / 3;
-    j["input_normals"] = mesh.triangles.empty() && !mesh.normals.empty();
-    j["normals"] = normals_name(owned.normals);
-    j["flipped"] = owned.flipped;
-    j["surface_samples"] = ca_candidate_set_sample_count(owned.set);
-    j["candidates"] = ca_candidate_set_count(owned.set);
-    j["outliers"] = ca_candidate_set_outlier_count(owned.set);
-    j["normals_replaced"] = ca_candidate_set_normals_replaced(owned.set);
-    j["selected"] = sd.radii.size();
+// The skeleton's fields of the report.
+void add_skeleton_fields(Json& j, const ca_skeleton_stats& ks, size_t selected) {
+    j["selected"] = selected;
     j["edges"] = ks.edges;
     j["faces"] = ks.faces;
     j["components"] = ks.components;
@@ -433,6 +336,10 @@ Outcome run_pipeline(const std::string& input, const RunOptions& o, const Output
         j["fit"] = {{"error_before", ks.fit_error_before}, {"error_after", ks.fit_error_after},
                     {"time_s", ks.fit_time_s}, {"uncovered", ks.fit_uncovered}};
     }
+}
+
+// The selection's fields of the report.
+void add_selection_fields(Json& j, const ca_select_stats& ss, const Owned& owned, const RunOptions& o) {
     j["uncovered"] = ca_selection_uncovered_count(owned.sel);
     j["optimal"] = ss.proven_optimal != 0;
     j["objective"] = std::llround(ss.objective);
@@ -443,6 +350,25 @@ Outcome run_pipeline(const std::string& input, const RunOptions& o, const Output
     j["reference_length"] = ca_candidate_set_reference_length(owned.set);
     j["solver"] = o.solver;
     j["effort"] = o.effort;
+}
+
+// The --json report of a finished run.
+Json run_report(const std::string& input, const caio::MeshData& mesh, const Owned& owned, size_t selected,
+                const ca_skeleton_stats& ks, const ca_select_stats& ss, const RunOptions& o, const Outputs& out,
+                const Json& rig_report, const ca_evaluation* ev, const Json& proxy_stats, const Outcome& r,
+                const StageTimes& t, double total) {
+    Json j = report_header(input);
+    j["input_vertices"] = mesh.positions.size() / 3;
+    j["input_triangles"] = mesh.triangles.size() / 3;
+    j["input_normals"] = mesh.triangles.empty() && !mesh.normals.empty();
+    j["normals"] = normals_name(owned.normals);
+    j["flipped"] = owned.flipped;
+    j["surface_samples"] = ca_candidate_set_sample_count(owned.set);
+    j["candidates"] = ca_candidate_set_count(owned.set);
+    j["outliers"] = ca_candidate_set_outlier_count(owned.set);
+    j["normals_replaced"] = ca_candidate_set_normals_replaced(owned.set);
+    add_skeleton_fields(j, ks, selected);
+    add_selection_fields(j, ss, owned, o);
     j["connect"] = ks.method == CA_CONNECT_MEDIAL ? "medial" : "power";
     j["probes"] = ss.probes;
     j["parts"] = ss.parts;
@@ -451,18 +377,101 @@ Outcome run_pipeline(const std::string& input, const RunOptions& o, const Output
     j["output"] = out.ma;
     j["outputs"] = outputs_json(out);
     for (auto& [key, value] : rig_report.items()) j[key] = value;
-    if (evaluate_run) add_evaluation(j, ev);
+    if (ev) add_evaluation(j, *ev);
     if (!o.proxies.empty()) j["proxies"] = proxy_stats;
     // --target-count: the HD of what was written (the library's search measured the default
     // connection, fitted with --fit, which --connect changes)
-    if (o.select.target_count > 0) j["hd_reached"] = ev.hd_two_sided;
+    if (o.select.target_count > 0) j["hd_reached"] = ev->hd_two_sided;
     else if (ss.hd_reached >= 0) j["hd_reached"] = ss.hd_reached;
     else j["hd_reached"] = nullptr;
     if (o.select.target_error > 0) j["target_reached"] = !r.target_missed;
     if (r.target_missed) j["error"] = error_json(r.failure);
-    j["time_s"] = {{"read", round4(t_read)},         {"candidates", round4(t_candidates)}, {"select", round4(t_select)},
-                   {"connect", round4(t_connect)}, {"write", round4(t_write)},           {"evaluate", round4(t_evaluate)},
-                   {"proxies", round4(t_proxies)},           {"total", round4(since(t_start))}};
+    j["time_s"] = {{"read", round4(t.read)},       {"candidates", round4(t.candidates)}, {"select", round4(t.select)},
+                   {"connect", round4(t.connect)}, {"write", round4(t.write)},           {"evaluate", round4(t.evaluate)},
+                   {"proxies", round4(t.proxies)}, {"total", round4(total)}};
+    return j;
+}
+
+}  // namespace
+
+Outcome run_pipeline(const std::string& input, const RunOptions& o, const Outputs& out, ca_progress_fn progress,
+                     void* progress_user) {
+    Outcome r;
+    StageTimes t;
+    const auto t_start = Clock::now();
+    caio::MeshData mesh;
+    std::string err;
+    if (!read_input(input, o.format, o.read, mesh, err)) return r.failure = file_failure(err), r;
+    t.read = since(t_start);
+
+    Owned owned;
+    ca_context_desc desc;
+    ca_context_desc_init(&desc);
+    desc.threads = o.threads;
+    desc.progress = progress;
+    desc.progress_user = progress_user;
+    ca_status st;
+    if (!context_for(owned, desc, o.time_limit_s, t_start, "candidates", r.failure)) return r;
+
+    auto t0 = Clock::now();
+    if (!make_candidates(owned, mesh, o, r.failure) || !export_candidates(owned.set, out, r.failure)) return r;
+    t.candidates = since(t0);
+
+    t0 = Clock::now();
+    if (!context_for(owned, desc, o.time_limit_s, t_start, "selection", r.failure) || !make_selection(owned, o, r.failure))
+        return r;
+    r.target_missed = r.failure.exit_code == 4;
+    t.select = since(t0);
+    ca_select_stats ss;
+    ss.struct_size = sizeof ss;
+    ca_selection_stats(owned.sel, &ss);
+
+    t0 = Clock::now();
+    if (!context_for(owned, desc, o.time_limit_s, t_start, "connection", r.failure)) return r;
+    if ((st = ca_connect(owned.ctx, owned.set, owned.sel, &o.connect, &owned.sk)) != CA_OK)
+        return r.failure = library_failure(owned.ctx, st, "connection"), r;
+    t.connect = since(t0);
+    ca_skeleton_stats ks;
+    ks.struct_size = sizeof ks;
+    ca_skeleton_stats_get(owned.sk, &ks);
+
+    // --proxies: engine proxies of the skeleton, before the writers (glTF holds them)
+    std::vector<caio::ProxyData> proxies;
+    Json proxy_stats;
+    if (!o.proxies.empty()) {
+        t0 = Clock::now();
+        if (!context_for(owned, desc, o.time_limit_s, t_start, "proxies", r.failure) ||
+            !run_proxies(owned, o, proxies, proxy_stats, r.failure))
+            return r;
+        t.proxies = since(t0);
+    }
+
+    t0 = Clock::now();
+    const caio::SkeletonData sd = skeleton_data(owned.sk);
+    if (!write_outputs(mesh, sd, proxies, o, out, r.failure)) return r;
+    if (!out.proxies_json.empty() && !write_proxies_json(out.proxies_json, proxies, proxy_stats, r.failure)) return r;
+    Json rig_report = Json::object();
+    if (!(out.correspondence.empty() && out.rig.empty()) &&
+        (!context_for(owned, desc, o.time_limit_s, t_start, "rig", r.failure) ||
+         !write_rig_outputs(owned.ctx, mesh, owned.sk, o, out, rig_report, r.failure)))
+        return r;
+    t.write = since(t0);
+
+    // --target-count: the tool measures the HD it reached (--target-error: the library did)
+    const bool evaluate_run = o.evaluate || o.select.target_count > 0;
+    ca_evaluation ev{};
+    if (evaluate_run) {
+        t0 = Clock::now();
+        ca_skeleton_view view;
+        ca_skeleton_view_init(&view);
+        ca_skeleton_get_view(owned.sk, &view);
+        if (!context_for(owned, desc, o.time_limit_s, t_start, "evaluation", r.failure)) return r;
+        if (!evaluate(owned.ctx, mesh, view, o.evaluation, ev, r.failure)) return r;
+        t.evaluate = since(t0);
+    }
+
+    r.report = run_report(input, mesh, owned, sd.radii.size(), ks, ss, o, out, rig_report, evaluate_run ? &ev : nullptr,
+                          proxy_stats, r, t, since(t_start));
     r.ok = true;
     return r;
 }

@@ -4,7 +4,6 @@
 // surface balls.
 #include "candidates_internal.h"
 
-#include "bvh.h"
 #include "sampling.h"
 #include "timing.h"
 
@@ -19,9 +18,10 @@ using namespace cand;
 Status generate_candidates(Surface surface, const CandidateOptions& opt, const Monitor& monitor, CandidateSet& out) {
     out = CandidateSet{};
     out.surface = std::move(surface);
-    if (opt.cover_samples == 0 && !out.surface.point_cloud)
+    const SurfaceKind kind = out.surface.kind();
+    if (opt.cover_samples == 0 && !kind.is_cloud())
         return fail(Code::invalid_argument, "cover_samples must be at least 1");
-    if (opt.generator == Generator::voronoi && opt.voronoi_samples < 5 && !out.surface.point_cloud)
+    if (opt.generator == Generator::voronoi && opt.voronoi_samples < 5 && !kind.is_cloud())
         return fail(Code::invalid_argument, "voronoi_samples must be at least 5");
     if (opt.generator == Generator::random && opt.random_candidates == 0)
         return fail(Code::invalid_argument, "random_candidates must be at least 1");
@@ -30,8 +30,8 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
     auto t0 = Clock::now();
     if (!monitor.report("sampling", 0)) return monitor.stop_status("sampling");
     Status st;
-    if (out.surface.point_cloud) {
-        out.time_sampling_s = seconds_since(t0);
+    if (kind.is_cloud()) {
+        out.report.time_sampling_s = seconds_since(t0);
         st = point_cloud_candidates(opt, monitor, threads, out);
     } else {
         // The surface trees are built on a second thread while this one builds the hole caps' tree,
@@ -43,22 +43,15 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
         };
         Beside structures(
             [&built, &mesh, &stop, threads] {
-                const auto tree = detail::build_triangle_tree(mesh, threads, stop);   // one tree for both
-                if (!stop()) built.winding = std::make_shared<const WindingNumber>(tree, 2.0, threads, stop);
-                if (stop()) {
-                    built.stopped = true;
-                    return;
-                }
-                built.distance = std::make_shared<const MeshDistance>(tree);
-                if (stop()) built.stopped = true;
+                if (!build_mesh_queries(mesh, threads, stop, built.queries) || stop()) built.stopped = true;
             },
             threads > 1);
         // open meshes: no ball reaches out through a hole (hole_caps.cpp); the caps' tree is built
         // on this thread while the surface's are built (its own member of `built`)
-        if (!out.surface.caps.triangles.empty()) built.cap_distance = std::make_shared<const MeshDistance>(out.surface.caps);
+        if (kind.is_open_mesh()) build_cap_queries(out.surface.caps, built.queries);
         if (!sample_surface(mesh, opt.cover_samples, stream_seed(opt.seed, 1), out.cover_samples, monitor))
             st = monitor.stop_status("sampling");
-        out.time_sampling_s = seconds_since(t0);
+        out.report.time_sampling_s = seconds_since(t0);
         // A flat mesh bounds no volume: no inner candidates and no 3-D Delaunay step; its cover is
         // made of surface balls. A Delaunay step Qhull cannot build (its retries included) leaves
         // the fallback and surface balls to cover the shape.
@@ -66,7 +59,7 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
             st = opt.generator == Generator::voronoi ? mesh_voronoi_candidates(opt, monitor, structures, built, threads, out)
                                                      : mesh_random_candidates(opt, monitor, structures, built, threads, out);
             if (st.code == Code::geometry_failure || st.code == Code::degenerate_input) {
-                out.delaunay_failed = true;
+                out.report.delaunay_failed = true;
                 out.balls.clear();
                 out.voronoi_tets.clear();
                 out.voronoi_inner.clear();
@@ -76,25 +69,23 @@ Status generate_candidates(Surface surface, const CandidateOptions& opt, const M
         if (!st.ok()) built.abandon = true;
         structures.wait();
         if (st.ok()) st = structures_status(built, monitor);
-        const MeshDistance* cap_distance = built.cap_distance.get();
+        const MeshDistance* cap_distance = built.queries.cap_distance.get();
         if (st.ok() && cap_distance && !clamp_to_hole_caps(out, *cap_distance, threads, monitor)) st = monitor.stop_status("hole caps");
         if (st.ok()) {
             if (!out.surface.flat)
-                out.fallback_balls = add_fallback_balls(out, *built.winding, *built.distance, cap_distance, threads, monitor);
+                out.report.fallback_balls = add_fallback_balls(out, *built.queries.winding, *built.queries.distance, cap_distance, threads, monitor);
             if (monitor.stopped()) st = monitor.stop_status("fallback balls");
             if (st.ok() && !opt.volumetric_only) {
-                add_surface_balls(out, built.distance.get(), threads, monitor);
+                add_surface_balls(out, built.queries.distance.get(), threads, monitor);
                 if (monitor.stopped()) st = monitor.stop_status("surface balls");
             }
-            out.winding = std::move(built.winding);
-            out.distance = std::move(built.distance);
-            out.cap_distance = std::move(built.cap_distance);
+            out.queries = std::move(built.queries);
         }
         if (st.ok() && opt.connect_samples > 0)
             out.connect_samples = sample_surface(out.surface.mesh, opt.connect_samples, stream_seed(opt.seed, 4));
     }
     if (!st.ok()) return st;
-    out.time_candidates_s = seconds_since(t0) - out.time_sampling_s;
+    out.report.time_candidates_s = seconds_since(t0) - out.report.time_sampling_s;
     if (out.balls.empty())
         return fail(Code::no_candidates, "no candidate ball lies inside the shape (volumetric-only: is the surface "
                                          "closed around a volume? try more samples or the random generator)");

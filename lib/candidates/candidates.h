@@ -10,6 +10,7 @@
 #include "common.h"
 #include "delaunay.h"
 #include "hole_caps.h"
+#include "shape_queries.h"
 #include "surface.h"
 
 #include <atomic>
@@ -38,9 +39,6 @@ struct CandidateOptions {
 };
 
 // Everything later steps need, in internal (unit-cube) units.
-class WindingNumber;
-class MeshDistance;
-class PointCloudWinding;
 class PointTree;
 
 // Point clouds (cloud_reach.cpp): whether a ball stays within reach of the cloud: every point of
@@ -79,6 +77,23 @@ private:
     std::unique_ptr<std::atomic<uint8_t>[]> verdicts_;
 };
 
+// What the candidate step did, filled as it goes: counts and times for the caller's log, the
+// C ABI's getters and the tests. Kept apart from the data the later steps use.
+struct CandidateReport {
+    size_t outliers = 0;                  // point clouds: points dropped as outliers (cloud_outliers.cpp)
+    size_t beyond_reach = 0;              // point clouds: candidates dropped as reaching outside the cloud (cloud_reach.cpp)
+    size_t outside_local_plane = 0;       // point clouds: candidates dropped outside the local surface (cloud_local_planes.cpp)
+    double noise_ratio = 0;               // point clouds: median off-plane distance / spacing (cloud_local_planes.cpp)
+    double noise_scale_growth = 0;        // point clouds: the same over 16 and 8 neighbours (cloud_local_planes.cpp)
+    double orientation_inconsistent = 0;  // point clouds: fraction of orientation probes failing (point_cloud.cpp)
+    size_t fallback_balls = 0;            // balls added by add_fallback_balls (after the generator's)
+    // Meshes: the Delaunay step of the Voronoi generator failed (Qhull could not build it even
+    // with joggle, e.g. on a nearly flat mesh); the candidates are the fallback and surface balls.
+    bool delaunay_failed = false;
+    size_t hole_clamped = 0;              // radii clamped by clamp_to_hole_caps (open meshes)
+    double time_sampling_s = 0, time_candidates_s = 0;
+};
+
 struct CandidateSet {
     Surface surface;                      // empty mesh when built from caller arrays
     std::vector<Vec3> cover_samples;      // S
@@ -89,36 +104,18 @@ struct CandidateSet {
     // Empty otherwise (the medial-axis route then builds them itself).
     std::vector<Tet> voronoi_tets;
     std::vector<uint8_t> voronoi_inner;
-    // Meshes: the inside and distance queries on surface.mesh built by generate_candidates, shared
-    // with the connection step (which builds its own when they are null). Whoever changes
-    // surface.mesh afterwards must reset them.
-    std::shared_ptr<const WindingNumber> winding;
-    std::shared_ptr<const MeshDistance> distance;
-    // Open meshes: the distance to the hole caps (hole_caps.h), null when there are none; the
-    // connection step's envelope rule keeps elements from bulging out through the caps.
-    std::shared_ptr<const MeshDistance> cap_distance;
-    // Point clouds: the winding number of the (de-duplicated, oriented) points, the inside test
-    // of the candidates, the fallback balls and the connection step.
-    std::shared_ptr<const PointCloudWinding> cloud_winding;
-    // Point clouds: the reach rule (CloudReach above), shared with the connection step.
-    std::shared_ptr<const CloudReach> cloud_reach;
-    size_t outliers = 0;                  // point clouds: points dropped as outliers (cloud_outliers.cpp)
-    size_t beyond_reach = 0;              // point clouds: candidates dropped as reaching outside the cloud (cloud_reach.cpp)
-    size_t outside_local_plane = 0;       // point clouds: candidates dropped outside the local surface (cloud_local_planes.cpp)
-    double noise_ratio = 0;               // point clouds: median off-plane distance / spacing (cloud_local_planes.cpp)
-    double noise_scale_growth = 0;        // point clouds: the same over 16 and 8 neighbours (cloud_local_planes.cpp)
-    bool noisy_cloud = false;             // point clouds: judged noisy by those two (cloud_local_planes.cpp)
-    double orientation_inconsistent = 0;  // point clouds: fraction of orientation probes failing (point_cloud.cpp)
+    // The inside test, distances, hole caps or cloud reach of the surface (shape_queries.h), built
+    // once by generate_candidates and only read after it; none for caller arrays. Whoever changes
+    // surface.mesh afterwards must build them again.
+    ShapeQueries queries;
+    // point clouds: judged noisy (cloud_local_planes.cpp: the report's noise_ratio and
+    // noise_scale_growth); the connection step then takes the power route
+    bool noisy_cloud = false;
     std::vector<Ball> balls;              // P, undilated medial radii
-    size_t fallback_balls = 0;            // of which added by add_fallback_balls (after the generator's)
     // of which surface balls (surface_balls.cpp): the last ones, on open sheets and thin parts
     // that no inner ball reaches
     size_t surface_balls = 0;
-    // Meshes: the Delaunay step of the Voronoi generator failed (Qhull could not build it even
-    // with joggle, e.g. on a nearly flat mesh); the candidates are the fallback and surface balls.
-    bool delaunay_failed = false;
-    size_t hole_clamped = 0;              // radii clamped by clamp_to_hole_caps (open meshes)
-    double time_sampling_s = 0, time_candidates_s = 0;
+    CandidateReport report;               // what the step did (counts, times); no later step reads it
 };
 
 Status generate_candidates(Surface surface, const CandidateOptions& opt, const Monitor& monitor,

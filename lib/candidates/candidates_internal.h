@@ -24,12 +24,10 @@ inline uint64_t stream_seed(uint64_t seed, uint64_t stream) { return seed * 0x9E
 constexpr double kDuplicateTolerance = 1e-7;   // internal units (1e-7 of the longest bbox side)
 
 
-// The surface structures (winding numbers, distances, hole caps) are built beside the sampling
-// and the Delaunay step; `structures.wait()` gives them.
+// The surface structures (the shape queries: winding number, distance, hole caps) are built
+// beside the sampling and the Delaunay step; `structures.wait()` gives them.
 struct SurfaceStructures {
-    std::shared_ptr<const WindingNumber> winding;
-    std::shared_ptr<const MeshDistance> distance;
-    std::shared_ptr<const MeshDistance> cap_distance;   // null when the mesh has no holes
+    ShapeQueries queries;   // winding and distance on the second thread, cap_distance on this one
     // The build stops early on a cancel, the time limit or `abandon` (the step failed meanwhile);
     // then `stopped` is set and the structures must not be used.
     std::atomic<bool> abandon{false};

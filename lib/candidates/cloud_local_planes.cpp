@@ -16,6 +16,7 @@
 // - noise() estimates the noise's standard deviation from the median distance to the planes,
 //   the depth within which the winding number is unreliable (the fallback balls start below it).
 #include "candidates_internal.h"
+#include "median.h"
 
 #include "kdtree.h"
 #include "normals.h"
@@ -32,12 +33,6 @@ constexpr size_t kPlaneNeighbours = 16;
 constexpr size_t kSmallNeighbours = 8;
 constexpr double kNoisy = 0.03, kMaxGrowth = 1.6;
 constexpr double kMedianToSigma = 1.4826;   // median |x| of a centred Gaussian is 0.6745 sigma
-double median_of(std::vector<double> v) {
-    if (v.empty()) return 0;
-    const size_t mid = v.size() / 2;
-    std::nth_element(v.begin(), v.begin() + long(mid), v.end());
-    return v[mid];
-}
 }  // namespace
 
 LocalPlanes::LocalPlanes(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, int threads)

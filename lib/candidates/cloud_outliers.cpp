@@ -7,6 +7,7 @@
 // d16^2 / 2R), so clean clouds lose no point; far outliers and points flung off the surface by
 // scan errors are dropped before the winding number, the candidates and the cover samples.
 #include "candidates_internal.h"
+#include "median.h"
 
 #include "kdtree.h"
 #include "normals.h"
@@ -22,12 +23,6 @@ namespace {
 constexpr size_t kIsolationRank = 8;     // the k of the k-th-nearest-neighbour distance
 constexpr size_t kPlaneNeighbours = 16;  // the neighbourhood of the local plane
 constexpr double kMedianFactor = 3, kMadFactor = 10, kMadToSigma = 1.4826, kOffPlane = 0.7;
-
-double median_of(std::vector<double> v) {
-    const size_t mid = v.size() / 2;
-    std::nth_element(v.begin(), v.begin() + long(mid), v.end());
-    return v[mid];
-}
 
 }  // namespace
 

@@ -28,6 +28,7 @@
 //   the cloud and more than half the reach from it (cells of side reach, which give centres up to
 //   0.87 of the reach away, judge too coarsely near thin parts).
 #include "candidates_internal.h"
+#include "median.h"
 
 #include "kdtree.h"
 #include "point_winding.h"
@@ -72,8 +73,7 @@ CloudReach::CloudReach(std::vector<Vec3> points, std::shared_ptr<const PointClou
         for_each_neighbourhood(pts, 8, [&](size_t i, const size_t*, const double* d2, size_t found) {
             d[i] = std::sqrt(d2[found - 1]);
         }, threads);
-        std::nth_element(d.begin(), d.begin() + long(d.size() / 2), d.end());
-        d8 = d[d.size() / 2];
+        d8 = median_of(std::move(d));
         reach_ = std::max(reach_, d8);
     }
     directions_ = sphere_directions(kReachDirections);

@@ -27,6 +27,7 @@
 // grown there by the distances alone (the touching rule above); otherwise on the other side while
 // w > 1/2. Clouds with trusted given normals keep the normal's side.
 #include "candidates_internal.h"
+#include "median.h"
 
 #include "coverage.h"
 #include "distance.h"
@@ -133,8 +134,7 @@ public:
         for_each_neighbourhood(pts, 8, [&](size_t i, const size_t*, const double* d2, size_t found) {
             d8[i] = std::sqrt(d2[found - 1]);
         }, threads);
-        std::nth_element(d8.begin(), d8.begin() + long(d8.size() / 2), d8.end());
-        tol_ = kRayTolerance * d8[d8.size() / 2];
+        tol_ = kRayTolerance * median_of(std::move(d8));
         const auto [lo, hi] = bounding_box(pts);
         lo_ = lo - Vec3::Constant(kRayMargin), hi_ = hi + Vec3::Constant(kRayMargin);
     }
@@ -191,7 +191,7 @@ size_t add_fallback_balls(CandidateSet& set, const WindingNumber& winding, const
     };
     auto inside = [&](const Vec3& c) { return winding.inside(c); };
     const Mesh& mesh = set.surface.mesh;
-    if (mesh.triangles.empty() || set.cover_samples.empty()) return 0;
+    if (!set.surface.kind().is_mesh() || set.cover_samples.empty()) return 0;
     size_t added = 0;
     const std::vector<size_t> unreached = unreached_samples(set, threads, monitor);
     for (size_t k = 0; k < unreached.size(); ++k) {

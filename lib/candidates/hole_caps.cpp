@@ -13,7 +13,7 @@
 namespace ca {
 
 bool clamp_to_hole_caps(CandidateSet& set, const MeshDistance& distance, int threads, const Monitor& monitor) {
-    set.hole_clamped = 0;
+    set.report.hole_clamped = 0;
     std::vector<uint8_t> clamped(set.balls.size(), 0);
     const bool done = parallel_for(set.balls.size(), threads, 4096, monitor, "candidates", [&](size_t b, size_t e) {
         for (size_t i = b; i < e; ++i) {
@@ -25,7 +25,7 @@ bool clamp_to_hole_caps(CandidateSet& set, const MeshDistance& distance, int thr
     if (!done) return false;
     set.balls.erase(std::remove_if(set.balls.begin(), set.balls.end(), [](const Ball& x) { return !(x.radius > 0); }),
                     set.balls.end());
-    for (uint8_t c : clamped) set.hole_clamped += c;
+    for (uint8_t c : clamped) set.report.hole_clamped += c;
     return true;
 }
 

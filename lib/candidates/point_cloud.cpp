@@ -168,11 +168,11 @@ Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monito
     for (size_t i = 0; i < unique.size(); ++i) { upts[i] = pts[unique[i]]; unrm[i] = nrm[unique[i]]; }
     // the points cover samples are drawn from: all of them unless outliers are dropped
     std::vector<uint32_t> kept;
-    if (opt.filter_outliers) drop_outliers(pts, upts, unrm, kept, out.outliers, threads);
+    if (opt.filter_outliers) drop_outliers(pts, upts, unrm, kept, out.report.outliers, threads);
     if (!monitor.report("inside", 0)) return monitor.stop_status("inside");
     auto winding = std::make_shared<PointCloudWinding>(upts, unrm, 2.0, threads);
     const OrientationProbes probes = probe_orientation(*winding, upts, unrm);
-    out.orientation_inconsistent = probes.inconsistent;
+    out.report.orientation_inconsistent = probes.inconsistent;
     if (probes.inconsistent > kMaxInconsistent)
         return fail(Code::invalid_input,
                     "the point cloud's normals are not consistently oriented: the winding number jumps by less than "
@@ -190,13 +190,13 @@ Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monito
     }
     // noisy clouds: cover the denoised surface (cloud_local_planes.cpp)
     const LocalPlanes planes(upts, unrm, threads);
-    out.noise_ratio = planes.noise_ratio();
+    out.report.noise_ratio = planes.noise_ratio();
     out.noisy_cloud = planes.noisy();
-    out.noise_scale_growth = planes.scale_growth();
+    out.report.noise_scale_growth = planes.scale_growth();
     std::vector<Vec3> sample_normals;
-    const size_t pool = out.outliers ? kept.size() : pts.size();
+    const size_t pool = out.report.outliers ? kept.size() : pts.size();
     for (uint32_t k : random_subset(pool, opt.cover_samples, stream_seed(opt.seed, 1))) {
-        const uint32_t i = out.outliers ? kept[k] : k;
+        const uint32_t i = out.report.outliers ? kept[k] : k;
         out.cover_samples.push_back(planes.noisy() ? planes.project(pts[i]) : pts[i]);
         sample_normals.push_back(nrm[i]);
     }
@@ -205,12 +205,12 @@ Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monito
                     ? voronoi_cloud_candidates(upts, *winding, threads, monitor, out.balls, out.voronoi_tets, out.voronoi_inner)
                     : random_cloud_candidates(opt, upts, *winding, threads, monitor, out.balls);
     if (!st.ok()) return st;
-    if (planes.noisy()) out.outside_local_plane = drop_outside_local_planes(planes, threads, monitor, out.balls);
+    if (planes.noisy()) out.report.outside_local_plane = drop_outside_local_planes(planes, threads, monitor, out.balls);
     // no ball reaches outside far from every point (cloud_reach.cpp); the fallback balls below
     // cover what the dropped ones reached, grown only while they stay within reach
     auto reach = std::make_shared<const CloudReach>(upts, winding, threads, monitor);
     if (monitor.stopped()) return monitor.stop_status("candidates");
-    out.beyond_reach = drop_beyond_reach(*reach, threads, monitor, out.balls);
+    out.report.beyond_reach = drop_beyond_reach(*reach, threads, monitor, out.balls);
     if (monitor.stopped()) return monitor.stop_status("candidates");
     CloudNoise noise;
     if (planes.noisy()) {
@@ -219,14 +219,14 @@ Status point_cloud_candidates(const CandidateOptions& opt, const Monitor& monito
     }
     noise.untrusted_signs = out.surface.normals_source != NormalSource::given;
     noise.within_reach = [&reach](const Ball& b) { return reach->within(b); };
-    out.fallback_balls = add_cloud_fallback_balls(out, *winding, sample_normals, noise, threads, monitor);
+    out.report.fallback_balls = add_cloud_fallback_balls(out, *winding, sample_normals, noise, threads, monitor);
     if (monitor.stopped()) return monitor.stop_status("fallback balls");
     if (!opt.volumetric_only) {
         add_surface_balls(out, nullptr, threads, monitor);
         if (monitor.stopped()) return monitor.stop_status("surface balls");
     }
-    out.cloud_winding = std::move(winding);
-    out.cloud_reach = std::move(reach);
+    out.queries.cloud_winding = std::move(winding);
+    out.queries.cloud_reach = std::move(reach);
     return Status::success();
 }
 

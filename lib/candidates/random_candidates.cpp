@@ -41,12 +41,12 @@ Status mesh_random_candidates(const CandidateOptions& opt, const Monitor& monito
     const Mesh& mesh = out.surface.mesh;
     structures.wait();
     if (const Status ss = structures_status(built, monitor); !ss.ok()) return ss;
-    const WindingNumber& winding = *built.winding;
+    const WindingNumber& winding = *built.queries.winding;
     std::vector<Vec3> inner;
     if (!random_inner_points(mesh.vertices, opt, [&](const Vec3& p) { return winding.inside(p); }, threads, monitor,
                              inner))
         return monitor.stop_status("inside");
-    const MeshDistance& distance = *built.distance;
+    const MeshDistance& distance = *built.queries.distance;
     out.balls.resize(inner.size());
     if (!parallel_for(inner.size(), threads, 4096, monitor, "candidates", [&](size_t b, size_t e) {
             for (size_t i = b; i < e; ++i) out.balls[i] = {inner[i], distance.distance(inner[i])};

@@ -64,7 +64,7 @@ size_t add_surface_balls(CandidateSet& set, const MeshDistance* distance, int th
     if (unreached.empty() || monitor.stopped()) return 0;
     std::vector<Ball> balls(unreached.size());
     const Mesh& mesh = set.surface.mesh;
-    const bool probe = distance && !set.surface.flat && !mesh.triangles.empty();
+    const bool probe = distance && !set.surface.flat && set.surface.kind().is_mesh();
     Monitor quiet = monitor;
     quiet.progress = nullptr;
     const bool done = parallel_for(unreached.size(), resolve_threads(threads), 256, quiet, "surface balls", [&](size_t b, size_t e) {

@@ -86,7 +86,7 @@ Status mesh_voronoi_candidates(const CandidateOptions& opt, const Monitor& monit
             raw_inner.assign(raw.size(), 0);
             structures.wait();
             if (const Status ss = structures_status(built, monitor); !ss.ok()) return ss;
-            const WindingNumber& winding = *built.winding;
+            const WindingNumber& winding = *built.queries.winding;
             const bool done = parallel_for(raw.size(), threads, 8192, monitor, "inside", [&](size_t b, size_t e) {
                 for (size_t k = b; k < e; ++k) raw_inner[k] = winding.inside(raw[k].center);
             });

@@ -14,8 +14,7 @@ namespace {
 
 // The mesh part nearest each ball's centre (mesh_topology.h numbering).
 std::vector<uint32_t> ball_parts(const CandidateSet& set, const MeshTopology& topo, const std::vector<Ball>& balls) {
-    std::shared_ptr<const MeshDistance> distance = set.distance;
-    if (!distance) distance = std::make_shared<const MeshDistance>(set.surface.mesh);
+    const MeshDistance* distance = set.queries.distance.get();
     std::vector<uint32_t> part(balls.size(), 0);
     for (size_t i = 0; i < balls.size(); ++i) {
         uint32_t tri = 0;
@@ -56,7 +55,7 @@ Status connect_volume(const CandidateSet& set, const Selection& sel, const Conne
     if (!st.ok()) return st;
     canonicalize(out);
     if (!monitor.report("connect", 0.5)) return monitor.stop_status("connect");
-    const bool mesh = !set.surface.mesh.triangles.empty();
+    const bool mesh = set.surface.kind().is_mesh();
     const MeshTopology& shape = set.surface.topology;   // genus -1 for point clouds
     if (report) report->genus = shape.genus;
     if ((opt.remove_outside || opt.fill_holes || opt.reconnect || opt.repair_loops) && out.balls.size() > 1) {
@@ -95,8 +94,8 @@ Status connect_volume(const CandidateSet& set, const Selection& sel, const Conne
 
 ConnectMethod resolve_method(const CandidateSet& set, ConnectMethod method) {
     if (method != ConnectMethod::automatic) return method;
-    const bool mesh = !set.surface.point_cloud && !set.surface.mesh.triangles.empty();
-    const bool clean_cloud = set.cloud_winding != nullptr && !set.noisy_cloud;
+    const bool mesh = set.surface.kind().is_mesh();
+    const bool clean_cloud = set.queries.cloud_winding != nullptr && !set.noisy_cloud;
     return mesh || clean_cloud ? ConnectMethod::medial : ConnectMethod::power;
 }
 
@@ -110,7 +109,7 @@ Status connect_balls(const CandidateSet& set, const Selection& sel, const Connec
     if (sel.indices.size() != sel.dilated_radii.size()) return fail(Code::internal, "inconsistent selection");
     for (uint32_t i : sel.indices)
         if (i >= set.balls.size()) return fail(Code::invalid_argument, "the selection does not belong to this candidate set");
-    if (opt.method == ConnectMethod::medial && set.surface.mesh.triangles.empty() && !set.cloud_winding)
+    if (opt.method == ConnectMethod::medial && !set.surface.kind().is_mesh() && !set.queries.cloud_winding)
         return fail(Code::invalid_argument,
                     "the medial-axis connection needs a triangle mesh or a point cloud's winding number; use the "
                     "power-diagram route for candidate sets from caller arrays");

@@ -125,17 +125,15 @@ private:
 };
 
 InsideTest::InsideTest(const CandidateSet& set) : impl_(std::make_unique<Impl>()) {
-    if (!set.surface.mesh.triangles.empty()) {
-        impl_->winding = set.winding ? set.winding : std::make_shared<const WindingNumber>(set.surface.mesh);
-        impl_->distance = set.distance ? set.distance : std::make_shared<const MeshDistance>(set.surface.mesh);
+    if (set.surface.kind().is_mesh()) {
+        impl_->winding = set.queries.winding;
+        impl_->distance = set.queries.distance;
         impl_->closed = set.surface.topology.closed;
-        // the candidate step's caps when it built the structures, else the surface's own
-        if (set.distance) impl_->caps = set.cap_distance;
-        else if (!set.surface.caps.triangles.empty()) impl_->caps = std::make_shared<const MeshDistance>(set.surface.caps);
+        impl_->caps = set.queries.cap_distance;
         return;
     }
-    impl_->cloud_winding = set.cloud_winding;
-    impl_->cloud_reach = set.cloud_reach;
+    impl_->cloud_winding = set.queries.cloud_winding;
+    impl_->cloud_reach = set.queries.cloud_reach;
     // the distance to the surface of a point cloud: to its nearest point (an overestimate by at
     // most the sample spacing, far below the envelope tolerance delta)
     impl_->cloud_points = set.dense_samples.empty() ? set.cover_samples : set.dense_samples;

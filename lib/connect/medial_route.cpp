@@ -48,10 +48,8 @@ Status voronoi_diagram(const CandidateSet& set, int threads, const Monitor& moni
     Status st = delaunay_tetrahedra(pts, tets, monitor, "connect");
     if (!st.ok()) return st;
     // the inside test: the mesh's winding number, or a point cloud's own (point_winding.h)
-    const PointCloudWinding* cloud = set.surface.mesh.triangles.empty() ? set.cloud_winding.get() : nullptr;
-    const std::shared_ptr<const WindingNumber> own =
-        set.winding || cloud ? nullptr : std::make_shared<const WindingNumber>(set.surface.mesh);
-    const WindingNumber* winding = set.winding ? set.winding.get() : own.get();
+    const PointCloudWinding* cloud = set.surface.kind().is_mesh() ? nullptr : set.queries.cloud_winding.get();
+    const WindingNumber* winding = set.queries.winding.get();
     inner.assign(tets.size(), 0);
     const bool done = parallel_for(tets.size(), resolve_threads(threads), 8192, monitor, "connect", [&](size_t b, size_t e) {
         for (size_t t = b; t < e; ++t) {

@@ -15,6 +15,7 @@
 //    regions meet): a card, sail or plane becomes a patch of triangles, and a sheet touching a
 //    medial part (a leaf on its twig, a card glued to a box) is joined to it.
 #include "connect.h"
+#include "median.h"
 
 #include "kdtree.h"
 #include "parallel.h"
@@ -88,9 +89,7 @@ Status connect_sheets(const CandidateSet& set, const std::vector<uint8_t>& surfa
         d8[i] = found > 0 ? std::sqrt(d2[found - 1]) : 0;
     }, threads);
     if (monitor.stopped()) return monitor.stop_status("connect");
-    std::vector<double> sorted = d8;
-    std::nth_element(sorted.begin(), sorted.begin() + long(sorted.size() / 2), sorted.end());
-    const double reach = kReachSpacings * sorted[sorted.size() / 2];
+    const double reach = kReachSpacings * median_of(d8);
     const double reach2 = reach * reach;
 
     std::set<uint64_t> edges;

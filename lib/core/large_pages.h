@@ -19,15 +19,25 @@ namespace ca {
 // Below this an array spans too few 2 MiB pages for the advice to matter.
 constexpr size_t kLargeArrayBytes = size_t(4) << 20;
 
-// Advises huge pages for the 2 MiB-aligned part of [data, data + bytes); pages already written
-// keep their size. Failure (no THP support) is harmless and ignored.
+constexpr uintptr_t kHugePageBytes = uintptr_t(2) << 20;
+
+// The part of [data, data + bytes) the advice covers: from the first 2 MiB boundary at or after
+// data to the last at or before its end (begin >= end: none); none below kLargeArrayBytes.
+struct HugePageRange {
+    uintptr_t begin = 0, end = 0;
+};
+inline HugePageRange huge_page_range(const void* data, size_t bytes) {
+    if (bytes < kLargeArrayBytes) return {};
+    const uintptr_t a = reinterpret_cast<uintptr_t>(data);
+    return {(a + kHugePageBytes - 1) & ~(kHugePageBytes - 1), (a + bytes) & ~(kHugePageBytes - 1)};
+}
+
+// Advises huge pages for huge_page_range(data, bytes); pages already written keep their size.
+// Failure (no THP support) is harmless and ignored.
 inline void advise_huge_pages(const void* data, size_t bytes) {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-    if (bytes < kLargeArrayBytes) return;
-    constexpr uintptr_t kHuge = uintptr_t(2) << 20;
-    const uintptr_t begin = (reinterpret_cast<uintptr_t>(data) + kHuge - 1) & ~(kHuge - 1);
-    const uintptr_t end = (reinterpret_cast<uintptr_t>(data) + bytes) & ~(kHuge - 1);
-    if (end > begin) (void)madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+    const HugePageRange r = huge_page_range(data, bytes);
+    if (r.end > r.begin) (void)madvise(reinterpret_cast<void*>(r.begin), r.end - r.begin, MADV_HUGEPAGE);
 #else
     (void)data;
     (void)bytes;

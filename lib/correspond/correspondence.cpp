@@ -2,6 +2,7 @@
 // points (correspondence.h): a blend over the primitives near each point, found through a
 // hierarchy of their bounding spheres, then cut to the four largest weights continuously.
 #include "correspondence.h"
+#include "median.h"
 
 #include "envelope.h"
 #include "evaluate.h"
@@ -109,8 +110,7 @@ double blend_scale(const Skeleton& s) {
         lo = lo.cwiseMin(b.center);
         hi = hi.cwiseMax(b.center);
     }
-    std::nth_element(r.begin(), r.begin() + r.size() / 2, r.end());
-    const double scale = std::max(r[r.size() / 2], 1e-3 * (hi - lo).norm());
+    const double scale = std::max(median_of(std::move(r)), 1e-3 * (hi - lo).norm());
     return scale > 0 ? scale : 1.0;
 }
 

@@ -190,15 +190,8 @@ Status solve_coverage(const Coverage& cov, const CandidateSet& set, const Select
     return st;
 }
 
-}  // namespace
-
-double dilate(double radius, const SelectOptions& opt) {
-    return dilate_with(radius, opt.dilation, opt.dilation == Dilation::offset ? opt.delta : opt.scale);
-}
-
-Status select_balls(const CandidateSet& set, const SelectOptions& opt, const Monitor& monitor, Selection& out) {
-    const auto t0 = Clock::now();
-    out = Selection{};
+// The options in range and a set to select from.
+Status check_select(const CandidateSet& set, const SelectOptions& opt) {
     if (opt.dilation == Dilation::offset && !(std::isfinite(opt.delta) && opt.delta >= 0))
         return fail(Code::invalid_argument, "delta must be a finite number >= 0");
     if (opt.dilation == Dilation::scale && !(std::isfinite(opt.scale) && opt.scale >= 1))
@@ -207,55 +200,77 @@ Status select_balls(const CandidateSet& set, const SelectOptions& opt, const Mon
         return fail(Code::invalid_argument, "target_tolerance must be a finite number > 0");
     if (set.balls.empty()) return fail(Code::no_candidates, "the candidate set has no balls");
     if (set.cover_samples.empty()) return fail(Code::degenerate_input, "the candidate set has no surface samples");
+    return Status::success();
+}
 
-    const size_t n = set.balls.size();
-    std::vector<Vec3> centers(n);
-    std::vector<double> radii(n), dilated(n);
-    for (size_t i = 0; i < n; ++i) {
-        centers[i] = set.balls[i].center;
-        radii[i] = set.balls[i].radius;
+// What the two strategies share: the candidate balls, their radii dilated at the current
+// value, the cover options pointing at them, and the clock of the whole selection.
+struct Selecting {
+    Selecting(const CandidateSet& set, const SelectOptions& opt, const Monitor& monitor)
+        : set(set), opt(opt), monitor(monitor), n(set.balls.size()), centers(n), radii(n), dilated(n) {
+        for (size_t i = 0; i < n; ++i) {
+            centers[i] = set.balls[i].center;
+            radii[i] = set.balls[i].radius;
+        }
+        cover = opt.cover;
+        if (cover.search_threads == 0) cover.search_threads = opt.threads;
+        cover.centers = &centers;
+        cover.radii = &radii;
     }
-    CoverOptions cover = opt.cover;
-    if (cover.search_threads == 0) cover.search_threads = opt.threads;
-    cover.centers = &centers;
-    cover.radii = &radii;
-    const Dilation dil = opt.dilation;
-    auto make_radii = [&](double value) {
-        for (size_t i = 0; i < n; ++i) dilated[i] = dilate_with(radii[i], dil, value);
-    };
-    auto finish = [&](double value, const std::vector<double>& dil_radii) {
+    Selecting(const Selecting&) = delete;   // cover points at its own arrays
+
+    void make_radii(double value) {
+        for (size_t i = 0; i < n; ++i) dilated[i] = dilate_with(radii[i], opt.dilation, value);
+    }
+    // The selection of out.cover at dilation `value` with these dilated radii.
+    void finish(double value, const std::vector<double>& dil_radii, Selection& out) const {
         out.indices = out.cover.selected;
         out.dilated_radii.clear();
         for (uint32_t i : out.indices) out.dilated_radii.push_back(dil_radii[i]);
-        out.delta = dil == Dilation::offset ? value : 0;
-        out.scale = dil == Dilation::scale ? value : 0;
+        out.delta = opt.dilation == Dilation::offset ? value : 0;
+        out.scale = opt.dilation == Dilation::scale ? value : 0;
         out.time_total_s = seconds_since(t0);
-    };
+    }
     // Once a cover is solved, a budget that ran out meanwhile leaves it the result (the
     // solver stopped early with its best cover); only a cancel discards it.
-    auto solved_report = [&] {
+    bool solved_report() const {
         return monitor.deadline.expired() ? !monitor.cancelled() : monitor.report("selection", 1);
-    };
-    if (!monitor.report("selection", 0)) return monitor.stop_status("selection");
-
-    if (opt.target_count == 0) {
-        const double value = dil == Dilation::offset ? opt.delta : opt.scale;
-        make_radii(value);
-        Coverage cov;
-        Status st = build_coverage(set.cover_samples, centers, dilated, monitor, cov, opt.threads);
-        if (!st.ok()) return st;
-        out.time_coverage_s = seconds_since(t0);
-        if (monitor.cancelled()) return monitor.stop_status("selection");
-        st = solve_coverage(cov, set, opt, cover, monitor, out.cover, out.parts);
-        if (!st.ok()) return st;
-        out.probes = 1;
-        if (!solved_report()) return monitor.stop_status("selection");
-        finish(value, dilated);
-        return Status::success();
     }
 
-    // Target size: bracket, then bisect. `big` is the coverage at the upper end of the
-    // bracket; every probe below it is filtered from it (coverage grows with the dilation).
+    const CandidateSet& set;
+    const SelectOptions& opt;
+    const Monitor& monitor;
+    const Clock::time_point t0 = Clock::now();
+    const size_t n;
+    std::vector<Vec3> centers;
+    std::vector<double> radii, dilated;
+    CoverOptions cover;
+};
+
+// One cover at the options' dilation.
+Status select_plain(Selecting& s, Selection& out) {
+    const SelectOptions& opt = s.opt;
+    const double value = opt.dilation == Dilation::offset ? opt.delta : opt.scale;
+    s.make_radii(value);
+    Coverage cov;
+    Status st = build_coverage(s.set.cover_samples, s.centers, s.dilated, s.monitor, cov, opt.threads);
+    if (!st.ok()) return st;
+    out.time_coverage_s = seconds_since(s.t0);
+    if (s.monitor.cancelled()) return s.monitor.stop_status("selection");
+    st = solve_coverage(cov, s.set, opt, s.cover, s.monitor, out.cover, out.parts);
+    if (!st.ok()) return st;
+    out.probes = 1;
+    if (!s.solved_report()) return s.monitor.stop_status("selection");
+    s.finish(value, s.dilated, out);
+    return Status::success();
+}
+
+// Target size: bracket, then bisect. `big` is the coverage at the upper end of the
+// bracket; every probe below it is filtered from it (coverage grows with the dilation).
+Status select_target_count(Selecting& s, Selection& out) {
+    const SelectOptions& opt = s.opt;
+    const Monitor& monitor = s.monitor;
+    const Dilation dil = opt.dilation;
     const uint32_t K = opt.target_count;
     const double lowest = dil == Dilation::offset ? 0.0 : 1.0;
     const double highest = dil == Dilation::offset ? 4.0 : 1e6;  // offset 4 > the unit cube's diagonal
@@ -269,20 +284,20 @@ Status select_balls(const CandidateSet& set, const SelectOptions& opt, const Mon
     std::vector<double> best_radii;
     auto probe = [&](double value, bool rebuild, bool& fits) -> Status {
         if (monitor.stopped()) return monitor.stop_status("selection");
-        make_radii(value);
+        s.make_radii(value);
         const auto tc = Clock::now();
         Coverage cov;
         if (rebuild) {
-            Status st = build_coverage(set.cover_samples, centers, dilated, monitor, big, opt.threads);
+            Status st = build_coverage(s.set.cover_samples, s.centers, s.dilated, monitor, big, opt.threads);
             if (!st.ok()) return st;
         } else {
-            cov = shrink_coverage(big, set.cover_samples, centers, dilated);
+            cov = shrink_coverage(big, s.set.cover_samples, s.centers, s.dilated);
         }
         t_cov += seconds_since(tc);
         CoverResult res;
         uint32_t parts = 0;
         ++out.probes;
-        Status st = solve_coverage(rebuild ? big : cov, set, opt, cover, monitor, res, parts);
+        Status st = solve_coverage(rebuild ? big : cov, s.set, opt, s.cover, monitor, res, parts);
         if (st.code == Code::uncoverable) { fits = false; return Status::success(); }
         if (!st.ok()) return st;
         fits = res.objective <= double(K);
@@ -290,7 +305,7 @@ Status select_balls(const CandidateSet& set, const SelectOptions& opt, const Mon
             best = std::move(res);
             best_parts = parts;
             best_value = value;
-            best_radii = dilated;
+            best_radii = s.dilated;
         }
         return Status::success();
     };
@@ -326,9 +341,24 @@ Status select_balls(const CandidateSet& set, const SelectOptions& opt, const Mon
     out.cover = std::move(best);
     out.parts = best_parts;
     out.time_coverage_s = t_cov;
-    if (!solved_report()) return monitor.stop_status("selection");
-    finish(best_value, best_radii);
+    if (!s.solved_report()) return monitor.stop_status("selection");
+    s.finish(best_value, best_radii, out);
     return Status::success();
+}
+
+}  // namespace
+
+double dilate(double radius, const SelectOptions& opt) {
+    return dilate_with(radius, opt.dilation, opt.dilation == Dilation::offset ? opt.delta : opt.scale);
+}
+
+Status select_balls(const CandidateSet& set, const SelectOptions& opt, const Monitor& monitor, Selection& out) {
+    out = Selection{};
+    const Status st = check_select(set, opt);
+    if (!st.ok()) return st;
+    Selecting s(set, opt, monitor);   // starts the clock of out.time_total_s
+    if (!monitor.report("selection", 0)) return monitor.stop_status("selection");
+    return opt.target_count == 0 ? select_plain(s, out) : select_target_count(s, out);
 }
 
 }  // namespace ca

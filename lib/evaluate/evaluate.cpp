@@ -29,7 +29,7 @@ struct EvaluationSurface {
     std::vector<Vec3> vertices;           // the input's (the point cloud's nearest-point tree reads them)
     bool mesh = false;                    // triangles: exact point-to-triangle distances
     std::vector<Vec3> samples;            // area-uniform samples plus the input vertices
-    std::unique_ptr<MeshDistance> distance;      // mesh
+    std::shared_ptr<const MeshDistance> distance;  // mesh
     std::unique_ptr<PointTree> input_points;     // point cloud
     std::unique_ptr<PointTree> sample_points;    // hd_only's bound on the distance to the surface
     double diag = 0, tol = 0;
@@ -49,7 +49,9 @@ void raise_to(std::atomic<double>& m, double x) {
     }
 }
 
-Status prepare_impl(const Mesh& surface, const EvaluateOptions& opt, std::shared_ptr<EvaluationSurface>& out) {
+// `distance`: the surface's distance query, or null (built here for a mesh).
+Status prepare_impl(const Mesh& surface, const EvaluateOptions& opt, std::shared_ptr<const MeshDistance> distance,
+                    std::shared_ptr<EvaluationSurface>& out) {
     if (surface.vertices.empty()) return fail(Code::degenerate_input, "evaluate: empty surface");
     const size_t nv = surface.vertices.size();
     for (const Vec3& v : surface.vertices)
@@ -74,7 +76,7 @@ Status prepare_impl(const Mesh& surface, const EvaluateOptions& opt, std::shared
     // ---- surface samples: area-uniform points on the triangles plus the input vertices ----
     if (s->mesh) s->samples = sample_surface(surface, opt.surface_samples, opt.seed ^ 0xBB67AE8584CAA73Bull);
     s->samples.insert(s->samples.end(), s->vertices.begin(), s->vertices.end());
-    if (s->mesh) s->distance = std::make_unique<MeshDistance>(surface);
+    if (s->mesh) s->distance = distance ? std::move(distance) : std::make_shared<const MeshDistance>(surface);
     else s->input_points = std::make_unique<PointTree>(s->vertices);
     out = std::move(s);
     return Status::success();
@@ -235,9 +237,10 @@ Status evaluate_impl(const EvaluationSurface& surface, const Skeleton& skeleton_
 
 }  // namespace
 
-Status prepare_evaluation(const Mesh& surface, const EvaluateOptions& opt, std::shared_ptr<const EvaluationSurface>& out) {
+Status prepare_evaluation(const Mesh& surface, const EvaluateOptions& opt, std::shared_ptr<const EvaluationSurface>& out,
+                          const ShapeQueries* queries) {
     std::shared_ptr<EvaluationSurface> s;
-    const Status st = prepare_impl(surface, opt, s);
+    const Status st = prepare_impl(surface, opt, queries ? queries->distance : nullptr, s);
     if (!st.ok()) return st;
     if (s->mesh) s->sample_points = std::make_unique<PointTree>(s->samples);
     out = std::move(s);
@@ -252,18 +255,33 @@ Status evaluate(const EvaluationSurface& surface, const Skeleton& skeleton, cons
     return st;
 }
 
-Status evaluate(const Mesh& surface, const Skeleton& skeleton, const EvaluateOptions& opt,
-                const Monitor& monitor, EvaluateResult& out) {
+namespace {
+
+// evaluate() on an unprepared surface, with its distance query or null
+Status evaluate_unprepared(const Mesh& surface, std::shared_ptr<const MeshDistance> distance, const Skeleton& skeleton,
+                           const EvaluateOptions& opt, const Monitor& monitor, EvaluateResult& out) {
     const auto t0 = Clock::now();
     Status st;
     std::shared_ptr<EvaluationSurface> prepared;
     if (skeleton.balls.empty()) st = fail(Code::invalid_argument, "evaluate: empty skeleton");
     else if (opt.envelope_samples == 0 && !surface.vertices.empty())
         st = fail(Code::invalid_argument, "evaluate: envelope_samples must be positive");
-    else st = prepare_impl(surface, opt, prepared);
+    else st = prepare_impl(surface, opt, std::move(distance), prepared);
     if (st.ok()) st = evaluate_impl(*prepared, skeleton, opt, monitor, out, false);
     out.time_s = seconds_since(t0);
     return st;
+}
+
+}  // namespace
+
+Status evaluate(const Mesh& surface, const Skeleton& skeleton, const EvaluateOptions& opt,
+                const Monitor& monitor, EvaluateResult& out) {
+    return evaluate_unprepared(surface, nullptr, skeleton, opt, monitor, out);
+}
+
+Status evaluate(const Mesh& surface, const ShapeQueries& queries, const Skeleton& skeleton,
+                const EvaluateOptions& opt, const Monitor& monitor, EvaluateResult& out) {
+    return evaluate_unprepared(surface, queries.distance, skeleton, opt, monitor, out);
 }
 
 }  // namespace ca

@@ -5,6 +5,7 @@
 // to the input surface (exact point-to-triangle distances through an AABB tree).
 #pragma once
 #include "common.h"
+#include "shape_queries.h"
 #include "skeleton.h"
 
 #include <memory>
@@ -48,12 +49,18 @@ struct EvaluateResult {
 // Mesh input (triangles non-empty) or point cloud (triangles empty: distance to nearest point).
 Status evaluate(const Mesh& surface, const Skeleton& skeleton, const EvaluateOptions& opt,
                 const Monitor& monitor, EvaluateResult& out);
+// The same on a candidate set's surface (the mesh `queries` were built on, shape_queries.h): its
+// distance query is used, not built again (the searches evaluate every probe).
+Status evaluate(const Mesh& surface, const ShapeQueries& queries, const Skeleton& skeleton,
+                const EvaluateOptions& opt, const Monitor& monitor, EvaluateResult& out);
 
 // What evaluate() draws from the surface alone (its samples at opt.surface_samples and opt.seed,
 // the distance structure, the diagonal), built once to measure many skeletons against one
 // surface: the delta searches (lib/search) and the thorough fit measure one skeleton per probe.
+// With `queries` (built on `surface`: a candidate set's), its distance query is used, not built again.
 struct EvaluationSurface;
-Status prepare_evaluation(const Mesh& surface, const EvaluateOptions& opt, std::shared_ptr<const EvaluationSurface>& out);
+Status prepare_evaluation(const Mesh& surface, const EvaluateOptions& opt, std::shared_ptr<const EvaluationSurface>& out,
+                          const ShapeQueries* queries = nullptr);
 
 // evaluate() on a prepared surface (opt's surface_samples and seed must be those it was prepared
 // with). hd_only: only hd_two_sided (and the one-sided maxima) are computed; the means are left 0.

@@ -39,7 +39,7 @@ Status fit_skeleton(const CandidateSet& set, const Selection& sel, const FitOpti
     EvaluateOptions eo;
     eo.threads = opt.threads;
     std::shared_ptr<const EvaluationSurface> surface;
-    st = prepare_evaluation(set.surface.mesh, eo, surface);
+    st = prepare_evaluation(set.surface.mesh, eo, surface, &set.queries);
     if (!st.ok()) return st;
     // the HD only: the same maxima, without the means
     EvaluateResult first_eval, second_eval;

@@ -80,12 +80,9 @@ class Fitter {
 public:
     Fitter(const CandidateSet& set, const FitOptions& opt, const Monitor& monitor, int threads)
         : set_(set), opt_(opt), monitor_(monitor), threads_(threads) {
-        const Mesh& mesh = set.surface.mesh;
-        if (set.winding) winding_ = set.winding;
-        else winding_ = std::make_shared<WindingNumber>(mesh);
-        if (set.distance) distance_ = set.distance;
-        else distance_ = std::make_shared<MeshDistance>(mesh);
-        surface_ = sample_surface(mesh, opt.surface_samples, opt.seed ^ 0x3C6EF372FE94F82Bull);
+        winding_ = set.queries.winding;
+        distance_ = set.queries.distance;
+        surface_ = sample_surface(set.surface.mesh, opt.surface_samples, opt.seed ^ 0x3C6EF372FE94F82Bull);
     }
 
     // The residuals of the skeleton with these balls and their maximum |r|, drawing `drawn`
@@ -334,8 +331,7 @@ Status fit_impl(const CandidateSet& set, const Selection& sel, const FitOptions&
                 Skeleton& sk, FitStats& stats, const FitHold* hold) {
     const auto t0 = Clock::now();
     stats = FitStats{};
-    if (set.surface.point_cloud || set.surface.mesh.triangles.empty() || sk.balls.empty() ||
-        opt.iterations == 0)
+    if (!set.surface.kind().is_mesh() || sk.balls.empty() || opt.iterations == 0)
         return Status::success();
     if (!(opt.power >= 2) || !(opt.regularization >= 0) || !(opt.radius_tolerance >= 0))
         return fail(Code::invalid_argument, "fit: power must be >= 2, regularization and radius_tolerance >= 0");

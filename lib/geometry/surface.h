@@ -23,6 +23,27 @@ enum class NormalSource : int32_t { none = 0, given = 1, oriented = 2, estimated
 // or not at all (estimated).
 enum class PointNormals : int32_t { trusted = 0, unoriented = 1, estimate = 2 };
 
+// What the input is, read once from the prepared surface (Surface::kind): a closed or an open
+// triangle mesh, a point cloud (its normals given, re-oriented or estimated), or nothing but the
+// caller's arrays (samples and balls, no surface). Every stage asks this, not which arrays are
+// empty, so the meaning of each mode is written in one place.
+enum class InputKind : int32_t { arrays = 0, mesh = 1, open_mesh = 2, cloud = 3 };
+
+class SurfaceKind {
+public:
+    explicit SurfaceKind(InputKind input, NormalSource normals = NormalSource::none) : input_(input), normals_(normals) {}
+    InputKind input() const { return input_; }
+    bool is_mesh() const { return input_ == InputKind::mesh || input_ == InputKind::open_mesh; }   // triangles
+    bool is_open_mesh() const { return input_ == InputKind::open_mesh; }   // a mesh with holes (hole caps)
+    bool is_cloud() const { return input_ == InputKind::cloud; }
+    bool is_arrays() const { return input_ == InputKind::arrays; }
+    bool has_surface() const { return !is_arrays(); }   // a mesh or a cloud to measure against
+    NormalSource normals() const { return normals_; }   // point clouds: given, re-oriented or estimated
+private:
+    InputKind input_;
+    NormalSource normals_;
+};
+
 struct Surface {
     Mesh mesh;                    // internal units; empty triangles for a point cloud
     std::vector<Vec3> normals;    // point clouds: unit outward normals, one per vertex
@@ -50,6 +71,13 @@ struct Surface {
     Mesh caps;
     MeshTopology topology;
     Normalization norm;
+    // A point cloud is marked point_cloud; a mesh has triangles (open: hole caps); caller arrays
+    // have neither.
+    SurfaceKind kind() const {
+        if (point_cloud) return SurfaceKind(InputKind::cloud, normals_source);
+        if (mesh.triangles.empty()) return SurfaceKind(InputKind::arrays);
+        return SurfaceKind(caps.triangles.empty() ? InputKind::mesh : InputKind::open_mesh);
+    }
 };
 
 // Validates raw caller data (finite coordinates, indices in range, non-degenerate, a point cloud

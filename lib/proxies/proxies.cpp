@@ -78,8 +78,6 @@ Status make_proxies(const Mesh& mesh, ShapeQueries shape, const Skeleton& skelet
     Status st = check_request(mesh, skeleton, opt);
     if (!st.ok()) return st;
     const int threads = resolve_threads(opt.threads);
-    if (!shape.distance) shape.distance = std::make_shared<const MeshDistance>(mesh);
-    if (!shape.winding) shape.winding = std::make_shared<const WindingNumber>(mesh);
     if (!monitor.report("proxies", 0.0)) return monitor.stop_status("proxies");
 
     // ---- candidates and their outside bounds; the skeleton's own bound ----

@@ -14,6 +14,7 @@
 //   proxies.cpp           the whole step: candidates, choice, conservative growth, stats
 #pragma once
 #include "common.h"
+#include "shape_queries.h"
 #include "skeleton.h"
 
 #include <memory>
@@ -96,13 +97,6 @@ SurfaceCells surface_cells(const Mesh& mesh, size_t target);
 // The candidates (proxy_candidates.cpp): a sphere per ball; with capsules, a capsule per edge and
 // per pair of balls joined by a path of edges (the nearest few along the paths from each ball).
 std::vector<Proxy> proxy_candidates(const Skeleton& skeleton, ProxyShapes shapes);
-
-// The inside test and distances the outside bounds need (proxy_outside.cpp).
-struct ShapeQueries {
-    std::shared_ptr<const WindingNumber> winding;
-    std::shared_ptr<const MeshDistance> distance;
-    double depth(const Vec3& x) const;  // distance to the surface, negative outside
-};
 
 // A bound of the farthest any point of p lies outside the shape (0: all inside): every point of
 // p lies in a ball of the segment's interpolation, and a ball whose centre is at depth D sticks

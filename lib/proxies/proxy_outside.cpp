@@ -32,11 +32,6 @@ constexpr double kMeasureStep = 0.02;
 
 }  // namespace
 
-double ShapeQueries::depth(const Vec3& x) const {
-    const double d = distance->distance(x);
-    return winding->inside(x) ? d : -d;
-}
-
 double outside_bound(const Proxy& p, const ShapeQueries& shape, double enough) {
     if (p.kind == ProxyKind::sphere) return std::max(0.0, p.a.radius - shape.depth(p.a.center));
     const Vec3 e = p.b.center - p.a.center;

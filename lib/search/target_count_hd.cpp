@@ -34,7 +34,7 @@ Status select_target_count_hd(const CandidateSet& set, const SelectOptions& opt,
     if (opt.target_count == 0) return fail(Code::invalid_argument, "the lowest-HD search needs target_count > 0");
     if (opt.dilation != Dilation::offset)
         return fail(Code::invalid_argument, "the lowest-HD search for target_count varies delta: it needs the offset dilation");
-    if (set.surface.mesh.vertices.empty())
+    if (!set.surface.kind().has_surface())
         return fail(Code::invalid_argument,
                     "the lowest-HD search measures the skeleton against the surface: the candidate set has none (caller arrays)");
     if (tc.max_probes == 0) return fail(Code::invalid_argument, "max_probes must be at least 1");
@@ -42,7 +42,7 @@ Status select_target_count_hd(const CandidateSet& set, const SelectOptions& opt,
 
     // the surface's samples and distance structure, once for every probe
     std::shared_ptr<const EvaluationSurface> surface;
-    Status st = prepare_evaluation(set.surface.mesh, tc.evaluate, surface);
+    Status st = prepare_evaluation(set.surface.mesh, tc.evaluate, surface, &set.queries);
     if (!st.ok()) return st;
     const EvaluateOptions coarse = coarse_evaluation(tc.evaluate, tc.coarse_envelope_samples);
     const size_t K = opt.target_count;

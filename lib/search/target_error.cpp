@@ -23,13 +23,13 @@ Status select_target_error(const CandidateSet& set, const SelectOptions& opt, co
     if (!(std::isfinite(opt.delta) && opt.delta > 0)) return fail(Code::invalid_argument, "delta must be a finite number > 0");
     if (!(std::isfinite(opt.target_tolerance) && opt.target_tolerance > 0))
         return fail(Code::invalid_argument, "target_tolerance must be a finite number > 0");
-    if (set.surface.mesh.vertices.empty())
+    if (!set.surface.kind().has_surface())
         return fail(Code::invalid_argument,
                     "target_error measures the skeleton against the surface: the candidate set has none (caller arrays)");
     if (te.max_probes == 0) return fail(Code::invalid_argument, "max_probes must be at least 1");
 
     std::shared_ptr<const EvaluationSurface> surface;
-    Status prepared = prepare_evaluation(set.surface.mesh, te.evaluate, surface);
+    Status prepared = prepare_evaluation(set.surface.mesh, te.evaluate, surface, &set.queries);
     if (!prepared.ok()) return prepared;
     SelectOptions probe_opt = opt;
     DeltaProbe last, best;

@@ -50,7 +50,7 @@ Status candidates_step(SurfaceInput surface, const CandidateOptions& opt, const 
     if (out.surface_balls)
         monitor.note(1, std::to_string(out.surface_balls) +
                             " surface balls for samples no inner ball reaches (open sheets or thin parts)");
-    if (out.delaunay_failed)
+    if (out.report.delaunay_failed)
         monitor.note(2, "the Delaunay step failed (Qhull, after its retries); the candidates are fallback and surface balls");
     return Status::success();
 }

@@ -8,7 +8,7 @@
 namespace ca {
 
 std::optional<FitOptions> fit_options(const ConnectRequest& request, const CandidateSet& set, const Selection* selection) {
-    const bool mesh = !set.surface.point_cloud && !set.surface.mesh.triangles.empty();
+    const bool mesh = set.surface.kind().is_mesh();
     FitMode mode = request.fit;
     if (mode == FitMode::automatic)
         mode = !selection                     ? FitMode::off

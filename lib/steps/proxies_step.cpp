@@ -8,7 +8,7 @@ namespace ca {
 Status proxies_step(const CandidateSet& set, const Skeleton& skeleton, const ProxyOptions& opt,
                     const Monitor& monitor, ProxyResult& out) {
     out = ProxyResult{};
-    if (set.surface.mesh.triangles.empty())
+    if (!set.surface.kind().is_mesh())
         return fail(Code::invalid_argument,
                     "engine proxies need a candidate set made from a triangle mesh (not a point cloud or caller arrays)");
     const Normalization& n = set.surface.norm;
@@ -17,8 +17,7 @@ Status proxies_step(const CandidateSet& set, const Skeleton& skeleton, const Pro
         b.center = n.to_internal(b.center);
         b.radius /= n.scale;
     }
-    ShapeQueries shape{set.winding, set.distance};
-    Status st = make_proxies(set.surface.mesh, shape, sk, opt, monitor, out);
+    Status st = make_proxies(set.surface.mesh, set.queries, sk, opt, monitor, out);
     if (!st.ok()) return st;
     for (Proxy& p : out.proxies)
         for (Ball* b : {&p.a, &p.b}) {

@@ -53,7 +53,7 @@ Status select_step(const CandidateSet& set, const SelectRequest& request, const 
     // target_count with the offset dilation on a set with a surface: the lowest HD within K balls
     // (the scale dilation and caller arrays keep the plain smallest dilation)
     const bool lowest_hd =
-        !target_error && so.target_count > 0 && so.dilation == Dilation::offset && !set.surface.mesh.vertices.empty();
+        !target_error && so.target_count > 0 && so.dilation == Dilation::offset && set.surface.kind().has_surface();
     // the searches judge each probe as connect_step (default request, fit = probe_fit) and
     // evaluate_step (default options) would
     ConnectRequest probe;

@@ -9,6 +9,7 @@
 
 #include "coverage_axis.h"
 #include "mesh_io.h"
+#include "surface_view.h"
 
 #include <atomic>
 #include <string>
@@ -44,12 +45,7 @@ Outcome run(const caio::MeshData& mesh, int threads) {
         o.status = CA_ERROR_OUT_OF_MEMORY;
         return o;
     }
-    ca_surface_view v;
-    ca_surface_view_init(&v);
-    v.positions = mesh.positions.data();
-    v.vertex_count = mesh.positions.size() / 3;
-    v.triangles = mesh.triangles.data();
-    v.triangle_count = mesh.triangles.size() / 3;
+    const ca_surface_view v = caio::surface_view(mesh);
     ca_candidate_options co;
     ca_candidate_options_init(&co);
     co.voronoi_samples = 1000;

@@ -1,9 +1,13 @@
-// shapes.h: procedural closed test meshes with known medial axes (sphere: its centre; capsule:
-// its axis segment; torus: its core circle), outward-facing.
+// shapes.h: procedural closed test meshes, one copy for every test, with known medial axes
+// (sphere and icosphere: the centre; capsule: its axis segment; torus: its core circle), outward-facing.
 #pragma once
 #include "common.h"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <utility>
+#include <vector>
 
 namespace shapes {
 
@@ -71,6 +75,44 @@ inline ca::Mesh torus(double R, double r, int major = 96, int minor = 32) {
             m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
             m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
         }
+    return m;
+}
+
+// The same torus with its centre moved to `centre`.
+inline ca::Mesh torus(double R, double r, int major, int minor, const ca::Vec3& centre) {
+    ca::Mesh m = torus(R, r, major, minor);
+    for (ca::Vec3& v : m.vertices) v = centre + v;
+    return m;
+}
+
+// Icosphere of radius `radius` around `centre`: the icosahedron subdivided `levels` times (20 *
+// 4^levels triangles), each new vertex the normalised midpoint of an edge.
+inline ca::Mesh icosphere(double radius, int levels, const ca::Vec3& centre = ca::Vec3::Zero()) {
+    const double t = (1 + std::sqrt(5.0)) / 2;
+    ca::Mesh m;
+    m.vertices = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+                  {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+    for (auto& v : m.vertices) v.normalize();
+    m.triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                   {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+                   {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+    for (int l = 0; l < levels; ++l) {
+        std::map<std::pair<uint32_t, uint32_t>, uint32_t> mid;
+        auto midpoint = [&](uint32_t a, uint32_t b) {
+            const auto key = std::minmax(a, b);
+            const auto it = mid.find(key);
+            if (it != mid.end()) return it->second;
+            m.vertices.push_back((m.vertices[a] + m.vertices[b]).normalized());
+            return mid[key] = uint32_t(m.vertices.size() - 1);
+        };
+        std::vector<ca::Tri> next;
+        for (const ca::Tri& f : m.triangles) {
+            const uint32_t a = midpoint(f[0], f[1]), b = midpoint(f[1], f[2]), c = midpoint(f[2], f[0]);
+            next.insert(next.end(), {ca::Tri{f[0], a, c}, ca::Tri{f[1], b, a}, ca::Tri{f[2], c, b}, ca::Tri{a, b, c}});
+        }
+        m.triangles = next;
+    }
+    for (auto& v : m.vertices) v = centre + radius * v;
     return m;
 }
 

@@ -115,7 +115,16 @@ TEST_CASE("an inward-facing mesh is detected and gives the same skeleton") {
     REQUIRE(ca::prepare_surface(flipped, {}, s).ok());
     CHECK(s.flipped);
     Run a = run(m), b = run(flipped);
-    CHECK(a.skeleton.balls.size() == b.skeleton.balls.size());
+    // flipping back restores the very triangles of m, so every step computes the same values:
+    // the same balls to the bit, the same edges and faces
+    REQUIRE(a.skeleton.balls.size() == b.skeleton.balls.size());
+    for (size_t i = 0; i < a.skeleton.balls.size(); ++i) {
+        CAPTURE(i);
+        CHECK(a.skeleton.balls[i].center == b.skeleton.balls[i].center);
+        CHECK(a.skeleton.balls[i].radius == b.skeleton.balls[i].radius);
+    }
+    CHECK(a.skeleton.edges == b.skeleton.edges);
+    CHECK(a.skeleton.faces == b.skeleton.faces);
 }
 
 TEST_CASE("random interior candidates: radius is the exact distance to the surface") {

@@ -265,15 +265,15 @@ std::pair<double, double> reach(const Run& r) {
 
 TEST_CASE("point cloud: noise and far outliers make no ball outside the sphere, outliers are counted") {
     const Run clean = run(sphere_cloud(kNoisyR, 5000));
-    CHECK(clean.set.outliers == 0);
-    CHECK(clean.set.outside_local_plane == 0);   // a clean cloud is not noisy: nothing dropped or projected
+    CHECK(clean.set.report.outliers == 0);
+    CHECK(clean.set.report.outside_local_plane == 0);   // a clean cloud is not noisy: nothing dropped or projected
     const Run noisy = run(noisy_sphere());
     // noise defeats the sign check, not the orientation: the exact normals are kept as given
     CHECK(noisy.set.surface.normals_source == ca::NormalSource::given);
     CHECK(noisy.set.surface.sign_check_inconclusive);
-    CHECK(noisy.set.outliers >= 40);   // 50 far outliers planted, a few noise points may join them
-    CHECK(noisy.set.outliers <= 150);
-    CHECK(noisy.set.outside_local_plane > 0);
+    CHECK(noisy.set.report.outliers >= 40);   // 50 far outliers planted, a few noise points may join them
+    CHECK(noisy.set.report.outliers <= 150);
+    CHECK(noisy.set.report.outside_local_plane > 0);
     REQUIRE(!noisy.skeleton.balls.empty());
     const auto [outer, centre] = reach(noisy);
     CHECK(centre < kNoisyR);
@@ -291,7 +291,7 @@ TEST_CASE("point cloud: without the outlier filter the far outliers do make ball
     ca::CandidateSet set;
     const ca::Status st = ca::generate_candidates(std::move(surface), copt, ca::Monitor{}, set);
     REQUIRE_MESSAGE(st.ok(), st.message);
-    CHECK(set.outliers == 0);
+    CHECK(set.report.outliers == 0);
     double outer = 0;
     for (const ca::Ball& b : set.balls)
         outer = std::max(outer, set.surface.norm.to_user(b.center).norm() + b.radius * set.surface.norm.scale);
@@ -309,7 +309,7 @@ TEST_CASE("point cloud: orientation probes of a noisy thin box stay inside it") 
     ca::CandidateSet set;
     st = ca::generate_candidates(std::move(surface), {}, ca::Monitor{}, set);
     REQUIRE_MESSAGE(st.ok(), st.message);
-    CHECK(set.orientation_inconsistent < 0.18);   // at the full depth: 0.24
+    CHECK(set.report.orientation_inconsistent < 0.18);   // at the full depth: 0.24
 }
 
 // A noisy cloud gets a skeleton at the defaults, not a refusal: on a 5000-point box with 0.5 %
@@ -319,7 +319,7 @@ TEST_CASE("point cloud: orientation probes of a noisy thin box stay inside it") 
 TEST_CASE("point cloud: a noisy box is covered at the defaults and no ball leaves it") {
     const double sx = 1.0, sy = 0.5, sz = 0.25, sigma = 0.005 * std::sqrt(sx * sx + sy * sy + sz * sz);
     const Run r = run(shapes::noisy_cloud(shapes::sample_cloud(shapes::box(sx, sy, sz), 5000, 3), 0.005, 0.0));
-    CHECK(r.set.fallback_balls > 0);
+    CHECK(r.set.report.fallback_balls > 0);
     REQUIRE(!r.skeleton.balls.empty());
     const ca::Vec3 hi(sx, sy, sz);
     double out = 0;   // how far the farthest ball reaches outside the box, axis by axis
@@ -470,7 +470,7 @@ TEST_CASE("point cloud: fallback balls of estimated or re-oriented normals are g
     for (const auto& k : cases) {
         INFO(std::string(k.name));
         const Run r = run(k.cloud, {}, k.trust);
-        CHECK(r.set.fallback_balls > 0);
+        CHECK(r.set.report.fallback_balls > 0);
         CHECK(r.sel.cover.uncovered.empty());
         size_t outside = 0;
         double farthest = 0;
@@ -547,7 +547,7 @@ TEST_CASE("point cloud: an open hemisphere's reconstruction stays within 5 % of 
     const std::vector<ca::Vec3> points = c.points;
     for (ca::ConnectMethod route : {ca::ConnectMethod::automatic, ca::ConnectMethod::power}) {
         const Run r = run(c, {}, ca::PointNormals::trusted, route);
-        CHECK(r.set.beyond_reach > 0);
+        CHECK(r.set.report.beyond_reach > 0);
         check_every_sample_covered(r);
         CHECK(recon_to_cloud(points, r.skeleton) <= 5.0);
     }

@@ -14,7 +14,7 @@ from . import job
 bl_info = {
     "name": "Coverage Axis",
     "author": "The coverage-axis authors",
-    "version": (0, 1, 0),
+    "version": (0, 2, 0),
     "blender": (3, 4, 0),
     "location": "View3D > Object > Skeletonize (Coverage Axis); Sidebar > Coverage Axis",
     "description": "Medial skeletons (balls, edges, faces) of meshes by Coverage Axis (Dou et al., EG 2022)",

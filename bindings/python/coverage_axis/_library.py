@@ -151,8 +151,9 @@ def _open(path):
         for name, (res, args) in _SIGNATURES.items():
             f = getattr(lib, name)
             f.restype, f.argtypes = res, args
-        if lib.ca_abi_version() != ABI_VERSION:
-            tried.append("%s %s: ABI version %d, this binding needs %d" %
+        # a library of a later ABI also serves: it accepts every struct layout it ever published
+        if lib.ca_abi_version() < ABI_VERSION:
+            tried.append("%s %s: ABI version %d, this binding needs %d or later" %
                          (where, candidate, lib.ca_abi_version(), ABI_VERSION))
             continue
         return lib, candidate

@@ -71,7 +71,7 @@ TEST_CASE("Voronoi candidates are empty balls: radius <= distance to the nearest
     REQUIRE(!set.dense_samples.empty());
     const ca::PointTree tree(set.dense_samples);
     const ca::WindingNumber winding(set.surface.mesh);
-    for (size_t i = 0; i + set.fallback_balls < set.balls.size(); ++i) {
+    for (size_t i = 0; i + set.report.fallback_balls < set.balls.size(); ++i) {
         const ca::Ball& b = set.balls[i];
         size_t idx;
         double d2;
@@ -200,10 +200,10 @@ TEST_CASE("open mesh: no candidate ball reaches out through a hole, closed meshe
         ca::CandidateSet set;
         REQUIRE(ca::generate_candidates(std::move(surface), {}, ca::Monitor{}, set).ok());
         if (m == &closed) {
-            CHECK(set.hole_clamped == 0);
+            CHECK(set.report.hole_clamped == 0);
             continue;
         }
-        CHECK(set.hole_clamped > 0);
+        CHECK(set.report.hole_clamped > 0);
         double plane = -1e9;   // the rim's x, internal units
         for (const ca::Tri& t : set.surface.mesh.triangles)
             for (uint32_t v : t) plane = std::max(plane, set.surface.mesh.vertices[v].x());

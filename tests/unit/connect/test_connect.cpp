@@ -404,7 +404,7 @@ TEST_CASE("test_connect: on an open mesh no element's reconstruction bulges out 
     REQUIRE(ca::signed_volume(tube) + ca::signed_volume(ca::hole_caps(tube)) < 0);
     const Prepared p = prepare(tube, ca::Solver::greedy);
     CHECK(p.set.surface.flipped);
-    REQUIRE(p.set.cap_distance);
+    REQUIRE(p.set.queries.cap_distance);
     const ca::Skeleton sk = connect(p, ca::ConnectMethod::medial);
     // the capped solid, internal units
     ca::Mesh solid = p.set.surface.mesh;

@@ -13,6 +13,7 @@ ca::CandidateSet shape(ca::Mesh mesh) {
     ca::CandidateSet set;
     set.surface.topology = ca::mesh_topology(mesh);
     set.surface.mesh = std::move(mesh);
+    REQUIRE(ca::build_mesh_queries(set.surface.mesh, 1, {}, set.queries));   // as the candidate step builds them
     return set;
 }
 

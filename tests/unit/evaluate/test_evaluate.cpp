@@ -4,6 +4,7 @@
 
 #include "evaluate.h"
 #include "rng.h"
+#include "support/shapes.h"
 
 #include <Eigen/Geometry>
 
@@ -11,7 +12,6 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
-#include <map>
 
 using namespace ca;
 
@@ -42,40 +42,6 @@ double brute_slab(const Vec3& p, const Vec3& c1, double r1, const Vec3& c2, doub
             best = std::min(best, (p - cc).norm() - (a * r1 + b * r2 + c * r3));
         }
     return best;
-}
-
-// An icosphere of radius R (subdivided `level` times), centred at the origin.
-Mesh icosphere(double R, int level) {
-    Mesh m;
-    const double g = (1 + std::sqrt(5.0)) / 2;
-    m.vertices = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
-                  {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
-    m.triangles = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9},
-                   {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2},
-                   {3, 2, 6}, {3, 6, 8}, {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10},
-                   {8, 6, 7}, {9, 8, 1}};
-    for (auto& v : m.vertices) v.normalize();
-    for (int l = 0; l < level; ++l) {
-        std::map<std::pair<uint32_t, uint32_t>, uint32_t> mid;
-        auto midpoint = [&](uint32_t a, uint32_t b) {
-            auto key = std::make_pair(std::min(a, b), std::max(a, b));
-            auto it = mid.find(key);
-            if (it != mid.end()) return it->second;
-            m.vertices.push_back((m.vertices[a] + m.vertices[b]).normalized());
-            return mid[key] = uint32_t(m.vertices.size() - 1);
-        };
-        std::vector<Tri> tris;
-        for (const Tri& t : m.triangles) {
-            const uint32_t a = midpoint(t[0], t[1]), b = midpoint(t[1], t[2]), c = midpoint(t[2], t[0]);
-            tris.push_back({t[0], a, c});
-            tris.push_back({t[1], b, a});
-            tris.push_back({t[2], c, b});
-            tris.push_back({a, b, c});
-        }
-        m.triangles = tris;
-    }
-    for (auto& v : m.vertices) v *= R;
-    return m;
 }
 
 Skeleton one_ball(double r) {
@@ -222,7 +188,7 @@ TEST_CASE("sd_slab of equal radii is the distance to a thick triangle") {
 }
 
 TEST_CASE("evaluate: one ball against a sphere mesh of the same radius") {
-    const Mesh sphere = icosphere(1.0, 3);
+    const Mesh sphere = shapes::icosphere(1.0, 3);
     const double sag = sagitta(sphere, 1.0);
     EvaluateOptions opt;
     opt.surface_samples = 5000;
@@ -243,7 +209,7 @@ TEST_CASE("evaluate: one ball against a sphere mesh of the same radius") {
 
 TEST_CASE("evaluate: ball of radius r against a sphere mesh of radius R") {
     const double R = 1.0;
-    const Mesh sphere = icosphere(R, 3);
+    const Mesh sphere = shapes::icosphere(R, 3);
     const double sag = sagitta(sphere, R);
     EvaluateOptions opt;
     opt.surface_samples = 5000;
@@ -312,7 +278,7 @@ TEST_CASE("evaluate: a slab skeleton agrees with itself as a mesh of its tangent
 }
 
 TEST_CASE("evaluate: a mesh inside a capsule (distances from inside points)") {
-    Mesh inner = icosphere(0.3, 3);
+    Mesh inner = shapes::icosphere(0.3, 3);
     const double sag = sagitta(inner, 0.3);
     for (auto& v : inner.vertices) v += Vec3(1, 0, 0);
     Skeleton s;
@@ -337,7 +303,7 @@ TEST_CASE("evaluate: a mesh inside a capsule (distances from inside points)") {
 }
 
 TEST_CASE("evaluate: errors and cancellation") {
-    const Mesh sphere = icosphere(1.0, 1);
+    const Mesh sphere = shapes::icosphere(1.0, 1);
     EvaluateResult r;
     CHECK(evaluate(sphere, Skeleton{}, EvaluateOptions{}, Monitor{}, r).code == Code::invalid_argument);
     CHECK(evaluate(Mesh{}, one_ball(1), EvaluateOptions{}, Monitor{}, r).code == Code::degenerate_input);

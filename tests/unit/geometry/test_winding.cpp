@@ -6,10 +6,10 @@
 #include "far_field.h"
 #include "winding.h"
 #include "rng.h"
+#include "support/shapes.h"
 #include <doctest/doctest.h>
 #include <Eigen/Geometry>
 #include <cmath>
-#include <map>
 
 using namespace ca;
 
@@ -22,52 +22,6 @@ Mesh unit_cube() {   // [0,1]^3, outward-facing
     for (int i = 0; i < 8; ++i) m.vertices.emplace_back(i & 1, (i >> 1) & 1, (i >> 2) & 1);
     m.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
                    {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
-    return m;
-}
-
-Mesh icosphere(int levels, const Vec3& centre, double radius) {   // 20 * 4^levels triangles
-    const double t = (1 + std::sqrt(5.0)) / 2;
-    Mesh m;
-    m.vertices = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                  {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
-    for (auto& v : m.vertices) v.normalize();
-    m.triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-                   {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-                   {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
-    for (int l = 0; l < levels; ++l) {
-        std::map<std::pair<uint32_t, uint32_t>, uint32_t> mid;
-        auto midpoint = [&](uint32_t a, uint32_t b) {
-            auto key = std::minmax(a, b);
-            auto it = mid.find(key);
-            if (it != mid.end()) return it->second;
-            m.vertices.push_back((m.vertices[a] + m.vertices[b]).normalized());
-            return mid[key] = uint32_t(m.vertices.size() - 1);
-        };
-        std::vector<Tri> next;
-        for (const Tri& f : m.triangles) {
-            const uint32_t a = midpoint(f[0], f[1]), b = midpoint(f[1], f[2]), c = midpoint(f[2], f[0]);
-            next.insert(next.end(), {Tri{f[0], a, c}, Tri{f[1], b, a}, Tri{f[2], c, b}, Tri{a, b, c}});
-        }
-        m.triangles = next;
-    }
-    for (auto& v : m.vertices) v = centre + radius * v;
-    return m;
-}
-
-Mesh torus(uint32_t nu, uint32_t nv, const Vec3& centre, double R, double r) {   // 2 nu nv triangles
-    Mesh m;
-    for (uint32_t i = 0; i < nu; ++i)
-        for (uint32_t j = 0; j < nv; ++j) {
-            const double u = 2 * kPi * i / nu, v = 2 * kPi * j / nv;
-            m.vertices.push_back(centre + Vec3((R + r * std::cos(v)) * std::cos(u),
-                                               (R + r * std::cos(v)) * std::sin(u), r * std::sin(v)));
-        }
-    auto id = [&](uint32_t i, uint32_t j) { return (i % nu) * nv + (j % nv); };
-    for (uint32_t i = 0; i < nu; ++i)
-        for (uint32_t j = 0; j < nv; ++j) {
-            m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-            m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-        }
     return m;
 }
 
@@ -139,7 +93,7 @@ TEST_CASE("winding: unit cube, inside 1, outside 0, signed volume 1, inverted -1
 }
 
 TEST_CASE("winding: sphere and torus, exact winding number matches the analytic inside test") {
-    const Mesh mesh = merge(icosphere(4, Vec3(0, 0, 0), 1.0), torus(64, 32, Vec3(3, 0, 0), 1.2, 0.4));
+    const Mesh mesh = merge(shapes::icosphere(1.0, 4, Vec3(0, 0, 0)), shapes::torus(1.2, 0.4, 64, 32, Vec3(3, 0, 0)));
     REQUIRE(mesh.triangles.size() == 5120 + 4096);
     CHECK(signed_volume(mesh) > 0);
     const WindingNumber w(mesh);
@@ -168,7 +122,7 @@ TEST_CASE("winding: sphere and torus, exact winding number matches the analytic 
 }
 
 TEST_CASE("winding: hierarchical approximation vs brute force (closed, open, soup)") {
-    const Mesh closed = merge(icosphere(4, Vec3(0, 0, 0), 1.0), torus(64, 32, Vec3(3, 0, 0), 1.2, 0.4));
+    const Mesh closed = merge(shapes::icosphere(1.0, 4, Vec3(0, 0, 0)), shapes::torus(1.2, 0.4, 64, 32, Vec3(3, 0, 0)));
     const Vec3 lo(-2, -2.5, -1.5), hi(5.5, 2.5, 1.5);
     int compared = 0, bad = 0;
     const double err2 = max_error(closed, 2.0, 800, lo, hi, 0.02, &compared, &bad);
@@ -179,7 +133,7 @@ TEST_CASE("winding: hierarchical approximation vs brute force (closed, open, sou
     CHECK(max_error(closed, 4.0, 200, lo, hi, 0.02) < err2);
 
     // open: a sphere with a cap removed (w varies continuously through the hole)
-    Mesh open = icosphere(4, Vec3(0, 0, 0), 1.0);
+    Mesh open = shapes::icosphere(1.0, 4, Vec3(0, 0, 0));
     std::vector<Tri> kept;
     for (const Tri& f : open.triangles)
         if ((open.vertices[f[0]] + open.vertices[f[1]] + open.vertices[f[2]]).z() / 3 < 0.7) kept.push_back(f);
@@ -202,7 +156,7 @@ TEST_CASE("winding: hierarchical approximation vs brute force (closed, open, sou
 }
 
 TEST_CASE("winding: far field, degenerate triangles, empty mesh, move") {
-    const Mesh sphere = icosphere(3, Vec3(0.3, -0.2, 0.1), 1.0);
+    const Mesh sphere = shapes::icosphere(1.0, 3, Vec3(0.3, -0.2, 0.1));
     const WindingNumber w(sphere);
     for (const Vec3& q : {Vec3(10, 0, 0), Vec3(0, -50, 3), Vec3(1e4, 1e4, 1e4)})
         CHECK(std::abs(w(q) - winding_number_brute_force(sphere, q)) < 1e-6);
@@ -247,7 +201,7 @@ TEST_CASE("winding: open meshes decide inside at w > 1/2, also where w lies in (
         if (cube.vertices[f[0]].z() + cube.vertices[f[1]].z() + cube.vertices[f[2]].z() < 3) sides.push_back(f);
     cube.triangles = sides;
     REQUIRE(cube.triangles.size() == 10);
-    Mesh bowl = icosphere(3, Vec3(0, 0, 0), 1.0);
+    Mesh bowl = shapes::icosphere(1.0, 3, Vec3(0, 0, 0));
     std::vector<Tri> lower;
     for (const Tri& f : bowl.triangles)
         if ((bowl.vertices[f[0]] + bowl.vertices[f[1]] + bowl.vertices[f[2]]).z() < 0) lower.push_back(f);
@@ -278,12 +232,12 @@ TEST_CASE("winding: inside(q) is w(q) > 1/2 exactly, also where w crosses 1/2 wi
         if (open_cube.vertices[f[0]].z() + open_cube.vertices[f[1]].z() + open_cube.vertices[f[2]].z() < 3)
             sides.push_back(f);
     open_cube.triangles = sides;
-    Mesh bowl = icosphere(2, Vec3(0, 0, 0), 1.0);
+    Mesh bowl = shapes::icosphere(1.0, 2, Vec3(0, 0, 0));
     std::vector<Tri> lower;
     for (const Tri& f : bowl.triangles)
         if ((bowl.vertices[f[0]] + bowl.vertices[f[1]] + bowl.vertices[f[2]]).z() < 0) lower.push_back(f);
     bowl.triangles = lower;
-    Mesh sphere = icosphere(3, Vec3(0.1, -0.2, 0.3), 1.0);
+    Mesh sphere = shapes::icosphere(1.0, 3, Vec3(0.1, -0.2, 0.3));
     Mesh cube = unit_cube();
     Rng rng(99);
     int crossings = 0, compared = 0;
@@ -326,7 +280,7 @@ TEST_CASE("winding: inside(q) is w(q) > 1/2 exactly, also where w crosses 1/2 wi
 }
 
 TEST_CASE("winding: the tree and the expansions built on 2 to 16 threads equal one thread's") {
-    const Mesh mesh = merge(icosphere(4, Vec3(0, 0, 0), 1.0), torus(64, 32, Vec3(3, 0, 0), 1.2, 0.4));
+    const Mesh mesh = merge(shapes::icosphere(1.0, 4, Vec3(0, 0, 0)), shapes::torus(1.2, 0.4, 64, 32, Vec3(3, 0, 0)));
     const auto one = detail::build_triangle_tree(mesh, 1);
     REQUIRE(one->bvh.nodes.size() > 1000);
     // 3 threads: four subtrees on three workers; 16: four levels split before the workers start
