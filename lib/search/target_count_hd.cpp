@@ -52,6 +52,7 @@ Status select_target_count_hd(const CandidateSet& set, const SelectOptions& opt,
     st = probe_delta(set, opt, tc.connect, tc.fit, coarse, *surface, monitor, probes[0]);
     if (!st.ok()) return st;
     probes[0].summary.passed = true;  // select_balls returns a fitting cover only
+    probes[0].summary.exact = false;
     uint32_t solves = probes[0].selection.probes;
     auto report = [&](uint32_t k) {
         return monitor.report("target count: probes", double(k) / double(tc.max_probes + 2));
@@ -64,7 +65,7 @@ Status select_target_count_hd(const CandidateSet& set, const SelectOptions& opt,
     bool stopped = false;  // the time limit: the probes so far stand
     for (uint32_t i = 1; i < tc.max_probes; ++i) {
         if (!report(i)) {
-            if (monitor.cancelled()) return monitor.stop_status("target count");
+            if (!monitor.deadline.expired()) return monitor.stop_status("target count");  // a cancel
             stopped = true;
             break;
         }
@@ -79,6 +80,7 @@ Status select_target_count_hd(const CandidateSet& set, const SelectOptions& opt,
         }
         if (!st.ok()) return st;
         p.summary.passed = p.summary.balls <= K;
+        p.summary.exact = false;
         probes.push_back(std::move(p));
     }
     // Coarse to fine: the probes with at most K balls in the order of their coarse HD; each is
@@ -99,14 +101,22 @@ Status select_target_count_hd(const CandidateSet& set, const SelectOptions& opt,
         if (have_exact) {
             if (p.summary.hd >= probes[best].summary.hd) continue;
             if (stopped || monitor.stopped()) {
-                if (monitor.cancelled()) return monitor.stop_status("target count");
+                if (!monitor.deadline.expired()) return monitor.stop_status("target count");  // a cancel
+                stopped = true;
                 break;  // the time limit: the best exact probe so far stands
             }
         }
         st = evaluate(*surface, p.skeleton, tc.evaluate, monitor, p.evaluation, true);
         if (!st.ok()) {
-            if (st.code == Code::time_limit && have_exact) break;
-            return st;
+            if (st.code != Code::time_limit) return st;
+            stopped = true;
+            if (!have_exact) {
+                // the time limit before any exact measurement: the lowest coarse HD with at most
+                // K balls stands, measured coarsely (a failed evaluate leaves its result as it was)
+                for (size_t j = 0; j < probes.size(); ++j)
+                    if (probes[j].summary.passed && probes[j].summary.hd < probes[best].summary.hd) best = j;
+            }
+            break;
         }
         p.summary.hd = p.evaluation.hd_two_sided;
         p.summary.exact = true;
@@ -114,6 +124,7 @@ Status select_target_count_hd(const CandidateSet& set, const SelectOptions& opt,
         have_exact = true;
     }
     for (const DeltaProbe& p : probes) out.probes.push_back(p.summary);
+    out.stopped = stopped;
     out.selection = std::move(probes[best].selection);
     out.selection.probes = solves;
     out.selection.time_total_s = seconds_since(t0);

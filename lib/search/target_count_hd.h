@@ -43,6 +43,8 @@ struct TargetCountHdResult {
     EvaluateResult evaluation;    // its measurement
     std::vector<TargetErrorProbe> probes;  // in the order they ran; passed = at most K balls; hd
                                            // exact where `exact`, else the coarse measurement
+    bool stopped = false;         // the time limit ended the search early: the best so far (its
+                                  // HD the coarse one when no probe could be measured exactly)
 };
 
 // The coarse measurement of a probe: `exact` with at most `envelope_samples` samples of E's
