@@ -100,11 +100,11 @@ fuzz-long:
 # turns, JOBS runs at a time. Findings (the tool killed, past its time limit, an unclear failure)
 # and the first inputs assimp crashed, hung or ran out of memory on go to $(BUILD)/fuzz-assimp.
 FUZZ_ASSIMP_SECONDS ?= 600
-FUZZ_ASSIMP_FORMATS ?= md3,ac,3ds,x,dae,fbx,blend
+FUZZ_ASSIMP_FORMATS ?= md3,ac,3ds,x,dae,fbx,blend,b3d
 fuzz-assimp: configure
 	@cmake --build $(BUILD) -j $(JOBS) --target coverage-axis
 	python3 tests/fuzz/fuzz_assimp.py --tool $(BUILD)/coverage-axis --seconds $(FUZZ_ASSIMP_SECONDS) --jobs $(JOBS) \
-	  --formats $(FUZZ_ASSIMP_FORMATS) --out $(BUILD)/fuzz-assimp tests/data/hostile tests/data/formats \
+	  --formats $(FUZZ_ASSIMP_FORMATS) --out $(BUILD)/fuzz-assimp tests/data/hostile tests/data/formats tests/data/dropped \
 	  $(wildcard $(DATA)/real/openarena $(DATA)/real/flightgear $(DATA)/hostile)
 
 clean:

@@ -11,62 +11,12 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <csignal>
-#include <fcntl.h>
 #include <fstream>
 #include <sstream>
-#include <thread>
 
 namespace {
 
 using Json = nlohmann::json;
-
-struct Outcome {
-    bool ran = false;          // the process ended by itself within its bound
-    int exit_code = -1, signal = 0;
-    double wall_s = 0;
-    std::string out;
-};
-
-// Runs `args` with stdout to a file, killed after `limit_s`.
-Outcome run_tool(const std::vector<std::string>& args, const std::string& out_path, double limit_s) {
-    Outcome o;
-    const auto t0 = std::chrono::steady_clock::now();
-    const pid_t pid = fork();
-    if (pid < 0) return o;
-    if (pid == 0) {
-        const int fd = open(out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        const int null = open("/dev/null", O_WRONLY);
-        if (fd >= 0) dup2(fd, 1);
-        if (null >= 0) dup2(null, 2);
-        std::vector<char*> argv;
-        for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-        argv.push_back(nullptr);
-        execv(argv[0], argv.data());
-        _exit(127);
-    }
-    int status = 0;
-    for (;;) {
-        const pid_t done = waitpid(pid, &status, WNOHANG);
-        if (done == pid) break;
-        if (bench::seconds_since(t0) > limit_s) {
-            kill(pid, SIGKILL);
-            waitpid(pid, &status, 0);
-            o.wall_s = bench::seconds_since(t0);
-            return o;
-        }
-        std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    }
-    o.wall_s = bench::seconds_since(t0);
-    o.ran = true;
-    if (WIFEXITED(status)) o.exit_code = WEXITSTATUS(status);
-    if (WIFSIGNALED(status)) o.signal = WTERMSIG(status);
-    std::ifstream in(out_path);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    o.out = ss.str();
-    return o;
-}
 
 // Cover samples (v x y z) farther than the dilated radius r + delta from every ball of the .ma,
 // with a relative tolerance for the files' 9 printed digits.
@@ -140,7 +90,7 @@ int main(int argc, char** argv) {
         const std::string in = root + "/" + a, ma = dir + "/out.ma", samples = dir + "/samples.xyz", out = dir + "/out.json";
         std::remove(ma.c_str());
         std::remove(samples.c_str());
-        const Outcome o = run_tool({tool, in, "-o", ma, "--export-samples", samples, "--evaluate", "--json", "--time-limit",
+        const bench::ProcessRun o = bench::run_process({tool, in, "-o", ma, "--export-samples", samples, "--evaluate", "--json", "--time-limit",
                                     std::to_string(int(limit_s))},
                                    out, limit_s + 30);
         std::string outcome;

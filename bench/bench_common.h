@@ -1,5 +1,5 @@
 // bench_common.h: helpers shared by the benchmark programs: listing model files, timing, and
-// running the whole pipeline through the C ABI on a mesh file.
+// running the whole pipeline through the C ABI on a mesh file, running a program with a time bound.
 #pragma once
 #include "coverage_axis.h"
 #include "mesh_io.h"
@@ -7,11 +7,17 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <dirent.h>
+#include <fcntl.h>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <sys/resource.h>
 #include <sys/wait.h>
+#include <thread>
 #include <unistd.h>
 #include <vector>
 
@@ -60,6 +66,62 @@ inline std::string stem(const std::string& path) {
 
 inline double seconds_since(std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// The median (NaN when empty).
+inline double median(std::vector<double> v) {
+    if (v.empty()) return NAN;
+    std::sort(v.begin(), v.end());
+    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+// What run_process saw.
+struct ProcessRun {
+    bool ran = false;          // the process ended by itself within its bound
+    int exit_code = -1, signal = 0;
+    double wall_s = 0;
+    std::string out;           // its stdout
+};
+
+// Runs `args` (args[0] a path) with stdout to `out_path` (read back into `out`) and stderr to
+// /dev/null, killed after `limit_s`.
+inline ProcessRun run_process(const std::vector<std::string>& args, const std::string& out_path, double limit_s) {
+    ProcessRun o;
+    const auto t0 = std::chrono::steady_clock::now();
+    const pid_t pid = fork();
+    if (pid < 0) return o;
+    if (pid == 0) {
+        const int fd = open(out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        const int null = open("/dev/null", O_WRONLY);
+        if (fd >= 0) dup2(fd, 1);
+        if (null >= 0) dup2(null, 2);
+        std::vector<char*> argv;
+        for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+        argv.push_back(nullptr);
+        execv(argv[0], argv.data());
+        _exit(127);
+    }
+    int status = 0;
+    for (;;) {
+        const pid_t done = waitpid(pid, &status, WNOHANG);
+        if (done == pid) break;
+        if (seconds_since(t0) > limit_s) {
+            kill(pid, SIGKILL);
+            waitpid(pid, &status, 0);
+            o.wall_s = seconds_since(t0);
+            return o;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    o.wall_s = seconds_since(t0);
+    o.ran = true;
+    if (WIFEXITED(status)) o.exit_code = WEXITSTATUS(status);
+    if (WIFSIGNALED(status)) o.signal = WTERMSIG(status);
+    std::ifstream in(out_path);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    o.out = ss.str();
+    return o;
 }
 
 // The one clock of every bench's CPU times, as the benches print it above their tables.

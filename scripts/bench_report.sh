@@ -40,6 +40,11 @@ old_section() {
 }
 
 only=" ${BENCH_ONLY:-} "
+# bench_proxies sets V-HACD beside its proxies: its set-up (npm, a compiler) may fail, and the
+# bench then says so in its table and measures the rest
+if [ -x "$build/bench_proxies" ] && { [ -z "${BENCH_ONLY:-}" ] || [[ "$only" == *" bench_proxies "* ]]; }; then
+  bash "$(dirname "$0")/../bench/vhacd/setup.sh" "$build" || echo "bench_report: V-HACD not set up; bench_proxies runs without it" >&2
+fi
 body=""
 for b in "$build"/bench_*; do
   [ -x "$b" ] && [ -f "$b" ] || continue

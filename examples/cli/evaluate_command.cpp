@@ -63,6 +63,7 @@ int evaluate_command(int argc, char** argv) {
     if (!ok) return fail(failure);
     if (json) {
         Json j = report_header(input);
+        j["dropped"] = mesh.dropped;
         j["skeleton"] = skeleton_path;
         j["vertices"] = view.vertex_count;
         j["edges"] = view.edge_count;

@@ -4,8 +4,8 @@
 // executable (/proc/self/exe, by posix_spawn, which is safe while other batch threads run) with
 // the internal command `--internal-read PATH FORMAT SECONDS MIB`. The child lowers its own limits
 // first (no core file, CPU time, and once the input is loaded its address space), reads the input
-// with caio::read_mesh and writes one frame to its standard output: a header, then the mesh or
-// the error message. Whatever the reader itself prints goes to the child's standard error, which
+// with caio::read_mesh and writes one frame to its standard output: a header, then the mesh (and
+// the lines naming what the reader dropped) or the error message. Whatever the reader itself prints goes to the child's standard error, which
 // the parent keeps to quote in a crash's message. The parent waits at most the read's time limit
 // and stops the child past it; a signal, a non-zero exit or a malformed frame becomes an error.
 // Where the child cannot be started (no /proc, the executable gone) the read runs in this process.
@@ -43,7 +43,7 @@ namespace {
 
 // ---- the frame the child writes: a header, then the mesh's arrays or the error message ----
 
-constexpr char kMagic[8] = {'C', 'A', 'M', 'E', 'S', 'H', '0', '1'};
+constexpr char kMagic[8] = {'C', 'A', 'M', 'E', 'S', 'H', '0', '2'};
 
 struct FrameHeader {
     char magic[8];
@@ -51,10 +51,13 @@ struct FrameHeader {
     uint64_t input_bytes;    // the input's size, which limits the counts below as it limits the readers
     uint64_t vertices, triangles, normals;  // normals: 0 or `vertices`
     uint64_t message_bytes;
+    uint64_t dropped_bytes;  // after the mesh: MeshData::dropped, one line each, '\n'-separated
 };
 
 // A longer message from the child is taken for a malformed frame.
 constexpr uint64_t kMaxMessage = 1 << 16;
+// The same for the dropped parts' lines (at most 1001 lines of a few hundred characters).
+constexpr uint64_t kMaxDropped = 1 << 20;
 // The child's standard error kept for a crash's message; the rest is read and dropped.
 constexpr size_t kMaxStderr = 4096;
 // The address space a read through assimp gets by default: room for the process itself (the tool
@@ -133,6 +136,16 @@ public:
     }
     bool complete() const { return problem_.empty() && part_ == parts_.size(); }
     bool ok() const { return header_.ok == 1; }
+    // The dropped parts' lines, once the frame is complete.
+    std::vector<std::string> dropped() const {
+        std::vector<std::string> lines;
+        for (size_t at = 0; at < dropped_.size();) {
+            const size_t end = std::min(dropped_.find('\n', at), dropped_.size());
+            lines.push_back(dropped_.substr(at, end - at));
+            at = end + 1;
+        }
+        return lines;
+    }
     const std::string& message() const { return message_; }
     const std::string& problem() const { return problem_; }
 
@@ -152,18 +165,20 @@ private:
             return true;
         }
         if (h.input_bytes > input_limit_ || h.vertices > h.input_bytes || h.triangles > h.input_bytes ||
-            h.vertices > UINT32_MAX || (h.normals != 0 && h.normals != h.vertices))
+            h.vertices > UINT32_MAX || (h.normals != 0 && h.normals != h.vertices) || h.dropped_bytes > kMaxDropped)
             return problem_ = "counts beyond the input's limits", false;
         try {
             out_.positions.resize(size_t(3 * h.vertices));
             out_.triangles.resize(size_t(3 * h.triangles));
             out_.normals.resize(size_t(3 * h.normals));
+            dropped_.resize(size_t(h.dropped_bytes));
         } catch (const std::exception&) {  // bad_alloc, or length_error on a count past max_size
             return problem_ = "counts beyond this process's memory", false;
         }
         add(out_.positions);
         add(out_.triangles);
         add(out_.normals);
+        if (!dropped_.empty()) parts_.push_back({&dropped_[0], dropped_.size()});
         return true;
     }
     template <class T>
@@ -176,7 +191,7 @@ private:
     FrameHeader header_{};
     std::vector<Part> parts_;
     size_t part_ = 0, done_ = 0;
-    std::string message_, problem_;
+    std::string message_, problem_, dropped_;
 };
 
 // A pipe whose ends are close-on-exec (other batch threads' children must not inherit them) and
@@ -351,6 +366,7 @@ Read read_in_child(const std::string& path, const std::string& format, const Rea
     const size_t nv = out.positions.size() / 3;
     for (uint32_t i : out.triangles)
         if (i >= nv) return failed("the assimp reader's output was malformed (an index out of range)");
+    out.dropped = frame.dropped();
     return Read::done;
 }
 
@@ -405,11 +421,16 @@ int read_child_command(int argc, char** argv) {
     h.triangles = mesh.triangles.size() / 3;
     h.normals = mesh.normals.size() / 3;
     h.message_bytes = ok ? 0 : error.size();
+    std::string dropped;  // the reader's lines hold no newline (they are printable)
+    for (const std::string& line : mesh.dropped) dropped += (dropped.empty() ? "" : "\n") + line;
+    if (dropped.size() > kMaxDropped) dropped.resize(kMaxDropped);
+    h.dropped_bytes = ok ? dropped.size() : 0;
     const bool written =
         frame_fd >= 0 && write_all(frame_fd, &h, sizeof h) &&
         (ok ? write_all(frame_fd, mesh.positions.data(), mesh.positions.size() * sizeof(double)) &&
                   write_all(frame_fd, mesh.triangles.data(), mesh.triangles.size() * sizeof(uint32_t)) &&
-                  write_all(frame_fd, mesh.normals.data(), mesh.normals.size() * sizeof(double))
+                  write_all(frame_fd, mesh.normals.data(), mesh.normals.size() * sizeof(double)) &&
+                  write_all(frame_fd, dropped.data(), dropped.size())
             : write_all(frame_fd, error.data(), error.size()));
     // no destructors at exit: nothing of a reader that went wrong runs after the frame
     _exit(written ? 0 : 1);

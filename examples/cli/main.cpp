@@ -49,6 +49,14 @@ void print_summary(const cli::Json& j, const cli::RunOptions& o) {
     auto u = [&](const char* k) { return j[k].get<unsigned long long>(); };
     std::printf("input       %s (%llu vertices, %llu triangles)\n", j["input"].get<std::string>().c_str(), u("input_vertices"),
                 u("input_triangles"));
+    const cli::Json& dropped = j["dropped"];
+    if (!dropped.empty()) {
+        std::string parts;
+        for (const auto& d : dropped) parts += (parts.empty() ? "" : "; ") + d.get<std::string>();
+        if (parts.size() > 240) parts = parts.substr(0, 240) + "... (--json lists them)";
+        std::printf("warning     dropped, as assimp's validation refuses them and the tool never uses them: %s\n",
+                    parts.c_str());
+    }
     if (u("input_triangles") == 0 && j["normals"] != "none") {
         const std::string used = j["normals"].get<std::string>();
         const char* how = used == "given"      ? "the file's, used as given"

@@ -361,6 +361,7 @@ Json run_report(const std::string& input, const caio::MeshData& mesh, const Owne
     j["input_vertices"] = mesh.positions.size() / 3;
     j["input_triangles"] = mesh.triangles.size() / 3;
     j["input_normals"] = mesh.triangles.empty() && !mesh.normals.empty();
+    j["dropped"] = mesh.dropped;
     j["normals"] = normals_name(owned.normals);
     j["flipped"] = owned.flipped;
     j["surface_samples"] = ca_candidate_set_sample_count(owned.set);

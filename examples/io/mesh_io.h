@@ -14,6 +14,9 @@ struct MeshData {
     std::vector<double> positions;     // x y z per vertex
     std::vector<uint32_t> triangles;   // i j k per triangle (polygons are fan-triangulated); empty for a point cloud
     std::vector<double> normals;       // nx ny nz per vertex when the file gives them, else empty
+    // Parts of the file left out because assimp's validation refuses them and the readers never
+    // use them, one line each ("animation 'Take 001': keys past its duration"); else empty.
+    std::vector<std::string> dropped;
 };
 
 // Reads a mesh or point cloud. `path` "-" reads standard input (then `format` is required).
@@ -32,7 +35,10 @@ struct MeshData {
 //        absolute paths, no '..', no symbolic links out of it; from standard input none at
 //        all); a data: URI may not declare more bytes than the file has. Images are not read.
 //  anything assimp imports (fbx, dae, 3ds, ...; see readable_formats()): from memory only
-//        (referenced files are not opened), node transforms applied.
+//        (referenced files are not opened), node transforms applied. Animations, cameras,
+//        lights and embedded textures that fail assimp's validation, and meshes without faces,
+//        are dropped (named in `dropped`) rather than refusing the file; a fault anywhere else
+//        (geometry, materials, bones, nodes) refuses it.
 // Limits, so memory stays proportional to the input: at most one vertex and one triangle per
 // input byte (glTF: bytes of the file plus its external buffers) and at most 65536 vertices in
 // one polygon; beyond either the reader refuses with a message naming the limit.

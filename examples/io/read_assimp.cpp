@@ -7,6 +7,13 @@
 // merges identical vertices and applies the node transforms (pre-transformed vertices, in world
 // units); point and line primitives are dropped. The output obeys the same one-per-input-byte
 // limit as the other readers. Normals are not read (MeshData normals stay empty).
+// Geometry first: assimp's validation refuses a whole scene for a fault in a part the readers
+// never use (an animation key past its animation's end, an empty object, a camera's clip planes).
+// When it refuses one, the file is imported again without validation, those parts are dropped
+// (drop_invalid_unused.cpp, named in MeshData::dropped) and the validation runs on what is kept,
+// then the scene checks as above. Validating first keeps assimp's own preparation of the scene
+// (which runs between import and post-processing) away from scenes the validation refuses, for
+// every file but these; where nothing is dropped the file is refused with the first message.
 // Assimp's Collada reader does not advance past a non-digit in an index list (<p>, <v>,
 // <vcount>, <h>) and fills memory until it runs out; such files are refused before assimp sees
 // them. A crash or hang inside an importer itself cannot be caught here: the command-line tool
@@ -22,6 +29,8 @@
 #include <cstring>
 #include <limits>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "readers.h"
 #include "large_pages.h"
@@ -89,7 +98,21 @@ bool read_assimp(const std::string& name, const std::string& buf, const std::str
         importer.ReadFileFromMemory(buf.data(), buf.size(), aiProcess_ValidateDataStructure, format.c_str());
     // assimp's messages may quote a long stretch of the file: one short line of it is kept
     constexpr size_t kMessageChars = 200;
-    if (!scene) return fail(error, name, 0, "assimp: " + printable(importer.GetErrorString(), kMessageChars));
+    std::vector<std::string> dropped;
+    if (!scene) {
+        const std::string refused = importer.GetErrorString();
+        if (refused.rfind("Validation failed", 0) != 0) return fail(error, name, 0, "assimp: " + printable(refused, kMessageChars));
+        // geometry first: import again unvalidated, drop the unused parts at fault, validate the rest
+        scene = importer.ReadFileFromMemory(buf.data(), buf.size(), 0, format.c_str());
+        if (scene) dropped = drop_invalid_unused(*const_cast<aiScene*>(scene));  // the importer's own scene
+        if (!scene || dropped.empty()) return fail(error, name, 0, "assimp: " + printable(refused, kMessageChars));
+        const std::string after = " (after dropping " + std::to_string(dropped.size()) + " unused part" +
+                                  (dropped.size() == 1 ? "" : "s") + " at fault: " + printable(dropped[0], 100) +
+                                  (dropped.size() == 1 ? ")" : ", ...)");
+        if (scene->mNumMeshes == 0) return fail(error, name, 0, "no meshes with faces" + after);
+        scene = importer.ApplyPostProcessing(aiProcess_ValidateDataStructure);
+        if (!scene) return fail(error, name, 0, "assimp: " + printable(importer.GetErrorString(), kMessageChars) + after);
+    }
     if (!check_assimp_scene(name, scene, buf.size(), error)) return false;
     scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
                                          aiProcess_PreTransformVertices | aiProcess_SortByPType);
@@ -122,6 +145,7 @@ bool read_assimp(const std::string& name, const std::string& buf, const std::str
         }
     }
     if (out.triangles.empty()) return fail(error, name, 0, "no triangles");
+    out.dropped = std::move(dropped);
     return true;
 }
 

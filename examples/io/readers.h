@@ -3,6 +3,7 @@
 // fuzz harnesses share one code path. On failure `out` may be partly filled; read_mesh clears it.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "mesh_io.h"
 #include "reader_common.h"
@@ -29,6 +30,11 @@ bool assimp_can_read(const std::string& format);
 // Whether an imported assimp scene is safe to post-process (check_assimp_scene.cpp); false with
 // a message naming the first problem. `input_bytes` sets the size limit.
 bool check_assimp_scene(const std::string& name, const aiScene* scene, size_t input_bytes, std::string& error);
+// Takes out of an imported scene the parts the readers never use (animations, cameras, lights,
+// embedded textures) that would fail assimp's validation, and the meshes without faces
+// (drop_invalid_unused.cpp); one line per part dropped, "animation 'Take 001': keys past its
+// duration", at most 1000 and then one counting the rest.
+std::vector<std::string> drop_invalid_unused(aiScene& scene);
 // The extensions assimp imports, without dots, space-separated.
 std::string assimp_formats();
 

@@ -27,7 +27,7 @@ import sys
 import tempfile
 import time
 
-FORMATS = ["md3", "ac", "3ds", "x", "dae", "fbx", "blend"]
+FORMATS = ["md3", "ac", "3ds", "x", "dae", "fbx", "blend", "b3d"]
 # what the tool prints for a reader that crashed, hit its time limit or its memory limit
 CONTAINED = {"reader crash": "the assimp reader crashed", "reader time limit": "did not end within its time limit",
              "reader memory limit": "memory limit is"}
