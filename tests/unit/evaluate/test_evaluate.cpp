@@ -332,7 +332,7 @@ TEST_CASE("evaluate: errors and cancellation") {
 TEST_CASE("evaluate on a prepared surface: the full result is evaluate()'s, hd_only its maxima") {
     // skeletons inside, across and outside a sphere mesh: points of S inside and outside E, and
     // boundary points of E near and far from S, so that every pruning branch is taken
-    const Mesh sphere = icosphere(1.0, 3);
+    const Mesh sphere = shapes::icosphere(1.0, 3);
     EvaluateOptions opt;
     opt.surface_samples = 4000;
     opt.envelope_samples = 20000;
