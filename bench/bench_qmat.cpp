@@ -4,7 +4,11 @@
 // Then the comparison: our skeleton at the default delta and at Q-MAT's sizes (target size),
 // Q-MAT's own medial mesh, and the Coverage Axis paper's reported values, all measured (except
 // the paper's) by the same evaluation code. At Q-MAT's sizes also the thorough fit (fit = 2: two
-// fits, the one of lower evaluated HD kept; docs/fidelity.md), which Q-MAT's HD is compared with.
+// fits, the one of lower evaluated HD kept; docs/fidelity.md), which Q-MAT's HD is compared with,
+// and the wall time of that target-count run (candidates, the search, the connection with its
+// fit), with the median and the maximum over the models. Then the monotone table: --target-count
+// at 8 counts from half to twice Q-MAT's |V| on one candidate set per model (select, connect at
+// the defaults, evaluate), and the largest rise of the HD over the lowest HD of the smaller counts.
 // Usage: bench_qmat [data root, default ../shared/data]
 #include "bench_common.h"
 #include "evaluate.h"
@@ -66,6 +70,79 @@ struct Model {
 }  // namespace
 
 
+// --target-count at 8 counts from half to twice Q-MAT's |V| (geometric steps) on one candidate set
+// per model: the balls, the HD of the skeleton ca_connect gives at its defaults (fitted thoroughly:
+// a sized selection), and the rise of each HD over the lowest HD of the smaller counts.
+void monotone_table(const std::string& dir, const Model* models) {
+    std::printf("\n## Monotone: --target-count at 8 counts from half to twice Q-MAT's |V| (defaults otherwise)\n\n");
+    std::printf("| model | counts | balls | HD %% | largest rise over a smaller count's HD (pp) |\n|---|---|---|---|---|\n");
+    int within = 0, measured = 0;
+    double worst = 0;
+    for (int mi = 0; mi < 5; ++mi) {
+        const Model& m = models[mi];
+        const std::string base = dir + "/01" + m.name;
+        caio::MeshData md;
+        caio::SkeletonData sd;
+        std::string err;
+        if (!caio::read_mesh(base + ".off", md, err) || !caio::read_ma(base + "_QMAT.ma", sd, err)) continue;
+        const size_t q = sd.radii.size();
+        ca_context* ctx = nullptr;
+        ca_context_create(nullptr, &ctx);
+        const ca_surface_view v = bench::surface_view(md);
+        ca_candidate_set* set = nullptr;
+        if (ca_candidates(ctx, &v, nullptr, &set) != CA_OK) {
+            ca_context_destroy(ctx);
+            continue;
+        }
+        std::string counts, balls, hds;
+        double lowest = 1e300, rise = -1e300;
+        bool ok = true;
+        for (int i = 0; i < 8; ++i) {
+            const uint32_t K = uint32_t(std::lround(0.5 * double(q) * std::pow(4.0, i / 7.0)));
+            ca_select_options so;
+            ca_select_options_init(&so);
+            so.time_limit_s = 20;
+            so.target_count = K;
+            ca_selection* sel = nullptr;
+            ca_skeleton* sk = nullptr;
+            ca_evaluation ev{};
+            size_t edges = 0, faces = 0, components = 0;
+            long betti1 = 0;
+            ca_status st = ca_select(ctx, set, &so, &sel);
+            if (st == CA_OK) st = ca_connect(ctx, set, sel, nullptr, &sk);
+            if (st == CA_OK) st = bench::measure_skeleton(ctx, v, sk, true, edges, faces, components, betti1, ev);
+            const size_t nb = st == CA_OK ? ca_skeleton_vertex_count(sk) : 0;
+            ca_skeleton_destroy(sk);
+            ca_selection_destroy(sel);
+            char buf[64];
+            std::snprintf(buf, sizeof buf, "%s%u", i ? " " : "", K);
+            counts += buf;
+            std::snprintf(buf, sizeof buf, "%s%zu", i ? " " : "", nb);
+            balls += buf;
+            if (st != CA_OK) {
+                ok = false;
+                hds += i ? " failed" : "failed";
+                continue;
+            }
+            std::snprintf(buf, sizeof buf, "%s%.3f", i ? " " : "", ev.hd_two_sided);
+            hds += buf;
+            if (i > 0) rise = std::max(rise, ev.hd_two_sided - lowest);
+            lowest = std::min(lowest, ev.hd_two_sided);
+        }
+        ca_candidate_set_destroy(set);
+        ca_context_destroy(ctx);
+        std::printf("| %s | %s | %s | %s | %s%.3f |\n", m.name, counts.c_str(), balls.c_str(), hds.c_str(), ok ? "" : "(failures) ",
+                    rise);
+        std::fflush(stdout);
+        if (!ok) continue;
+        ++measured;
+        within += rise <= 0.1;
+        worst = std::max(worst, rise);
+    }
+    std::printf("\nMonotone (HD never more than 0.1 pp above a smaller count's): %d of %d models; the largest rise %.3f pp.\n",
+                within, measured, worst);
+}
+
 // Times one evaluation at the default options; prints wall and CPU time (both threads).
 void timing_row() {
     ca::Mesh mesh;
@@ -98,7 +175,7 @@ int main(int argc, char** argv) {
     const Model models[] = {{"crab", 2.154, 1.571, 1.759}, {"dog", 3.009, 1.523, 2.077},
                             {"fertility", 3.438, 2.451, 2.703}, {"hand", 0.685, 0.80, 1.750},
                             {"vase", 2.944, 2.130, 3.183}};
-    struct Row { std::string name; size_t qv; double qhd; size_t v0; double hd0, hd0f; size_t vk; double hdk, hdkf, tf, hdkt, tt; double paper; };
+    struct Row { std::string name; size_t qv; double qhd; size_t v0; double hd0, hd0f; size_t vk; double hdk, hdkf, tf, hdkt, tt; double paper; double run_s; };
     std::vector<Row> rows;
     std::printf("%-10s %5s %9s %9s %9s %8s   %s\n", "model", "|V|", "S->E %", "E->S %",
                 "two-sided", "time s", "reference S->E / E->S");
@@ -146,15 +223,15 @@ int main(int argc, char** argv) {
         rows.push_back({m.name, sk.balls.size(), r.hd_two_sided, d.balls, dk ? d.eval.hd_two_sided : -1,
                         dk ? d.fit_eval.hd_two_sided : -1, k.balls, kk ? k.eval.hd_two_sided : -1,
                         kk ? k.fit_eval.hd_two_sided : -1, kk ? k.t_fit : -1, kk ? k.alt_eval.hd_two_sided : -1,
-                        kk ? k.t_alt_connect : -1, m.paper_hd});
+                        kk ? k.t_alt_connect : -1, m.paper_hd, k.t_candidates + k.t_select + k.t_connect});
     }
     std::printf("\n## Two-sided Hausdorff distance (%% of the bbox diagonal), one evaluator for all\n\n");
-    std::printf("| model | Q-MAT |V| | Q-MAT HD | ours, delta 0.02: |V| | HD | fitted HD | ours at Q-MAT's |V|: |V| | HD | fitted HD | fit s | thorough fit HD | connect + thorough fit s | paper's Coverage Axis HD (its evaluator) |\n");
-    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    std::printf("| model | Q-MAT |V| | Q-MAT HD | ours, delta 0.02: |V| | HD | fitted HD | ours at Q-MAT's |V|: |V| | HD | fitted HD | fit s | thorough fit HD | connect + thorough fit s | paper's Coverage Axis HD (its evaluator) | target-count run s |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     double sq = 0, s0 = 0, s0f = 0, sk_ = 0, skf = 0, skt = 0, sp = 0;
     for (const Row& r : rows) {
-        std::printf("| %s | %zu | %.3f | %zu | %.3f | %.3f | %zu | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f |\n", r.name.c_str(),
-                    r.qv, r.qhd, r.v0, r.hd0, r.hd0f, r.vk, r.hdk, r.hdkf, r.tf, r.hdkt, r.tt, r.paper);
+        std::printf("| %s | %zu | %.3f | %zu | %.3f | %.3f | %zu | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.2f |\n", r.name.c_str(),
+                    r.qv, r.qhd, r.v0, r.hd0, r.hd0f, r.vk, r.hdk, r.hdkf, r.tf, r.hdkt, r.tt, r.paper, r.run_s);
         sq += r.qhd; s0 += r.hd0; s0f += r.hd0f; sk_ += r.hdk; skf += r.hdkf; skt += r.hdkt; sp += r.paper;
     }
     if (!rows.empty()) {
@@ -162,6 +239,23 @@ int main(int argc, char** argv) {
         std::printf("| mean | | %.3f | | %.3f | %.3f | | %.3f | %.3f | | %.3f | | %.3f |\n", sq / n, s0 / n, s0f / n, sk_ / n,
                     skf / n, skt / n, sp / n);
     }
+    if (!rows.empty()) {
+        int below_qmat = 0, below_paper = 0;
+        std::vector<double> times;
+        for (const Row& r : rows) {
+            below_qmat += r.hdk >= 0 && r.hdk < r.qhd;
+            below_paper += r.hdk >= 0 && r.hdk < r.paper;
+            times.push_back(r.run_s);
+        }
+        std::sort(times.begin(), times.end());
+        const size_t n = times.size();
+        const double median = n % 2 ? times[n / 2] : 0.5 * (times[n / 2 - 1] + times[n / 2]);
+        std::printf("\nAt Q-MAT's |V| (the target-count run at the defaults): HD below Q-MAT's on %d of %zu models, below "
+                    "the paper's Coverage Axis on %d of %zu. Wall time of the run (candidates + search + connection and "
+                    "fit) per model: median %.2f s, max %.2f s.\n",
+                    below_qmat, n, below_paper, n, median, times.back());
+    }
+    monotone_table(dir, models);
     timing_row();
     return failures ? 1 : 0;
 }

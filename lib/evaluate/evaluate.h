@@ -8,6 +8,8 @@
 #include "shape_queries.h"
 #include "skeleton.h"
 
+#include <memory>
+
 namespace ca {
 
 // The sphere of a primitive's simplex that attains its distance at p: its barycentric weights on
@@ -51,5 +53,21 @@ Status evaluate(const Mesh& surface, const Skeleton& skeleton, const EvaluateOpt
 // distance query is used, not built again (the searches evaluate every probe).
 Status evaluate(const Mesh& surface, const ShapeQueries& queries, const Skeleton& skeleton,
                 const EvaluateOptions& opt, const Monitor& monitor, EvaluateResult& out);
+
+// What evaluate() draws from the surface alone (its samples at opt.surface_samples and opt.seed,
+// the distance structure, the diagonal), built once to measure many skeletons against one
+// surface: the delta searches (lib/search) and the thorough fit measure one skeleton per probe.
+// With `queries` (built on `surface`: a candidate set's), its distance query is used, not built again.
+struct EvaluationSurface;
+Status prepare_evaluation(const Mesh& surface, const EvaluateOptions& opt, std::shared_ptr<const EvaluationSurface>& out,
+                          const ShapeQueries* queries = nullptr);
+
+// evaluate() on a prepared surface (opt's surface_samples and seed must be those it was prepared
+// with). hd_only: only hd_two_sided (and the one-sided maxima) are computed; the means are left 0.
+// A sample that cannot raise the maximum found so far is skipped (a bound shows it: the distance
+// to the nearest surface sample, an early exit of the envelope's distance), so the maxima are
+// those evaluate() gives, at a fraction of its time.
+Status evaluate(const EvaluationSurface& surface, const Skeleton& skeleton, const EvaluateOptions& opt,
+                const Monitor& monitor, EvaluateResult& out, bool hd_only = false);
 
 }  // namespace ca

@@ -38,10 +38,14 @@ Status fit_skeleton(const CandidateSet& set, const Selection& sel, const FitOpti
     // change its result
     EvaluateOptions eo;
     eo.threads = opt.threads;
-    EvaluateResult first_eval, second_eval;
-    st = evaluate(set.surface.mesh, set.queries, sk, eo, monitor, first_eval);
+    std::shared_ptr<const EvaluationSurface> surface;
+    st = prepare_evaluation(set.surface.mesh, eo, surface, &set.queries);
     if (!st.ok()) return st;
-    st = evaluate(set.surface.mesh, set.queries, second, eo, monitor, second_eval);
+    // the HD only: the same maxima, without the means
+    EvaluateResult first_eval, second_eval;
+    st = evaluate(*surface, sk, eo, monitor, first_eval, true);
+    if (!st.ok()) return st;
+    st = evaluate(*surface, second, eo, monitor, second_eval, true);
     if (!st.ok()) return st;
     const double hd_first = first_eval.hd_two_sided, hd_second = second_eval.hd_two_sided;
     if (hd_second < hd_first) {

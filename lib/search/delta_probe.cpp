@@ -4,14 +4,14 @@
 namespace ca {
 
 Status probe_delta(const CandidateSet& set, const SelectOptions& opt, const ConnectOptions& connect,
-                   const std::optional<FitOptions>& fit, const EvaluateOptions& evaluate_opt, const Monitor& monitor,
-                   DeltaProbe& out) {
+                   const std::optional<FitOptions>& fit, const EvaluateOptions& evaluate_opt,
+                   const EvaluationSurface& surface, const Monitor& monitor, DeltaProbe& out) {
     out = DeltaProbe{};
     Status st = select_balls(set, opt, monitor, out.selection);
     if (st.ok()) st = connect_balls(set, out.selection, connect, monitor, out.skeleton);
     FitStats fit_stats;
     if (st.ok() && fit) st = fit_skeleton(set, out.selection, *fit, monitor, out.skeleton, fit_stats);
-    if (st.ok()) st = evaluate(set.surface.mesh, set.queries, out.skeleton, evaluate_opt, monitor, out.evaluation);
+    if (st.ok()) st = evaluate(surface, out.skeleton, evaluate_opt, monitor, out.evaluation, true);
     if (!st.ok()) return st;
     out.summary.delta = out.selection.delta;
     out.summary.balls = out.selection.indices.size();

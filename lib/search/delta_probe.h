@@ -18,6 +18,7 @@ struct TargetErrorProbe {
     size_t balls = 0;
     double hd = 0;                // two-sided HD, percent of the diagonal
     bool passed = false;          // target_error: hd <= E; target_count: balls <= K
+    bool exact = true;            // target_count: false when hd is the coarse measurement only
 };
 
 // One probe with everything it produced (kept by a search while it is the best so far).
@@ -25,15 +26,17 @@ struct DeltaProbe {
     TargetErrorProbe summary;     // delta, balls and hd set; passed left to the search
     Selection selection;
     Skeleton skeleton;
-    EvaluateResult evaluation;
+    EvaluateResult evaluation;    // the HD only (hd_two_sided and the one-sided maxima)
 };
 
 // Selects with `opt` at opt.delta (opt.target_count as given: 0 for one solve), connects with
 // `connect`, fits with `fit` when it is set (fit_skeleton: a no-op without a triangle mesh) and
-// evaluates with `evaluate` against set.surface.mesh. The first failing step's status is returned
-// (Code::uncoverable when no cover exists at that delta).
+// evaluates with `evaluate` against set.surface.mesh, prepared once by the search (`surface`,
+// prepare_evaluation with the same options): only the HD is measured (evaluate's hd_only, the same
+// maxima as ca_evaluate). The first failing step's status is returned (Code::uncoverable when no
+// cover exists at that delta).
 Status probe_delta(const CandidateSet& set, const SelectOptions& opt, const ConnectOptions& connect,
-                   const std::optional<FitOptions>& fit, const EvaluateOptions& evaluate, const Monitor& monitor,
-                   DeltaProbe& out);
+                   const std::optional<FitOptions>& fit, const EvaluateOptions& evaluate,
+                   const EvaluationSurface& surface, const Monitor& monitor, DeltaProbe& out);
 
 }  // namespace ca

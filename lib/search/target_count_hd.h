@@ -8,12 +8,17 @@
 // monotone in delta (a larger delta gives fewer balls, but a different cover that may sit
 // better), so the next probes are at d0 * (1 + step * i), i = 1 .. max_probes - 1 (when d0 is 0,
 // the lower end, at opt.delta * step * i). A probe with more than K balls (a solver that did not
-// reach the optimum) is never returned. The result is the probe of lowest HD among those with
-// at most K balls, ties to fewer balls, then to the smaller delta.
+// reach the optimum) is never returned. Each probe is measured coarsely (coarse_envelope_samples
+// samples of E's boundary instead of evaluate's envelope_samples); the target size's probe, then
+// those with at most K balls whose coarse HD is below the best exact HD so far (lowest coarse HD
+// first) are measured exactly (evaluate's hd_only on the surface prepared once). The result is
+// the exactly measured probe of lowest HD among those with at most K balls, ties to fewer balls,
+// then to the smaller delta.
 //
-// What this guarantees: at most K balls; an HD (the one reported, not re-sampled) no higher than
-// that of the plain target size's result, which is the first probe; deterministic for given
-// options. It is the best of the probed deltas only: an untried delta may do better.
+// What this guarantees: at most K balls; an HD (the one reported, exact, not re-sampled) no
+// higher than that of the plain target size's result, which is the first probe; deterministic
+// for given options. It is the best of the exactly measured probes only: a probe whose coarse HD
+// misjudged it, or an untried delta, may do better.
 #pragma once
 #include "delta_probe.h"
 
@@ -28,6 +33,7 @@ struct TargetCountHdOptions {
     EvaluateOptions evaluate;     // how each probe is measured (ca_evaluate's defaults)
     uint32_t max_probes = 9;      // select + connect + evaluate runs, the first included (>= 1)
     double step = 0.02;           // relative delta step between probes (> 0)
+    uint32_t coarse_envelope_samples = 10000;  // the coarse measurement's samples of E's boundary
 };
 
 struct TargetCountHdResult {
@@ -35,13 +41,21 @@ struct TargetCountHdResult {
                                   // set-cover solves of the whole search; time_total_s = the search)
     Skeleton skeleton;            // its connected skeleton, internal units
     EvaluateResult evaluation;    // its measurement
-    std::vector<TargetErrorProbe> probes;  // in the order they ran; passed = at most K balls
+    std::vector<TargetErrorProbe> probes;  // in the order they ran; passed = at most K balls; hd
+                                           // exact where `exact`, else the coarse measurement
+    bool stopped = false;         // the time limit ended the search early: the best so far (its
+                                  // HD the coarse one when no probe could be measured exactly)
 };
+
+// The coarse measurement of a probe: `exact` with at most `envelope_samples` samples of E's
+// boundary (the surface samples and seed unchanged, so a surface prepared for `exact` serves both).
+EvaluateOptions coarse_evaluation(const EvaluateOptions& exact, uint32_t envelope_samples);
 
 // Offset dilation only, opt.target_count = K > 0; the set must have a surface (not one built
 // from caller arrays). opt.delta is where the target size's bracket starts, opt.target_tolerance
 // its bisection tolerance. When the time limit runs out after the first probe has finished, the
-// best probe so far is returned; a cancel returns the stop status.
+// best probe so far is returned (the probes measured so far, the best exact one); a cancel
+// returns the stop status. Progress: stage "target count: probes", the share of probes run.
 Status select_target_count_hd(const CandidateSet& set, const SelectOptions& opt, const TargetCountHdOptions& tc,
                               const Monitor& monitor, TargetCountHdResult& out);
 

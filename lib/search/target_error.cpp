@@ -4,6 +4,7 @@
 #include "target_error.h"
 
 #include "delta_search.h"
+#include "target_count_hd.h"
 
 #include <algorithm>
 #include <cmath>
@@ -27,11 +28,24 @@ Status select_target_error(const CandidateSet& set, const SelectOptions& opt, co
                     "target_error measures the skeleton against the surface: the candidate set has none (caller arrays)");
     if (te.max_probes == 0) return fail(Code::invalid_argument, "max_probes must be at least 1");
 
+    std::shared_ptr<const EvaluationSurface> surface;
+    Status prepared = prepare_evaluation(set.surface.mesh, te.evaluate, surface, &set.queries);
+    if (!prepared.ok()) return prepared;
     SelectOptions probe_opt = opt;
     DeltaProbe last, best;
+    // coarse to fine: a probe is measured coarsely first; one whose coarse HD (about a lower bound
+    // of the exact one: fewer samples of E's boundary) is above E fails on it, the others are
+    // measured exactly, which decides whether they pass
+    const EvaluateOptions coarse = coarse_evaluation(te.evaluate, te.coarse_envelope_samples);
     auto probe = [&](double d, TargetErrorProbe& summary) {
         probe_opt.delta = d;
-        const Status st = probe_delta(set, probe_opt, te.connect, te.fit, te.evaluate, monitor, last);
+        Status st = probe_delta(set, probe_opt, te.connect, te.fit, coarse, *surface, monitor, last);
+        if (st.ok() && last.summary.hd <= te.target_error) {
+            st = evaluate(*surface, last.skeleton, te.evaluate, monitor, last.evaluation, true);
+            last.summary.hd = last.evaluation.hd_two_sided;
+        } else if (st.ok()) {
+            last.summary.exact = false;
+        }
         summary = last.summary;
         return st;
     };
@@ -48,6 +62,15 @@ Status select_target_error(const CandidateSet& set, const SelectOptions& opt, co
     // the time limit after a finished probe returns the best so far
     if (!st.ok() && !(st.code == Code::time_limit && have_best)) return st;
     if (!have_best) return fail(Code::uncoverable, "no delta tried gives a cover of every sample");
+    // none passed and the best was measured coarsely only: its exact HD is the one reported (a
+    // monitor that has stopped leaves the coarse figure, marked so in the probe list)
+    if (!best.summary.exact && !monitor.stopped()) {
+        if (evaluate(*surface, best.skeleton, te.evaluate, monitor, best.evaluation, true).ok()) {
+            best.summary.exact = true;
+            r.probes[r.best].hd = best.evaluation.hd_two_sided;
+            r.probes[r.best].exact = true;
+        }
+    }
     out.selection = std::move(best.selection);
     out.selection.probes = r.runs;
     out.selection.time_total_s = seconds_since(t0);  // the whole search

@@ -9,6 +9,11 @@
 // (fewest balls, then lowest HD, then larger delta), or, when none passes, the probe of lowest HD
 // with `reached` false.
 //
+// Each probe is measured coarsely first (coarse_envelope_samples samples of E's boundary, about
+// a lower bound of the exact HD): above E it fails on that figure (its hd is the coarse one);
+// otherwise it is measured exactly (evaluate's hd_only on the surface prepared once), which
+// decides whether it passes.
+//
 // What this guarantees: the returned selection's HD, measured with the given evaluation
 // options, is the HD reported (it is not re-sampled), and is <= E when `reached`. The HD is not
 // monotone in delta, so a delta between two probes may give fewer balls within E: no bound
@@ -26,6 +31,7 @@ struct TargetErrorOptions {
                                     // judged is the fitted skeleton's
     EvaluateOptions evaluate;     // how each probe is measured (ca_evaluate's defaults)
     uint32_t max_probes = 14;     // select + connect + evaluate runs, at most
+    uint32_t coarse_envelope_samples = 10000;  // the coarse measurement's samples of E's boundary
 };
 
 struct TargetErrorResult {

@@ -114,6 +114,9 @@ Status select_step(const CandidateSet& set, const SelectRequest& request, const 
         if (!st.ok()) return st;
         out.selection = std::move(tcr.selection);
         out.hd_reached = tcr.evaluation.hd_two_sided;
+        if (tcr.stopped)
+            monitor.note(2, "target count: the time limit ended the search after " + std::to_string(tcr.probes.size()) +
+                                " probes; the best skeleton so far is returned");
     } else {
         st = select_balls(set, so, monitor, out.selection);
         if (!st.ok()) return st;

@@ -328,3 +328,41 @@ TEST_CASE("evaluate: errors and cancellation") {
     };
     CHECK(evaluate(sphere, one_ball(1), EvaluateOptions{}, stop_later, r).code == Code::cancelled);
 }
+
+TEST_CASE("evaluate on a prepared surface: the full result is evaluate()'s, hd_only its maxima") {
+    // skeletons inside, across and outside a sphere mesh: points of S inside and outside E, and
+    // boundary points of E near and far from S, so that every pruning branch is taken
+    const Mesh sphere = shapes::icosphere(1.0, 3);
+    EvaluateOptions opt;
+    opt.surface_samples = 4000;
+    opt.envelope_samples = 20000;
+    std::shared_ptr<const EvaluationSurface> prepared;
+    REQUIRE(prepare_evaluation(sphere, opt, prepared).ok());
+    std::vector<Skeleton> skeletons(4);
+    skeletons[0].balls = {{Vec3(0, 0, 0), 0.9}};
+    skeletons[1].balls = {{Vec3(-0.5, 0, 0), 0.6}, {Vec3(0.5, 0, 0), 0.6}, {Vec3(0, 0.5, 0), 0.5}};
+    skeletons[1].faces = {{0, 1, 2}};
+    skeletons[2].balls = {{Vec3(-0.8, 0, 0), 0.5}, {Vec3(0.9, 0.2, 0), 0.4}};
+    skeletons[2].edges = {{0, 1}};
+    skeletons[3].balls = {{Vec3(0.3, 0.1, 0), 1.2}};
+    for (int threads : {1, 3}) {
+        opt.threads = threads;
+        for (const Skeleton& s : skeletons) {
+            EvaluateResult full, same, fast;
+            REQUIRE(evaluate(sphere, s, opt, Monitor{}, full).ok());
+            REQUIRE(evaluate(*prepared, s, opt, Monitor{}, same).ok());
+            REQUIRE(evaluate(*prepared, s, opt, Monitor{}, fast, true).ok());
+            CHECK(same.hd_two_sided == full.hd_two_sided);
+            CHECK(same.mean_surface_to_recon == full.mean_surface_to_recon);
+            CHECK(same.mean_recon_to_surface == full.mean_recon_to_surface);
+            CHECK(fast.hd_surface_to_recon == full.hd_surface_to_recon);
+            CHECK(fast.hd_recon_to_surface == full.hd_recon_to_surface);
+            CHECK(fast.hd_two_sided == full.hd_two_sided);
+        }
+    }
+    // other samples or seed than those prepared are refused
+    EvaluateOptions other = opt;
+    other.seed = 2;
+    EvaluateResult r;
+    CHECK(evaluate(*prepared, skeletons[0], other, Monitor{}, r).code == Code::invalid_argument);
+}
