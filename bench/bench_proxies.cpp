@@ -8,7 +8,7 @@
 //    test, % of the model's volume) and, conservative, the share of 100 000 fresh surface samples
 //    (drawn here, not the library's) that the union contains. Summary per mode and K: on how many
 //    models the proxies have the lower error, the smaller outside volume, and hold every sample.
-// 2. Conservative proxies (capsules; `all` shapes too once the library has CA_PROXY_SHAPES_ALL)
+// 2. Conservative proxies (capsules, and `all`: spheres, capsules and boxes)
 //    at K = 16, 32, 64 against V-HACD's hulls at 16 and 64 (bench/vhacd/vhacd_driver, built by
 //    bench/vhacd/setup.sh; without it the table says so and the rest runs), on the paper models
 //    and, at K = 16, the game files of <data>/real. One measure for both (bench_proxies_peer.h):
@@ -175,16 +175,14 @@ const StatColumn kStatColumns[] = {
     {"lib out %", [](const ca_proxy_stats& s, double vol) { return 100 * s.outside_volume / vol; }},
 };
 
-// The shapes our proxies are run with: capsules, and every shape once the library takes it.
+// The shapes our proxies are run with: capsules (and spheres), and all shapes (boxes too).
 struct OurShapes {
     const char* name;
     int32_t shapes;
 };
 const OurShapes kOurShapes[] = {
     {"capsules", CA_PROXY_SHAPES_CAPSULES},
-#ifdef CA_PROXY_SHAPES_ALL
     {"all", CA_PROXY_SHAPES_ALL},
-#endif
 };
 constexpr size_t kShapeCount = sizeof kOurShapes / sizeof kOurShapes[0];
 
@@ -194,6 +192,16 @@ bool read_proxies(const ca_proxy_set* px, std::vector<ca::Proxy>& ps) {
     const int32_t* kinds = ca_proxy_set_kinds(px);
     const double *c = ca_proxy_set_centers(px), *r = ca_proxy_set_radii(px);
     for (size_t i = 0; i < ps.size(); ++i) {
+        if (kinds[i] == CA_PROXY_BOX) {
+            // a box as an engine places it: the node's rotation turns the box's x y z axes
+            ca_proxy_placement pl;
+            pl.struct_size = sizeof pl;
+            if (ca_proxy_set_placement(px, i, &pl) != CA_OK) return false;
+            const Eigen::Quaterniond q(pl.rotation[3], pl.rotation[0], pl.rotation[1], pl.rotation[2]);
+            ps[i] = ca::make_box(ca::Vec3(pl.center[0], pl.center[1], pl.center[2]), q.toRotationMatrix(),
+                                 ca::Vec3(pl.half_extents[0], pl.half_extents[1], pl.half_extents[2]));
+            continue;
+        }
         if (kinds[i] != CA_PROXY_SPHERE && kinds[i] != CA_PROXY_CAPSULE) return false;
         ps[i].kind = kinds[i] == CA_PROXY_CAPSULE ? ca::ProxyKind::capsule : ca::ProxyKind::sphere;
         ps[i].a = {ca::Vec3(c[6 * i], c[6 * i + 1], c[6 * i + 2]), r[2 * i]};
