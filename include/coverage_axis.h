@@ -9,36 +9,21 @@
  *   ca_select      fewest dilated candidate balls covering every sample      (ca_selection)
  *   ca_connect     edges and triangles between the selected balls            (ca_skeleton)
  *
- * Conventions
- * - Coordinates are double, in the caller's units; every result is in the caller's units.
- *   Lengths given as options (delta) are fractions of the longest side of the input's bounding
- *   box (the paper's unit-cube convention: delta = 0.02 means 2 % of the longest side).
- * - Inputs are borrowed views: pointer + count + byte stride (0 = tightly packed); every array the
- *   library reads has its count, and a count that does not match is CA_ERROR_INVALID_INPUT. They
- *   are read during the call only.
- * - Every fallible call returns a ca_status (pinned values below). On any status other than
- *   CA_OK the output pointer is set to NULL and nothing is allocated: no partial results.
- *   ca_context_last_error() gives a one-line explanation.
- * - Results are opaque, immutable, and freed with their ca_*_destroy function (never free()).
- *   Zero-copy getters return pointers valid until destroy; results may be read from several
- *   threads at once. Results outlive their context; a selection keeps its candidate set alive;
- *   a skeleton holds nothing (docs/abi.md: ownership and lifetimes).
- * - A context must be used by one thread at a time. ca_context_request_cancel() may be called from
- *   any thread. Callbacks run on the calling thread only.
- * - Every struct starts with uint32_t struct_size (the ABI can grow; docs/abi.md):
- *   . struct_size may be any size this library has published for the struct: sizeof of its
- *     layout in any ABI version from the first to CA_ABI_VERSION (fields are only appended; each
- *     field says the ABI version that added it, none = ABI 1). Other sizes are refused with
- *     CA_ERROR_STRUCT_SIZE and a message naming the struct and the sizes it accepts.
- *   . Inputs: fields past the caller's struct_size take their defaults. Fill a struct with its
- *     *_init() (static inline: struct_size = sizeof as your compiler sees it, then the library's
- *     defaults), then change what you need. Bindings call ca_*_defaults(p, size) directly.
- *   . Outputs (stats, evaluation, skeleton view): the caller sets struct_size; the library writes
- *     only the first struct_size bytes.
- *   . The defaults live in the library only (ca_*_defaults); the comments below name them.
- * - The library never prints, never calls exit()/abort() on bad input, and lets no C++ exception
- *   cross this boundary. Its only process-wide state is a mutex that serialises calls into CBC
- *   (CBC is not thread-safe); Qhull runs with one handle per call.
+ * Conventions (the full rules: docs/abi.md)
+ * - Coordinates are doubles in the caller's units, and results come back in them. Lengths given as
+ *   options (delta) are fractions of the longest side of the input's bounding box.
+ * - Inputs are borrowed views (pointer, count, byte stride; 0 = packed), read during the call only;
+ *   every array has its count, and a count that does not match is CA_ERROR_INVALID_INPUT.
+ * - Every fallible call returns a ca_status. On any status but CA_OK the output pointer is NULL and
+ *   nothing is allocated (one exception: CA_ERROR_TARGET_NOT_REACHED); ca_context_last_error()
+ *   explains. No exception crosses this boundary; nothing prints, exits or aborts.
+ * - Results are opaque and immutable, freed with their ca_*_destroy, readable from several threads;
+ *   getters' pointers live until destroy. A context is used by one thread at a time.
+ * - Every struct starts with uint32_t struct_size and grows only at its end (fields name the ABI
+ *   that added them; none = ABI 1). Any size this library published is accepted, others are
+ *   CA_ERROR_STRUCT_SIZE. Fill inputs with ca_*_init() (C) or ca_*_defaults(p, size) (FFI); fields
+ *   past the caller's size take their defaults. Outputs are written up to the caller's size.
+ * - Defaults live in the library (ca_*_defaults); the comments name them, and a test checks that.
  */
 #ifndef COVERAGE_AXIS_H
 #define COVERAGE_AXIS_H
@@ -69,11 +54,7 @@ extern "C" {
 #define CA_VERSION_MINOR 2
 #define CA_VERSION_PATCH 0
 #define CA_VERSION_NUMBER (CA_VERSION_MAJOR * 10000 + CA_VERSION_MINOR * 100 + CA_VERSION_PATCH)
-/* ABI 2: structs grow by appending (see struct_size above); *_init became static inline over
-   the exported ca_*_defaults; ca_context_desc.progress_interval_s and three ca_select_stats
-   fields were appended. ABI 3: fields appended to ca_candidate_options and ca_skeleton_stats
-   (surface balls), and every array the library reads has a count (ca_surface_view.normal_count,
-   the ca_select_options mask counts). */
+/* The struct layouts and entry points (what each ABI added: docs/abi.md). */
 #define CA_ABI_VERSION 3
 /* The shared library's SOVERSION: raised only by a release that breaks existing callers; a new
    CA_ABI_VERSION that only appends keeps it (docs/abi.md, "Versions and releases"). */
@@ -134,11 +115,9 @@ typedef struct ca_context_desc {
     double progress_interval_s; /* ABI 2. Least time between two progress calls within a stage
                                    (a stage's first call and calls with fraction 1 always come); default 0 =
                                    every update. Cancel requests are still seen at every update. */
-    double time_limit_s;   /* ABI 2 (appended after progress_interval_s). Wall-clock budget of each
-                              long call (ca_candidates, ca_select, ca_connect, ca_evaluate), checked
-                              by every stage; when it runs out the call returns CA_ERROR_TIME_LIMIT
-                              naming the stage (nothing allocated), except the exact solver, which
-                              returns its best cover so far, not proven. Default 0 = unlimited. */
+    double time_limit_s;   /* ABI 2. Wall-clock budget of each long call: CA_ERROR_TIME_LIMIT naming
+                              the stage, except the exact solver, which returns its best cover
+                              unproven. Default 0 = unlimited. */
 } ca_context_desc;
 
 /* Sets struct_size and the defaults (all zero/NULL, threads 0) of the first struct_size bytes of
@@ -204,12 +183,9 @@ typedef struct ca_candidate_options {
                                     default 10000; 0 = reuse the Voronoi samples */
     uint32_t reserved_abi2_tail; /* ABI 3. The tail padding of the ABI 2 layout, never read (a caller of
                                     ABI 2 may leave it uninitialised) */
-    int32_t volumetric_only;     /* ABI 3. 0 (default): a cover sample that no inner ball reaches (open
-                                    sheets, cards, planes, single-sided or very thin parts) gets a
-                                    surface ball: centred on the surface there, radius half the local
-                                    thickness of a thin two-sided part, else 0; the cover then always
-                                    exists. 1: inner balls only; such samples make ca_select return
-                                    CA_ERROR_UNCOVERABLE, and a flat mesh CA_ERROR_NO_CANDIDATES */
+    int32_t volumetric_only;     /* ABI 3. 0 (default): a cover sample no inner ball reaches (sheets, cards,
+                                    thin parts) gets a surface ball, so a cover always exists. 1: inner
+                                    balls only (CA_ERROR_UNCOVERABLE, or CA_ERROR_NO_CANDIDATES) */
 } ca_candidate_options;
 
 CA_API ca_status ca_candidate_options_defaults(ca_candidate_options* options, uint32_t struct_size); /* the defaults named above */
@@ -296,32 +272,20 @@ typedef struct ca_select_options {
     const uint8_t* ignorable_samples; /* sample_count entries: need not be covered */
     const uint8_t* forced_in;         /* ball_count entries: must be selected */
     const uint8_t* forced_out;        /* ball_count entries: must not be selected */
-    uint32_t target_count;       /* 0 (default): off. K > 0: at most K balls. The smallest dilation
-                                    (delta, or scale) that achieves it, found by bisection starting
-                                    from the delta/scale above; with the offset dilation on a mesh or
-                                    a cloud, then the lowest two-sided HD among 9 deltas from that
-                                    one (docs/fidelity.md: what it guarantees; stats hd_reached) */
+    uint32_t target_count;       /* 0 (default): off. K > 0: at most K balls: the smallest dilation that
+                                    achieves it (bisection), then with the offset dilation the lowest
+                                    two-sided HD among probed deltas (docs/fidelity.md; hd_reached) */
     double target_tolerance;     /* bisection tolerance on delta (fraction of L) or scale; default 1e-4 */
     uint32_t divide_threshold;   /* more samples than this: divide and conquer (paper 8.1);
                                     default 100000; 0 = never */
     int32_t effort;              /* CA_EFFORT_*; default FAST */
-    double target_error;         /* ABI 2. 0 (default): off. E > 0: the fewest balls whose skeleton, connected
-                                    with the default ca_connect_options and measured as ca_evaluate does
-                                    with its defaults, has a two-sided Hausdorff distance <= E % of the
-                                    bbox diagonal, by a search over delta from the delta above (offset
-                                    dilation only, not with target_count; docs/fidelity.md: what it
-                                    guarantees). On a mesh, unfitted probes that all miss E are
-                                    searched again fitted, and ca_connect's default fit (CA_FIT_AUTO)
-                                    then fits the result as judged. The stats give the HD reached and
-                                    the delta. When no
-                                    probe reaches E: CA_ERROR_TARGET_NOT_REACHED, and *out is the
-                                    selection of lowest HD found (destroy it as on success) */
-    int32_t probe_fit;           /* ABI 2 (appended after target_error). How the target_error search and
-                                    target_count's lowest-HD search connect each probe: 0 (default): the
-                                    default ca_connect_options; 1: the same with fit = 1, so the HD
-                                    judged and reported (hd_reached) is that of the fitted skeleton
-                                    ca_connect gives with fit = 1 (meshes; docs/fidelity.md). Ignored
-                                    by the other selections */
+    double target_error;         /* ABI 2. 0 (default): off. E > 0: few balls whose skeleton (connected and
+                                    evaluated at the defaults) is within two-sided HD E % of the bbox
+                                    diagonal, by a search over delta (offset dilation, not with
+                                    target_count; docs/fidelity.md). None within E:
+                                    CA_ERROR_TARGET_NOT_REACHED with *out the lowest-HD selection */
+    int32_t probe_fit;           /* ABI 2. The searches' probes: 0 (default): connected at the defaults;
+                                    1: with fit = 1, so hd_reached is the fitted skeleton's (meshes) */
     /* ABI 3: the entries of the masks above, one per sample (ignorable_samples) or per candidate
        ball (forced_in, forced_out) when the mask is set, else CA_ERROR_INVALID_INPUT; 0 with the
        mask NULL. A caller of ABI 1 or 2 has no such fields: its masks count the set's samples or balls */
@@ -369,10 +333,8 @@ typedef struct ca_select_stats {
     double time_coverage_s;      /* ABI 2: building the coverage matrix (part of time_total_s) */
     uint64_t cbc_components;     /* ABI 2: components of the kernel that needed CBC */
     uint64_t rowgen_rounds;      /* ABI 2: row-generation rounds (sub-problems solved) */
-    double hd_reached;           /* ABI 2 (appended after rowgen_rounds). target_error, or target_count
-                                    searched by HD: the two-sided HD of the returned selection, % of the
-                                    bbox diagonal (above target_error when no probed delta reached it);
-                                    -1 when not measured */
+    double hd_reached;           /* ABI 2. The searches: the returned selection's two-sided HD, % of the
+                                    bbox diagonal; -1 when not measured */
 } ca_select_stats;
 
 CA_API ca_status ca_selection_stats(const ca_selection* selection, ca_select_stats* stats);
@@ -393,18 +355,12 @@ typedef struct ca_connect_options {
     int32_t remove_outside;      /* 1 (default): drop edges/triangles whose interior leaves the shape */
     int32_t fill_holes;          /* 1 (default): fill 3- and 4-edge holes whose triangles stay inside */
     int32_t reconnect;           /* 1 (default): join components by the shortest inside edges */
-    int32_t fit;                 /* ABI 2. CA_FIT_*. ONCE: after connecting, move each ball's centre and
-                                    radius to fit the surface, edges and faces unchanged (meshes;
-                                    docs/fidelity.md); THOROUGH: that fit and a second one with twice
-                                    its boundary samples, of which the one of lower two-sided HD as
-                                    ca_evaluate measures it at its defaults is kept (4-6x the CPU
-                                    time); COVERED (ABI 3): ONCE, then the cover samples it left
-                                    uncovered covered again by added unfitted candidate balls, the
-                                    grown selection connected again and refitted keeping the cover
-                                    (fit_uncovered 0; more vertices than the selection has balls);
-                                    AUTO (default, ABI 3): THOROUGH for a selection sized by
-                                    target_count on a mesh, else OFF; other values are
-                                    CA_ERROR_INVALID_ARGUMENT */
+    int32_t fit;                 /* ABI 2. CA_FIT_* (meshes; docs/fidelity.md). ONCE: each ball's centre and
+                                    radius fitted to the surface, edges and faces kept; THOROUGH: of
+                                    that and a fit with twice the samples, the lower evaluated HD;
+                                    COVERED: ONCE, then added balls keep every cover sample covered
+                                    (more vertices than balls); AUTO (default): THOROUGH for a
+                                    target_count selection, else OFF */
     int32_t fit_iterations;      /* ABI 2. Fitting steps; default 10 */
 } ca_connect_options;
 
@@ -441,10 +397,8 @@ typedef struct ca_skeleton_stats {
     uint64_t fit_uncovered;      /* ABI 2. cover samples that no fitted ball covers within its
                                     dilated radius (0 = the cover still holds) */
     int32_t fitted;              /* ABI 2. 1 if the balls were fitted (fit on, mesh input) */
-    int64_t genus;               /* ABI 2 (appended after fitted). Genus of the input mesh (sum over
-                                    its connected parts), -1 if unknown: a point cloud, or a part
-                                    that is open or not edge-manifold. When known, the connection
-                                    removes loops while betti1 > genus (docs/method.md). */
+    int64_t genus;               /* ABI 2. Genus of the input mesh (sum over its parts), -1 if unknown
+                                    (clouds, open or non-manifold parts); loops beyond it are removed */
     uint64_t thin_handles;       /* ABI 2. max(0, genus - betti1): handles of the shape that the
                                     skeleton has no loop for (too thin for the dilation); 0 if
                                     the genus is unknown */
@@ -510,15 +464,10 @@ CA_API ca_status ca_evaluate(ca_context* ctx, const ca_surface_view* surface, co
                              const ca_evaluate_options* options, ca_evaluation* result);
 
 /* ---- correspondence and rig ---------------------------------------------------------------- */
-/* docs/rig.md. For every vertex of a surface (ca_surface_view: the positions are used; triangles
-   and normals are checked as ca_evaluate checks them) and a skeleton in the same units
-   (ca_skeleton_view: from ca_skeleton_get_view or the caller's arrays):
-   . the correspondence: the nearest skeleton primitive (the envelope of a ball, of an edge's medial
-     cone or of a face's medial slab) and up to CA_INFLUENCES balls with weights that sum to 1 and
-     change continuously over the surface (a blend of the primitives near the vertex);
-   . the rig: a curve skeleton (a tree of joints: sheets crossed along their middle, junctions and
-     the branches that reach out of the shape kept, joints spaced along long branches), and per
-     vertex CA_INFLUENCES joints with weights (sum 1), the ball weights mapped to the joints. */
+/* docs/rig.md. For every vertex of a surface and a skeleton in the same units: the correspondence
+   (the nearest skeleton primitive, and up to CA_INFLUENCES balls with weights that sum to 1 and
+   vary continuously), and the rig (a tree of joints along a curve skeleton, and per vertex
+   CA_INFLUENCES joints with weights). */
 #define CA_INFLUENCES 4
 #define CA_NEAREST_BALL 0 /* ca_correspondence_nearest_kinds: the index is a ball's */
 #define CA_NEAREST_EDGE 1 /* an edge's (of ca_skeleton_view.edges) */
@@ -587,16 +536,12 @@ CA_API const double* ca_rig_vertex_weights(const ca_rig* rig);
 CA_API const uint32_t* ca_rig_vertex_branches(const ca_rig* rig); /* the branch of the vertex's heaviest ball */
 
 /* ---- engine proxies ------------------------------------------------------------------------ */
-/* Spheres and tapered capsules (a capsule is two balls and their medial cone: the convex hull of
-   the two spheres), the primitives game engines take as colliders, broad-phase volumes and shadow
-   casters: at most `count` of them chosen from a skeleton's balls, edges and chains of edges, at
-   the least two-sided Hausdorff distance to the surface (docs/proxies.md). Modes:
-   - INSCRIBED: every primitive inside the shape, up to the skeleton's own excess: a proven bound
-     (from the depth of the balls' centres) of how far each primitive reaches outside is at most
-     how far the skeleton's balls and edges are measured to reach;
-   - CONSERVATIVE: the union contains every point of the surface (not only samples: the surface is
-     cut into small triangles and each primitive, being convex, is grown until it holds all three
-     corners of the triangles it is given). */
+/* At most `count` convex primitives engines take as colliders (docs/proxies.md): spheres, tapered
+   capsules (the convex hull of two balls) and oriented boxes, from a skeleton and its surface.
+   - INSCRIBED: chosen at the least two-sided HD; no primitive reaches farther outside the shape
+     than the skeleton's own balls and edges (a proven bound against a measurement);
+   - CONSERVATIVE: chosen at the least volume outside the shape; the union holds every point of the
+     surface (every point of every triangle, not only samples). */
 #define CA_PROXY_SHAPES_SPHERES  0 /* spheres only */
 #define CA_PROXY_SHAPES_CAPSULES 1 /* tapered capsules and spheres */
 #define CA_PROXY_SHAPES_BOXES    2 /* oriented boxes and spheres */

@@ -138,6 +138,17 @@ void improve(const Columns& P, std::vector<uint32_t>& sel, const Monitor& monito
     for (int round = 0; round < kSearchRounds; ++round) {
         if (monitor.stopped() || deadline.expired()) return;
         bool improved = false;
+        // a trial cover, less what it makes redundant, replaces the selection when it fits K and
+        // lowers the cost
+        auto accept = [&](std::vector<uint32_t>& trial) {
+            drop_redundant(P, trial);
+            const double v = total(P, trial);
+            if (trial.size() > P.K || v >= value * (1 - kMinImprovement)) return false;
+            sel = std::move(trial);
+            value = v;
+            improved = true;
+            return true;
+        };
         // ---- add one column, drop what it makes redundant ----
         std::fill(count.begin(), count.end(), 0);
         std::fill(in.begin(), in.end(), 0);
@@ -177,14 +188,7 @@ void improve(const Columns& P, std::vector<uint32_t>& sel, const Monitor& monito
         for (const auto& g : gains) {
             std::vector<uint32_t> trial = sel;
             trial.push_back(g.second);
-            drop_redundant(P, trial);
-            const double v = total(P, trial);
-            if (trial.size() <= P.K && v < value * (1 - kMinImprovement)) {
-                sel = trial;
-                value = v;
-                improved = true;
-                break;
-            }
+            if (accept(trial)) break;
         }
         // ---- re-cover one chosen column's unique rows with cheaper columns ----
         std::vector<uint32_t> order = sel;
@@ -215,15 +219,7 @@ void improve(const Columns& P, std::vector<uint32_t>& sel, const Monitor& monito
             trial.insert(trial.end(), add.begin(), add.end());
             std::sort(trial.begin(), trial.end());
             trial.erase(std::unique(trial.begin(), trial.end()), trial.end());
-            if (!covers(P, trial)) continue;
-            drop_redundant(P, trial);
-            const double v = total(P, trial);
-            if (trial.size() <= P.K && v < value * (1 - kMinImprovement)) {
-                sel = trial;
-                value = v;
-                improved = true;
-                break;  // the order is stale
-            }
+            if (covers(P, trial) && accept(trial)) break;  // the order is stale
         }
         if (!improved) return;
     }

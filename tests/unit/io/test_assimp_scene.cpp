@@ -12,6 +12,7 @@
 #include <memory>
 #include <string>
 
+#include "assimp_shapes.h"
 #include "io_test_util.h"
 #include "mesh_io.h"
 #include "readers.h"
@@ -23,17 +24,7 @@ const std::string kHostile = std::string(CA_TEST_DATA) + "/hostile/";
 // A tetrahedron: one mesh of four triangles, one material, instanced by the root node.
 std::unique_ptr<aiScene> tetrahedron() {
     auto scene = std::make_unique<aiScene>();
-    aiMesh* mesh = new aiMesh;
-    mesh->mPrimitiveTypes = aiPrimitiveType_TRIANGLE;
-    mesh->mNumVertices = 4;
-    mesh->mVertices = new aiVector3D[4]{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    const unsigned corners[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
-    mesh->mNumFaces = 4;
-    mesh->mFaces = new aiFace[4];
-    for (unsigned f = 0; f < 4; ++f) {
-        mesh->mFaces[f].mNumIndices = 3;
-        mesh->mFaces[f].mIndices = new unsigned[3]{corners[f][0], corners[f][1], corners[f][2]};
-    }
+    aiMesh* mesh = tetrahedron_mesh();
     scene->mNumMeshes = 1;
     scene->mMeshes = new aiMesh*[1]{mesh};
     scene->mNumMaterials = 1;

@@ -12,27 +12,13 @@
 #include <string>
 #include <vector>
 
+#include "assimp_shapes.h"
 #include "mesh_io.h"
 #include "readers.h"
 
 namespace {
 
 const std::string kDropped = std::string(CA_TEST_DATA) + "/dropped/";
-
-aiMesh* tetrahedron_mesh() {
-    aiMesh* mesh = new aiMesh;
-    mesh->mPrimitiveTypes = aiPrimitiveType_TRIANGLE;
-    mesh->mNumVertices = 4;
-    mesh->mVertices = new aiVector3D[4]{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    const unsigned corners[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
-    mesh->mNumFaces = 4;
-    mesh->mFaces = new aiFace[4];
-    for (unsigned f = 0; f < 4; ++f) {
-        mesh->mFaces[f].mNumIndices = 3;
-        mesh->mFaces[f].mIndices = new unsigned[3]{corners[f][0], corners[f][1], corners[f][2]};
-    }
-    return mesh;
-}
 
 // A scene of `meshes` (owned), a material, and a root node instancing every mesh, with one child
 // node per name in `node_names`.
