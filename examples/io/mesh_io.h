@@ -10,6 +10,23 @@
 
 namespace caio {
 
+// A skin read with the mesh (glTF skins; assimp aiBone). Empty (no joints) when the file has none.
+// Vertex indices are those of MeshData::positions (the bind pose: positions as stored, before any
+// animation; for glTF the skinned mesh's own attributes, NOT moved by its node transform).
+struct SkinData {
+    std::vector<std::string> joint_names;   // one per joint
+    std::vector<int32_t> parents;           // -1 for a root; the joints' own hierarchy (a joint's
+                                            // nearest ancestor node that is a joint)
+    std::vector<double> inverse_bind;       // 16 per joint, column-major: mesh frame -> joint frame
+    std::vector<double> joint_world;        // 16 per joint, column-major: the joint node's world
+                                            // matrix in the file's rest pose (for writing back)
+    uint32_t influences = 0;                // weights per vertex (4 or 8)
+    std::vector<uint32_t> vertex_joints;    // positions.size()/3 * influences
+    std::vector<double> vertex_weights;     // same length, normalised per vertex (zero rows allowed)
+    std::vector<int32_t> gltf_nodes;        // glTF input: the node index of each joint, else empty
+    bool empty() const { return joint_names.empty(); }
+};
+
 struct MeshData {
     std::vector<double> positions;     // x y z per vertex
     std::vector<uint32_t> triangles;   // i j k per triangle (polygons are fan-triangulated); empty for a point cloud
@@ -17,6 +34,8 @@ struct MeshData {
     // Parts of the file left out because assimp's validation refuses them and the readers never
     // use them, one line each ("animation 'Take 001': keys past its duration"); else empty.
     std::vector<std::string> dropped;
+    // The skin, when the file has one (glTF, assimp formats with bones); else empty.
+    SkinData skin;
 };
 
 // Reads a mesh or point cloud. `path` "-" reads standard input (then `format` is required).
