@@ -11,7 +11,8 @@
 // its node's in the file's node tree (its rest pose); its parent is the nearest node above it that
 // is a joint. Each vertex keeps its 8 heaviest weights (summed per joint, ties to the lower
 // joint), renormalised. A mesh without bones in a skinned scene follows the nearest joint node at
-// or above its node (weight 1), or no joint (zero weights).
+// or above its node (weight 1), or no joint (zero weights). The scene passed check_assimp_scene
+// (finite offset matrices, weights naming vertices in range) before post-processing.
 #include <assimp/scene.h>
 
 #include <algorithm>
@@ -35,13 +36,6 @@ Mat4 to_mat4(const aiMatrix4x4& a) {
     for (unsigned r = 0; r < 4; ++r)
         for (unsigned c = 0; c < 4; ++c) m[c * 4 + r] = a[r][c];
     return m;
-}
-
-bool finite(const aiMatrix4x4& m) {
-    for (unsigned r = 0; r < 4; ++r)
-        for (unsigned c = 0; c < 4; ++c)
-            if (!std::isfinite(m[r][c])) return false;
-    return true;
 }
 
 bool same_matrix(const Mat4& a, const Mat4& b) {
@@ -125,8 +119,6 @@ bool place_assimp_meshes(const std::string& name, const aiScene& scene, size_t i
             for (unsigned b = 0; b < mesh.mNumBones; ++b) {
                 const aiBone& bone = *mesh.mBones[b];
                 const std::string bname = bone_name(bone.mName);
-                if (!finite(bone.mOffsetMatrix))
-                    return fail(error, name, 0, "bone '" + printable(bname, 60) + "': offset matrix holds NaN or infinity");
                 if (joints.by_name.count(bname)) continue;
                 joints.by_name.emplace(bname, uint32_t(joints.names.size()));
                 joints.names.push_back(bname);
