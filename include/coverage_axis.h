@@ -537,6 +537,7 @@ typedef struct ca_skin_view {
                                        the library (all zero: the vertex drives no joint) */
 } ca_skin_view;
 CA_API ca_status ca_skin_view_defaults(ca_skin_view* view, uint32_t struct_size); /* all zero */
+CA_DEFINE_INIT_(ca_skin_view)
 
 typedef struct ca_bone_collider_options {
     uint32_t struct_size;           /* sizeof(ca_bone_collider_options) */
@@ -555,9 +556,7 @@ typedef struct ca_bone_collider_options {
     uint64_t seed;                  /* default 1 */
 } ca_bone_collider_options;
 CA_API ca_status ca_bone_collider_options_defaults(ca_bone_collider_options* options, uint32_t struct_size);
-static inline void ca_bone_collider_options_init(ca_bone_collider_options* options) {
-    if (options) { options->struct_size = (uint32_t)sizeof *options; (void)ca_bone_collider_options_defaults(options, (uint32_t)sizeof *options); }
-}
+CA_DEFINE_INIT_(ca_bone_collider_options)
 
 typedef struct ca_bone_colliders ca_bone_colliders;
 
