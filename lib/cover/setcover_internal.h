@@ -3,8 +3,9 @@
 // and bounds (setcover_problem.cpp), the exact machinery (lagrangian.cpp: the Lagrangian bound;
 // lp_cbc.cpp: the LP, and CBC behind the process-wide mutex; row_generation.cpp), the local
 // search (local_search.cpp),
-// and the reduction of the input and of compact problems (reduction.cpp; the solve driver
-// is setcover.cpp).
+// the reduction of the input and of compact problems (reduction.cpp), the input checks
+// (setcover_checks.cpp) and the exact solve of one component (component_solve.cpp); the solve
+// driver is setcover.cpp.
 #pragma once
 #include "setcover.h"
 #include "timing.h"
@@ -256,6 +257,30 @@ Status reduce_coverage(const Coverage& cov, bool transpose_ok, const std::vector
 // Reduction of a compact problem to its kernel (every row required, every column allowed):
 // `forced` and the kernel's col_id / row_id are P-local.
 Status reduce_problem(const Problem& P, const Monitor& monitor, std::vector<uint32_t>& forced, Problem& kernel);
+
+// ---- setcover_checks.cpp ----
+// Shared front part: checks, masks, uncoverable samples.
+struct Prepared {
+    std::vector<uint8_t> required, allowed, locked;
+    bool transpose_ok = false;  // cov's sample -> ball lists can be used as they are
+    std::vector<uint32_t> uncovered;
+    size_t rows_before = 0, cols_before = 0;
+};
+Status prepare(const Coverage& cov, const CoverOptions& opt, bool skip_uncoverable, Prepared& pr);
+
+// ---- component_solve.cpp ----
+// Exact solve of one connected component: greedy -> Lagrangian bound and heuristic ->
+// reduced-cost fixing (drop every column that no cover smaller than the incumbent can use) ->
+// reduction of what is left -> CBC on that, with the incumbent as cutoff.
+struct ComponentResult {
+    std::vector<uint32_t> sel;  // P-local columns, ascending
+    double lb = 0;
+    bool proven = false;
+    bool used_cbc = false;
+    size_t rowgen_rounds = 0;
+};
+ComponentResult solve_component(const Problem& P, const Deadline& deadline, int threads,
+                                bool row_gen, Effort effort, int search_threads, const Monitor& monitor);
 
 }  // namespace sc
 }  // namespace ca
