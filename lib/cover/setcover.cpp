@@ -2,7 +2,7 @@
 // driver. Its steps are in their own files (setcover_internal.h): the input checks
 // (setcover_checks.cpp), the reduction (reduction.cpp), the exact solve of one component
 // (component_solve.cpp), building blocks (setcover_problem.cpp) and the exact machinery
-// (lagrangian.cpp, lp_cbc.cpp, row_generation.cpp, local_search.cpp).
+// (lagrangian.cpp, lp.cpp, cbc.cpp, row_generation.cpp, local_search.cpp).
 //
 // Pipeline: input checks -> reduction to a fixpoint (forced balls, degree-1 samples, dominated
 // samples, dominated balls, empty balls; after one complete pass of each dominance test only
