@@ -20,6 +20,8 @@ template <> ca_select_options defaults<ca_select_options>() { return to_c(ca::Se
 template <> ca_connect_options defaults<ca_connect_options>() { return to_c(ca::ConnectRequest{}); }
 template <> ca_evaluate_options defaults<ca_evaluate_options>() { return to_c(ca::EvaluateOptions{}); }
 template <> ca_proxy_options defaults<ca_proxy_options>() { return to_c(ca::ProxyOptions{}); }
+template <> ca_correspondence_options defaults<ca_correspondence_options>() { return to_c(ca::CorrespondOptions{}); }
+template <> ca_rig_options defaults<ca_rig_options>() { return to_c(ca::RigOptions{}); }
 
 namespace {
 // Writes the defaults into the caller's first struct_size bytes (a published size only).
