@@ -61,6 +61,7 @@ extern "C" {
 #define CA_SOVERSION 3   /* the shared library's; raised only by a release that breaks callers */
 
 CA_API uint32_t ca_version(void);     /* CA_VERSION_NUMBER of the linked library */
+CA_API const char* ca_version_string(void); /* the same as "major.minor.patch" (static) */
 CA_API uint32_t ca_abi_version(void); /* CA_ABI_VERSION of the linked library */
 
 /* ---- status codes (pinned values; never renumbered) ---------------------------------------- */
@@ -537,6 +538,7 @@ typedef struct ca_skin_view {
                                        the library (all zero: the vertex drives no joint) */
 } ca_skin_view;
 CA_API ca_status ca_skin_view_defaults(ca_skin_view* view, uint32_t struct_size); /* all zero */
+CA_DEFINE_INIT_(ca_skin_view)
 
 typedef struct ca_bone_collider_options {
     uint32_t struct_size;           /* sizeof(ca_bone_collider_options) */
@@ -555,9 +557,7 @@ typedef struct ca_bone_collider_options {
     uint64_t seed;                  /* default 1 */
 } ca_bone_collider_options;
 CA_API ca_status ca_bone_collider_options_defaults(ca_bone_collider_options* options, uint32_t struct_size);
-static inline void ca_bone_collider_options_init(ca_bone_collider_options* options) {
-    if (options) { options->struct_size = (uint32_t)sizeof *options; (void)ca_bone_collider_options_defaults(options, (uint32_t)sizeof *options); }
-}
+CA_DEFINE_INIT_(ca_bone_collider_options)
 
 typedef struct ca_bone_colliders ca_bone_colliders;
 
