@@ -210,6 +210,19 @@ ca::ProxyOptions to_core(const ca_proxy_options& o, int32_t threads) {
     return p;
 }
 
+ca::BoneColliderOptions to_core(const ca_bone_collider_options& o, int32_t threads) {
+    ca::BoneColliderOptions b;
+    b.mode = static_cast<ca::ProxyMode>(o.mode);
+    b.shapes = static_cast<ca::ProxyShapes>(o.shapes);
+    b.min_share = o.min_share;
+    b.min_size = o.min_size;
+    b.surface_samples = o.surface_samples;
+    b.evaluate_samples = o.evaluate_samples;
+    b.seed = o.seed;
+    b.threads = threads;
+    return b;
+}
+
 // ---- options: core -> C (the defaults) ----
 
 ca_candidate_options to_c(const ca::CandidateOptions& c) {
@@ -270,6 +283,36 @@ ca_proxy_options to_c(const ca::ProxyOptions& p) {
     o.evaluate_samples = p.evaluate_samples;
     o.volume_samples = p.volume_samples;
     o.seed = p.seed;
+    return o;
+}
+
+ca_proxy_placement to_c(const ca::ProxyPlacement& pl) {
+    ca_proxy_placement o = zeroed<ca_proxy_placement>();
+    o.kind = static_cast<int32_t>(pl.kind);
+    for (int k = 0; k < 3; ++k) {
+        o.center[k] = pl.translation[k];
+        o.axis[k] = pl.axis[k];
+        o.half_extents[k] = 0.5 * pl.size[k];
+    }
+    o.rotation[0] = pl.rotation.x();
+    o.rotation[1] = pl.rotation.y();
+    o.rotation[2] = pl.rotation.z();
+    o.rotation[3] = pl.rotation.w();
+    o.radius_top = pl.radius_top;
+    o.radius_bottom = pl.radius_bottom;
+    o.height = pl.height;
+    return o;
+}
+
+ca_bone_collider_options to_c(const ca::BoneColliderOptions& b) {
+    ca_bone_collider_options o = zeroed<ca_bone_collider_options>();
+    o.mode = static_cast<int32_t>(b.mode);
+    o.shapes = static_cast<int32_t>(b.shapes);
+    o.min_share = b.min_share;
+    o.min_size = b.min_size;
+    o.surface_samples = b.surface_samples;
+    o.evaluate_samples = b.evaluate_samples;
+    o.seed = b.seed;
     return o;
 }
 

@@ -80,10 +80,15 @@ ca::SelectRequest to_core(const ca_select_options& o, int32_t threads);
 ca::ConnectRequest to_core(const ca_connect_options& o, int32_t threads);
 ca::EvaluateOptions to_core(const ca_evaluate_options& o, int32_t threads);
 ca::ProxyOptions to_core(const ca_proxy_options& o, int32_t threads);
+// the skip list is read by ca_bone_colliders_build (a borrowed array)
+ca::BoneColliderOptions to_core(const ca_bone_collider_options& o, int32_t threads);
 ca_candidate_options to_c(const ca::CandidateOptions& o);
 ca_select_options to_c(const ca::SelectRequest& o);
 ca_connect_options to_c(const ca::ConnectRequest& o);
 ca_evaluate_options to_c(const ca::EvaluateOptions& o);
 ca_proxy_options to_c(const ca::ProxyOptions& o);
+ca_bone_collider_options to_c(const ca::BoneColliderOptions& o);
+// A primitive's placement as the C struct (full current size).
+ca_proxy_placement to_c(const ca::ProxyPlacement& p);
 
 }  // namespace capi

@@ -634,6 +634,89 @@ typedef struct ca_proxy_placement {
    range, CA_ERROR_STRUCT_SIZE for a struct_size this library did not publish. */
 CA_API ca_status ca_proxy_set_placement(const ca_proxy_set* proxies, size_t index, ca_proxy_placement* placement);
 
+/* ---- Bone colliders (docs/bone_colliders.md) ----
+   One collider per joint (bone) of a skin: a tapered capsule or sphere fitted to the part of the
+   surface that joint dominates (the heaviest of the interpolated weights there), from the medial
+   balls of that part, placed in the joint's frame so it moves with the bone. */
+
+/* A skin: joints with a hierarchy and inverse bind matrices, and up to 8 joint weights per vertex
+   of the surface it deforms (glTF skins, assimp aiBone), in its bind pose (the vertices as given).
+   Where the surface repeats a vertex position, the first vertex's weights are used. */
+typedef struct ca_skin_view {
+    uint32_t struct_size;           /* sizeof(ca_skin_view) */
+    size_t joint_count;             /* >= 1 */
+    const int32_t* parents;         /* joint_count; -1 for a root; no cycles */
+    const double* inverse_bind;     /* joint_count * 16, column-major 4x4 (glTF): the surface's frame to
+                                       the joint's frame at bind time, a rotation (or reflection) with a
+                                       uniform scale and a translation; NULL = identity */
+    size_t vertex_count;            /* must equal the surface's vertex_count */
+    uint32_t influences;            /* joints per vertex, 1..8 */
+    const uint32_t* vertex_joints;  /* vertex_count * influences, each < joint_count */
+    const double* vertex_weights;   /* vertex_count * influences, finite, >= 0; normalised per vertex by
+                                       the library (all zero: the vertex drives no joint) */
+} ca_skin_view;
+CA_API ca_status ca_skin_view_defaults(ca_skin_view* view, uint32_t struct_size); /* all zero */
+
+typedef struct ca_bone_collider_options {
+    uint32_t struct_size;           /* sizeof(ca_bone_collider_options) */
+    int32_t mode;                   /* CA_PROXY_CONSERVATIVE (holds every point of its part) or
+                                       CA_PROXY_INSCRIBED (stays inside the shape); default CONSERVATIVE */
+    int32_t shapes;                 /* CA_PROXY_SHAPES_*: CAPSULES (a tapered capsule or sphere each) or
+                                       SPHERES; default CAPSULES */
+    double min_share;               /* a joint dominating less than this fraction of the surface's area
+                                       gets no collider; default 0.005 */
+    double min_size;                /* a collider whose larger radius is below this (percent of the
+                                       surface's bounding-box diagonal) is dropped; default 0.5 */
+    const uint32_t* skip_joints;    /* joints to give no collider (may be NULL when skip_count is 0) */
+    size_t skip_count;
+    uint32_t surface_samples;       /* samples of each part the fit uses; default 2000 */
+    uint32_t evaluate_samples;      /* fresh surface samples for the stats; default 100000 */
+    uint64_t seed;                  /* default 1 */
+} ca_bone_collider_options;
+CA_API ca_status ca_bone_collider_options_defaults(ca_bone_collider_options* options, uint32_t struct_size);
+static inline void ca_bone_collider_options_init(ca_bone_collider_options* options) {
+    if (options) { options->struct_size = (uint32_t)sizeof *options; (void)ca_bone_collider_options_defaults(options, (uint32_t)sizeof *options); }
+}
+
+typedef struct ca_bone_colliders ca_bone_colliders;
+
+/* One collider per joint that dominates at least min_share of the surface (and is not skipped),
+   fitted to the inner balls of `set` (made by ca_candidates from the same triangle mesh; else
+   CA_ERROR_INVALID_ARGUMENT) whose nearest surface point lies in that joint's part, and expressed
+   in the joint's frame (inverse_bind applied). `skeleton` may be NULL (it is not used yet; when
+   given, its view is checked). Bad skins (NULL arrays, NaN/Inf, indices out of range, a
+   vertex_count that is not the surface's, influences 0 or > 8, cycles, an inverse bind with shear
+   or non-uniform scale): CA_ERROR_INVALID_INPUT and nothing returned. The result copies what it
+   needs: it outlives `set`. */
+CA_API ca_status ca_bone_colliders_build(ca_context* ctx, const ca_candidate_set* set,
+                                         const ca_skeleton_view* skeleton, const ca_skin_view* skin,
+                                         const ca_bone_collider_options* options, ca_bone_colliders** out);
+CA_API void ca_bone_colliders_destroy(ca_bone_colliders* colliders);
+CA_API size_t ca_bone_colliders_count(const ca_bone_colliders* colliders);
+CA_API const uint32_t* ca_bone_colliders_joints(const ca_bone_colliders* colliders); /* joint of each, ascending */
+/* Placement of collider `index` in ITS JOINT'S frame (ca_proxy_placement's conventions; kind
+   CA_PROXY_SPHERE or CA_PROXY_CAPSULE). */
+CA_API ca_status ca_bone_colliders_placement(const ca_bone_colliders* colliders, size_t index,
+                                             ca_proxy_placement* placement);
+
+typedef struct ca_bone_collider_stats {
+    uint32_t struct_size;           /* set by the caller: sizeof(ca_bone_collider_stats) */
+    double contained_fraction;      /* fresh surface samples held by their part's collider, over all
+                                       parts that have one (conservative: 1) */
+    double union_volume, outside_volume;  /* Monte Carlo: the colliders' union and its part outside the
+                                             shape, caller's units cubed (surface frame) */
+    double neighbour_overlap;       /* sum over colliders of the overlap volume with the parent's */
+    uint64_t joints_with_collider;
+    uint64_t joints_skipped;        /* joints that dominate some of the surface but got no collider */
+    double time_s;
+} ca_bone_collider_stats;
+CA_API ca_status ca_bone_colliders_stats(const ca_bone_colliders* colliders, ca_bone_collider_stats* stats);
+/* Per collider (count entries): the fraction of its part's fresh samples it holds (0..1), and the
+   volume of its overlap with its parent's collider (the nearest ancestor joint that has one; 0 for
+   none), caller's units cubed. */
+CA_API const double* ca_bone_colliders_contained(const ca_bone_colliders* colliders);
+CA_API const double* ca_bone_colliders_overlap(const ca_bone_colliders* colliders);
+
 #ifdef __cplusplus
 }
 #endif

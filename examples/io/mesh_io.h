@@ -38,6 +38,14 @@ struct MeshData {
     SkinData skin;
 };
 
+// At most this many joint weights per vertex (glTF's JOINTS_0/WEIGHTS_0 and JOINTS_1/WEIGHTS_1).
+constexpr uint32_t kMaxInfluences = 8;
+
+// Why `mesh.skin` is not consistent with the mesh, or "" when it is (or is empty): matrix and
+// weight arrays of the right lengths, finite numbers, joint and parent indices in range, parents
+// without cycles, weights >= 0 summing to 1 or 0 per vertex. Every reader's skin passes it.
+std::string skin_problem(const MeshData& mesh);
+
 // Reads a mesh or point cloud. `path` "-" reads standard input (then `format` is required).
 // `format` "" chooses by extension (case-insensitive); otherwise a name without dot:
 //  obj   v, vn, f (v, v/vt, v//vn, v/vt/vn forms; negative indices; polygons). Normals are kept
