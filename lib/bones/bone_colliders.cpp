@@ -3,7 +3,9 @@
 //  - the surface cut into the parts each joint dominates (surface_parts.cpp); a joint gets a
 //    collider when its part holds at least min_share of the surface's area and it is not skipped;
 //  - the medial balls of each part (part_balls.cpp) and the fit of each collider on samples of
-//    its part (fit_bone.cpp), one part per task; colliders smaller than min_size are dropped;
+//    its part (fit_bone.cpp), one part per task; conservative: then rounds of refitting each
+//    against its parent's and children's colliders, to keep their overlap small (fit_apart);
+//    colliders smaller than min_size are dropped;
 //  - each collider taken to the caller's units and then to its joint's frame by the joint's
 //    inverse bind (a rotation with a uniform scale: anything else is refused, since a capsule
 //    under shear is no capsule);
@@ -16,6 +18,14 @@
 #include <cmath>
 
 namespace ca {
+
+namespace {
+// Conservative: rounds of refitting against the neighbours, and how much a unit of overlap volume
+// costs against a unit of the collider's own volume (overlap is what makes ragdolls jitter; the
+// volume beyond the part is mostly outside the shape or in a neighbour's part).
+constexpr int kApartRounds = 2;
+constexpr double kOverlapWeight = 3.0;
+}  // namespace
 
 Status make_bone_colliders(const Mesh& mesh, const ShapeQueries& shape, const Normalization& norm,
                            const std::vector<Ball>& balls, size_t inner, const Skin& skin,
@@ -60,14 +70,48 @@ Status make_bone_colliders(const Mesh& mesh, const ShapeQueries& shape, const No
     const std::vector<std::vector<Ball>> medial = part_balls(mesh, shape, balls, inner, ps, threads, monitor);
     if (monitor.stopped()) return monitor.stop_status("bone colliders");
     std::vector<Proxy> fits(fitted.size());
-    if (!parallel_for(fitted.size(), threads, 1, monitor, "bone colliders", 0.2, 0.7, [&](size_t b, size_t e) {
+    std::vector<std::vector<Vec3>> part_points(fitted.size());
+    if (!parallel_for(fitted.size(), threads, 1, monitor, "bone colliders", 0.2, 0.45, [&](size_t b, size_t e) {
             for (size_t i = b; i < e; ++i) {
                 const uint32_t j = fitted[i];
-                const std::vector<Vec3> pts = sample_part(parts[j], opt.surface_samples, opt.seed + 0x9E3779B97F4A7C15ull * (j + 1));
-                fits[i] = fit_bone(parts[j], medial[j], pts, shape, opt);
+                part_points[i] = sample_part(parts[j], opt.surface_samples, opt.seed + 0x9E3779B97F4A7C15ull * (j + 1));
+                fits[i] = fit_bone(parts[j], medial[j], part_points[i], shape, opt);
             }
         }))
         return monitor.stop_status("bone colliders");
+    // ---- conservative: neighbours apart. Each collider refitted against its parent's and
+    // children's colliders of the previous round (all at once, so the result does not depend on
+    // the order or the threads): the least volume plus the overlap, still holding its part ----
+    if (opt.mode == ProxyMode::conservative) {
+        std::vector<int32_t> fit_of(nj, -1);
+        for (size_t i = 0; i < fitted.size(); ++i) fit_of[fitted[i]] = int32_t(i);
+        const auto ancestor_fit = [&](uint32_t j) {
+            int32_t k = ps.parents[j];
+            while (k >= 0 && fit_of[size_t(k)] < 0) k = ps.parents[size_t(k)];
+            return k >= 0 ? fit_of[size_t(k)] : -1;
+        };
+        std::vector<std::vector<uint32_t>> neighbours(fitted.size());
+        for (size_t i = 0; i < fitted.size(); ++i) {
+            const int32_t p = ancestor_fit(fitted[i]);
+            if (p < 0) continue;
+            neighbours[i].push_back(uint32_t(p));
+            neighbours[size_t(p)].push_back(uint32_t(i));
+        }
+        for (int round = 0; round < kApartRounds; ++round) {
+            const std::vector<Proxy> previous = fits;
+            if (!parallel_for(fitted.size(), threads, 1, monitor, "bone colliders", 0.45 + 0.1 * round, 0.55 + 0.1 * round,
+                              [&](size_t b, size_t e) {
+                                  for (size_t i = b; i < e; ++i) {
+                                      if (neighbours[i].empty()) continue;
+                                      std::vector<Proxy> near;
+                                      for (uint32_t n : neighbours[i]) near.push_back(previous[n]);
+                                      fits[i] = fit_apart(parts[fitted[i]], part_points[i], previous[i], near, kOverlapWeight,
+                                                          opt.seed ^ (0xA54FF53A5F1D36F1ull * (fitted[i] + 1)));
+                                  }
+                              }))
+                return monitor.stop_status("bone colliders");
+        }
+    }
 
     // ---- sizes, the joints' frames ----
     Vec3 lo = mesh.vertices.front(), hi = lo;

@@ -11,6 +11,8 @@
 //    volume; a single ball when no pair beats it.
 #include "bones.h"
 
+#include "rng.h"
+
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <limits>
@@ -27,6 +29,10 @@ constexpr double kHoldMargin = 1e-9;
 // for the centres, of the start's larger radius for the radii).
 constexpr int kSearchEvaluations = 600;
 constexpr double kCentreStep = 0.1, kRadiusStep = 0.2;
+// Apart from the neighbours: points inside each neighbour the overlap is measured on, and the
+// softness of their inside test (a fraction of the part's extent; it keeps the objective smooth).
+constexpr size_t kApartPoints = 1500;
+constexpr double kApartSoftness = 0.01;
 // Inscribed: the medial balls paired (the largest, and those at the ends of their line).
 constexpr size_t kInscribedLargest = 12, kInscribedEnds = 4;
 
@@ -224,6 +230,48 @@ Proxy hold_points(const Proxy& p, const std::vector<Vec3>& points, double margin
         q = shrunk(q, -(need + margin));
     }
     return q;
+}
+
+Proxy fit_apart(const SurfacePart& part, const std::vector<Vec3>& points, const Proxy& start,
+                const std::vector<Proxy>& neighbours, double weight, uint64_t seed) {
+    const bool sphere = start.kind == ProxyKind::sphere;
+    const std::vector<Vec3>& pts = points.empty() ? part.corners : points;
+    // fixed points inside each neighbour (common to every trial, so the objective is a function of
+    // the shape alone), and the softness of the inside test: a hundredth of the part's extent
+    std::vector<std::vector<Vec3>> inside(neighbours.size());
+    std::vector<double> volume(neighbours.size());
+    Rng rng(seed);
+    for (size_t n = 0; n < neighbours.size(); ++n) {
+        const auto box = proxy_box(neighbours[n]);
+        volume[n] = proxy_volume(neighbours[n]);
+        for (size_t tries = 0; tries < 40 * kApartPoints && inside[n].size() < kApartPoints; ++tries) {
+            Vec3 x;
+            for (int k = 0; k < 3; ++k) x[k] = box.first[k] + (box.second[k] - box.first[k]) * rng.uniform();
+            if (proxy_distance(neighbours[n], x) <= 0) inside[n].push_back(x);
+        }
+    }
+    Vec3 lo = pts.front(), hi = lo;
+    for (const Vec3& x : pts) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+    const double extent = (hi - lo).norm(), soft = kApartSoftness * extent;
+    const auto cost = [&](const Params& x) {
+        const Proxy p = hold_points(from_params(x), pts, 0);
+        double lap = 0;
+        for (size_t n = 0; n < inside.size(); ++n) {
+            if (inside[n].empty()) continue;
+            double in = 0;
+            for (const Vec3& y : inside[n]) in += 1 / (1 + std::exp(std::min(proxy_distance(p, y) / soft, 50.0)));
+            lap += volume[n] * in / double(inside[n].size());
+        }
+        return proxy_volume(p) + weight * lap;
+    };
+    Params step(sphere ? 3 : 8);
+    step.setConstant(0.5 * kCentreStep * extent);
+    if (!sphere) step[6] = step[7] = kRadiusStep * std::max({start.a.radius, start.b.radius, 1e-3 * extent});
+    Params x = nelder_mead(cost, to_params(start, sphere), step, kSearchEvaluations);
+    x = nelder_mead(cost, x, 0.25 * step, kSearchEvaluations / 2);
+    Proxy p = hold_points(from_params(x), pts, 0);
+    if (sphere) p.b = p.a, p.kind = ProxyKind::sphere;
+    return hold_points(p, part.corners, kHoldMargin);
 }
 
 Proxy fit_bone(const SurfacePart& part, const std::vector<Ball>& balls, const std::vector<Vec3>& points,
