@@ -19,6 +19,7 @@
 #include "bench_common.h"
 #include "bone_baseline.h"
 #include "proxies.h"
+#include "skin_view.h"
 #include "support/fresh_samples.h"
 #include "support/mesh_convert.h"
 #include "winding.h"
@@ -136,16 +137,7 @@ std::vector<bench::BoneShape> ours(const caio::MeshData& md, Result& r) {
     ca_candidate_options_init(&co);
     ca_candidate_set* set = nullptr;
     ca_status st = ca_candidates(ctx, &surface, &co, &set);
-    const caio::SkinData& s = md.skin;
-    ca_skin_view view;
-    ca_skin_view_defaults(&view, sizeof view);
-    view.joint_count = s.joint_names.size();
-    view.parents = s.parents.data();
-    view.inverse_bind = s.inverse_bind.data();
-    view.vertex_count = md.positions.size() / 3;
-    view.influences = s.influences;
-    view.vertex_joints = s.vertex_joints.data();
-    view.vertex_weights = s.vertex_weights.data();
+    const ca_skin_view view = caio::skin_view(md);
     ca_bone_collider_options bo;
     ca_bone_collider_options_defaults(&bo, sizeof bo);
     bo.mode = CA_PROXY_CONSERVATIVE;

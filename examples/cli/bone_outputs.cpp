@@ -6,6 +6,7 @@
 #include "bone_writer.h"
 #include "cli.h"
 #include "output_file.h"
+#include "skin_view.h"
 
 #include <memory>
 
@@ -87,15 +88,7 @@ bool write_bone_outputs(ca_context* ctx, const std::string& input, const caio::M
     std::vector<uint32_t> skip;
     if (!skipped_joints(o.skip_bones, skin, skip, failure)) return false;
 
-    ca_skin_view view;
-    ca_skin_view_defaults(&view, sizeof view);
-    view.joint_count = skin.joint_names.size();
-    view.parents = skin.parents.data();
-    view.inverse_bind = skin.inverse_bind.empty() ? nullptr : skin.inverse_bind.data();
-    view.vertex_count = skinned->positions.size() / 3;
-    view.influences = skin.influences;
-    view.vertex_joints = skin.vertex_joints.data();
-    view.vertex_weights = skin.vertex_weights.data();
+    const ca_skin_view view = caio::skin_view(*skinned);
     ca_bone_collider_options bo = o.bone;
     bo.skip_joints = skip.empty() ? nullptr : skip.data();
     bo.skip_count = skip.size();
