@@ -67,6 +67,11 @@ const char* kind_name(int kind) { return kind == CA_PROXY_CAPSULE ? "capsule" : 
 
 }  // namespace
 
+Failure bone_skin_missing(const std::string& input) {
+    return usage_failure(input + " has no skin: --bone-colliders needs a skinned input (a glTF skin, FBX bones) or --rig "
+                                 "to skin it to the skeleton's rig");
+}
+
 bool write_bone_outputs(ca_context* ctx, const std::string& input, const caio::MeshData& mesh, const ca_candidate_set* set,
                         const ca_skeleton* sk, const RunOptions& o, const Outputs& out, Json& report, Failure& failure) {
     if (out.bone_colliders.empty() && out.bone_colliders_json.empty()) return true;
@@ -75,10 +80,7 @@ bool write_bone_outputs(ca_context* ctx, const std::string& input, const caio::M
     const caio::MeshData* skinned = &mesh;
     const bool from_rig = mesh.skin.empty();
     if (from_rig) {
-        if (out.rig.empty())
-            return failure = usage_failure(input + " has no skin: --bone-colliders needs a skinned input (a glTF skin, "
-                                                   "FBX bones) or --rig to skin it to the skeleton's rig"),
-                   false;
+        if (out.rig.empty()) return failure = bone_skin_missing(input), false;
         rigged.positions = mesh.positions;
         rigged.triangles = mesh.triangles;
         if (!rig_skin(ctx, mesh, sk, o, rigged.skin, failure)) return false;

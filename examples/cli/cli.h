@@ -135,6 +135,8 @@ bool write_rig_outputs(ca_context* ctx, const caio::MeshData& mesh, const ca_ske
 // for; a collider per joint of the input's skin (or, for an input without one, of the rig that
 // --rig writes), written and reported as "bone_colliders". An input with no skin and no --rig is a
 // usage error (exit 2).
+// The usage error of --bone-colliders on an input without a skin and without --rig.
+Failure bone_skin_missing(const std::string& input);
 bool write_bone_outputs(ca_context* ctx, const std::string& input, const caio::MeshData& mesh, const ca_candidate_set* set,
                         const ca_skeleton* sk, const RunOptions& o, const Outputs& out, Json& report, Failure& failure);
 

@@ -431,6 +431,8 @@ Outcome run_pipeline(const std::string& input, const RunOptions& o, const Output
     caio::MeshData mesh;
     std::string err;
     if (!read_input(input, o.format, o.read, mesh, err)) return r.failure = file_failure(err), r;
+    if (!(out.bone_colliders.empty() && out.bone_colliders_json.empty()) && mesh.skin.empty() && out.rig.empty())
+        return r.failure = bone_skin_missing(input), r;   // before the skeleton is made, not after
     t.read = since(t_start);
 
     Owned owned;

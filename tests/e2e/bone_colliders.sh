@@ -10,6 +10,8 @@
 #    its heaviest joint's collider (conservative);
 #  - a glTF input reads back through the project's reader (collider_check bones) with the input's
 #    skin and the colliders on their joints' nodes.
+# The snake with its armature moved, turned and scaled above the root joint (rest matrices no longer
+# inverse(IBM)) still has its rest pose held.
 # A VRM 1.0 made here from the humanoid (VRMC_vrm with a humanoid, one spring) gets
 # VRMC_springBone colliders that @pixiv/three-vrm (npm, in Node) loads on the joint nodes, in both
 # modes, its spring kept. --skip-bones leaves a joint out; an input without a skin (and no --rig), an
@@ -66,6 +68,30 @@ bones humanoid_inscribed "$data/rigged/humanoid.glb" --bone-mode inscribed
 check "--bone-mode inscribed exits 0" test $? -eq 0
 check "gltf-transform reads the inscribed colliders back" read_back humanoid_inscribed inscribed
 files+=("$tmp/humanoid_inscribed.glb")
+
+# the snake's armature moved, turned and scaled (1.5) above its root joint: every joint's rest
+# matrix now differs from its inverse bind, the mesh's vertices and IBMs unchanged; the colliders
+# must still hold the rest pose as skinning places it
+python3 - "$data/rigged/snake.glb" "$tmp/snake_moved_in.glb" <<'EOF'
+import json, struct, sys
+src, out = sys.argv[1], sys.argv[2]
+b = open(src, 'rb').read()
+n = struct.unpack('<I', b[12:16])[0]
+doc = json.loads(b[20:20 + n])
+joints = set(doc['skins'][0]['joints'])
+parent = {c: i for i, node in enumerate(doc['nodes']) for c in node.get('children', [])}
+root = next(j for j in joints if parent.get(j) not in joints)
+doc['nodes'][parent[root]].update({'rotation': [0.2, 0.3, -0.1, 0.9273618495495703], 'translation': [0.5, 0.2, -0.3],
+                                   'scale': [1.5, 1.5, 1.5]})
+text = json.dumps(doc).encode()
+text += b' ' * (-len(text) % 4)
+body = struct.pack('<II', len(text), 0x4E4F534A) + text + b[20 + n:]
+open(out, 'wb').write(struct.pack('<III', 0x46546C67, 2, 12 + len(body)) + body)
+EOF
+bones snake_moved "$tmp/snake_moved_in.glb"
+check "--bone-colliders on the snake with its armature moved exits 0" test $? -eq 0
+check "... and its colliders follow the skinned rest pose" read_back snake_moved conservative
+files+=("$tmp/snake_moved.glb")
 
 # a skin of the skeleton's rig, for an input without one
 bones fox_rig "$data/fox.obj" --rig "$tmp/fox_rig_skin.glb"
