@@ -22,6 +22,8 @@ template <> ca_evaluate_options defaults<ca_evaluate_options>() { return to_c(ca
 template <> ca_proxy_options defaults<ca_proxy_options>() { return to_c(ca::ProxyOptions{}); }
 template <> ca_skin_view defaults<ca_skin_view>() { return zeroed<ca_skin_view>(); }
 template <> ca_bone_collider_options defaults<ca_bone_collider_options>() { return to_c(ca::BoneColliderOptions{}); }
+template <> ca_correspondence_options defaults<ca_correspondence_options>() { return to_c(ca::CorrespondOptions{}); }
+template <> ca_rig_options defaults<ca_rig_options>() { return to_c(ca::RigOptions{}); }
 
 namespace {
 // Writes the defaults into the caller's first struct_size bytes (a published size only).

@@ -61,6 +61,7 @@ extern "C" {
 #define CA_SOVERSION 3   /* the shared library's; raised only by a release that breaks callers */
 
 CA_API uint32_t ca_version(void);     /* CA_VERSION_NUMBER of the linked library */
+CA_API const char* ca_version_string(void); /* the same as "major.minor.patch" (static) */
 CA_API uint32_t ca_abi_version(void); /* CA_ABI_VERSION of the linked library */
 
 /* ---- status codes (pinned values; never renumbered) ---------------------------------------- */

@@ -27,11 +27,11 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kHoldMargin = 1e-9;
 // The search: evaluations per start, and the first simplex's steps (fractions of the part's extent
 // for the centres, of the start's larger radius for the radii).
-constexpr int kSearchEvaluations = 600;
+constexpr int kSearchEvaluations = 400;
 constexpr double kCentreStep = 0.1, kRadiusStep = 0.2;
 // Apart from the neighbours: points inside each neighbour the overlap is measured on, and the
 // softness of their inside test (a fraction of the part's extent; it keeps the objective smooth).
-constexpr size_t kApartPoints = 1500;
+constexpr size_t kApartPoints = 800;
 constexpr double kApartSoftness = 0.01;
 // Inscribed: the medial balls paired (the largest, and those at the ends of their line).
 constexpr size_t kInscribedLargest = 12, kInscribedEnds = 4;

@@ -40,5 +40,4 @@ __all__ = ["HAVE_NUMPY", "Context", "ABI_VERSION", "STATUS_NAMES", "CoverageAxis
 
 def version():
     """The linked library's version, "major.minor.patch"."""
-    v = _lib().ca_version()
-    return "%d.%d.%d" % (v // 10000, v // 100 % 100, v % 100)
+    return _lib().ca_version_string().decode()

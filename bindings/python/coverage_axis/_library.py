@@ -64,7 +64,7 @@ class LibraryNotFoundError(ImportError):
 
 P = c_void_p
 _SIGNATURES = {
-    "ca_version": (c_uint32, []), "ca_abi_version": (c_uint32, []), "ca_status_string": (c_char_p, [c_int32]),
+    "ca_version": (c_uint32, []), "ca_version_string": (c_char_p, []), "ca_abi_version": (c_uint32, []), "ca_status_string": (c_char_p, [c_int32]),
     "ca_context_desc_defaults": (c_int32, [POINTER(_ContextDesc), c_uint32]),
     "ca_context_create": (c_int32, [POINTER(_ContextDesc), POINTER(P)]), "ca_context_destroy": (None, [P]),
     "ca_context_request_cancel": (None, [P]), "ca_context_clear_cancel": (None, [P]),

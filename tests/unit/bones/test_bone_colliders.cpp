@@ -207,6 +207,38 @@ TEST_CASE("bone colliders: one per driving joint, and conservative ones hold 100
     }
 }
 
+TEST_CASE("bone colliders: spheres only, conservative ones hold their parts and inscribed ones stay inside") {
+    const RiggedShape s = rigged::y_body();
+    const ca::CandidateSet set = candidates(s.mesh);
+    ca::BoneColliderOptions opt;
+    opt.shapes = ca::ProxyShapes::spheres;
+    const ca::BoneColliderResult r = colliders(set, s, opt);
+    REQUIRE(r.colliders.size() == 4);
+    const auto parts = part_samples(s, {0, 1, 2, 3}, 20000);
+    for (const ca::BoneCollider& c : r.colliders) {
+        CHECK(c.shape.kind == ca::ProxyKind::sphere);
+        CHECK(c.shape.a.center == c.shape.b.center);
+        size_t outside = 0;
+        for (const ca::Vec3& x : parts.at(int32_t(c.joint)))
+            outside += brute_distance(c.shape, rigged::apply(s.joint_world[c.joint].inverse(), x)) > 0;
+        CHECK(outside == 0);
+    }
+    opt.mode = ca::ProxyMode::inscribed;
+    opt.min_size = 0;
+    std::mt19937_64 rng(5);
+    std::normal_distribution<double> g(0, 1);
+    for (const ca::BoneCollider& c : colliders(set, s, opt).colliders) {
+        const ca::Proxy world = moved(s.joint_world[c.joint], c.shape);
+        CHECK(world.kind == ca::ProxyKind::sphere);
+        size_t outside = 0;
+        for (int i = 0; i < 100; ++i) {   // points of the sphere's boundary
+            ca::Vec3 d(g(rng), g(rng), g(rng));
+            outside += ca::winding_number_brute_force(s.mesh, world.a.center + world.a.radius * d.normalized()) <= 0.5;
+        }
+        CHECK(outside == 0);
+    }
+}
+
 TEST_CASE("bone colliders: a posed joint carries its collider (skinned points stay inside the placed collider)") {
     const RiggedShape s = rigged::bent_arm();
     const ca::CandidateSet set = candidates(s.mesh);
@@ -381,7 +413,7 @@ TEST_CASE("bone colliders: less outside volume and parent overlap than the engin
                           << " (holds " << double(held) / double(total) << " of its parts' samples), engine held "
                           << out_grown << "; parent overlap ours " << lap_ours << ", engine " << lap_engine
                           << ", engine held " << lap_grown << "; library stats: outside " << r.stats.outside_volume
-                          << " overlap " << r.stats.neighbour_overlap);
+                          << " overlap " << r.stats.neighbour_overlap << "; seconds " << r.stats.time_s);
         CHECK(out_ours < out_engine);
         CHECK(out_ours < out_grown);
         CHECK(lap_ours < lap_grown);
