@@ -14,6 +14,7 @@
 #include "delaunay.h"
 #include "hole_caps.h"
 #include "mesh_topology.h"
+#include "parallel.h"
 #include "sampling.h"
 #include "surface.h"
 #include "winding.h"

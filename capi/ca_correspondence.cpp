@@ -1,7 +1,6 @@
 // ca_correspondence.cpp: the correspondence at the C boundary: the surface and skeleton views and
 // the options converted for the core's step (lib/steps/correspondence_step.cpp), its per-vertex
-// arrays copied into the result, the getters, and the options' defaults (from
-// ca::CorrespondOptions; ca_correspondence_options_defaults is in defaults.cpp).
+// arrays copied into the result, and the getters (the conversions: conversions.cpp).
 #include "conversions.h"
 
 using ca::Status;
@@ -19,51 +18,31 @@ struct ca_correspondence {
     }
 };
 
-namespace capi {
-
-template <> ca_correspondence_options defaults<ca_correspondence_options>() {
-    ca_correspondence_options o = zeroed<ca_correspondence_options>();
-    o.smoothing = ca::CorrespondOptions{}.smoothing;
-    return o;
-}
-
-}  // namespace capi
-
 extern "C" {
 
 ca_status ca_correspond(ca_context* ctx, const ca_surface_view* surface, const ca_skeleton_view* skeleton,
                         const ca_correspondence_options* options, ca_correspondence** out) {
     if (out) *out = nullptr;
     return capi::guarded(ctx, [&]() -> Status {
+        const ca::Monitor monitor = ctx->monitor();  // one budget for the whole call
         ca_correspondence_options o;
-        Status st = read_arguments({{surface, "surface"}, {skeleton, "skeleton"}, {out, "out"}}, options, o);
-        if (!st.ok()) return st;
-        const ca::Monitor monitor = ctx->monitor();
         ca::SurfaceInput input;
         ca::Skeleton sk;
-        st = read_surface_and_skeleton(surface, skeleton, input, sk);
+        Status st = read_per_vertex_arguments(surface, skeleton, options, out, o, input, sk);
         if (!st.ok()) return st;
-        ca::CorrespondOptions copt;
-        copt.smoothing = o.smoothing;
-        copt.threads = ctx->desc.threads;
         ca::Correspondence c;
-        st = ca::correspondence_step(input, sk, copt, monitor, c);
+        st = ca::correspondence_step(input, sk, to_core(o, ctx->desc.threads), monitor, c);
         if (!st.ok()) return st;
         Pending<ca_correspondence> r(make_result<ca_correspondence>(ctx));
+        ca_correspondence& a = *r.obj;
         const size_t n = c.balls.size();
-        const size_t k = ca::kInfluences;
-        r.obj->vertex_count = n;
-        r.obj->balls.assign(r.obj->allocator, k * n);
-        r.obj->weights.assign(r.obj->allocator, k * n);
-        r.obj->nearest_kinds.assign(r.obj->allocator, n);
-        r.obj->nearest_indices.assign(r.obj->allocator, n);
+        a.vertex_count = n;
+        fill_influences(a.balls, a.weights, a.allocator, c.balls, c.weights);
+        a.nearest_kinds.assign(a.allocator, n);
+        a.nearest_indices.assign(a.allocator, n);
         for (size_t i = 0; i < n; ++i) {
-            for (size_t j = 0; j < k; ++j) {
-                r.obj->balls.data[k * i + j] = c.balls[i][j];
-                r.obj->weights.data[k * i + j] = c.weights[i][j];
-            }
-            r.obj->nearest_kinds.data[i] = static_cast<int32_t>(c.nearest_kind[i]);
-            r.obj->nearest_indices.data[i] = c.nearest_index[i];
+            a.nearest_kinds.data[i] = static_cast<int32_t>(c.nearest_kind[i]);
+            a.nearest_indices.data[i] = c.nearest_index[i];
         }
         *out = r.release();
         return Status::success();

@@ -103,21 +103,7 @@ ca_status ca_proxy_set_placement(const ca_proxy_set* p, size_t index, ca_proxy_p
         if (index >= p->kinds.size)
             return ca::fail(ca::Code::invalid_argument, "proxy index " + std::to_string(index) + " out of range (" +
                                                             std::to_string(p->kinds.size) + " primitives)");
-        const ca::ProxyPlacement pl = ca::proxy_placement(proxy_at(*p, index));
-        ca_proxy_placement o = zeroed<ca_proxy_placement>();
-        o.kind = static_cast<int32_t>(pl.kind);
-        for (int k = 0; k < 3; ++k) {
-            o.center[k] = pl.translation[k];
-            o.axis[k] = pl.axis[k];
-            o.half_extents[k] = 0.5 * pl.size[k];
-        }
-        o.rotation[0] = pl.rotation.x();
-        o.rotation[1] = pl.rotation.y();
-        o.rotation[2] = pl.rotation.z();
-        o.rotation[3] = pl.rotation.w();
-        o.radius_top = pl.radius_top;
-        o.radius_bottom = pl.radius_bottom;
-        o.height = pl.height;
+        const ca_proxy_placement o = to_c(ca::proxy_placement(proxy_at(*p, index)));
         return write_output(o, placement);
     });
 }

@@ -1,7 +1,6 @@
 // ca_rig.cpp: the rig at the C boundary: the surface and skeleton views and the options converted
 // for the core's step (lib/steps/rig_step.cpp), its joints and per-vertex arrays copied into the
-// result, the getters, and the options' defaults (from ca::RigOptions; ca_rig_options_defaults is
-// in defaults.cpp).
+// result, and the getters (the conversions: conversions.cpp).
 #include "conversions.h"
 
 using ca::Status;
@@ -20,48 +19,24 @@ struct ca_rig {
     }
 };
 
-namespace capi {
-
-template <> ca_rig_options defaults<ca_rig_options>() {
-    const ca::RigOptions d;
-    ca_rig_options o = zeroed<ca_rig_options>();
-    o.root = d.root;
-    o.max_joints = d.max_joints;
-    o.joint_spacing = d.joint_spacing;
-    o.min_branch = d.min_branch;
-    o.smoothing = d.correspond.smoothing;
-    return o;
-}
-
-}  // namespace capi
-
 extern "C" {
 
 ca_status ca_rig_build(ca_context* ctx, const ca_surface_view* surface, const ca_skeleton_view* skeleton,
                        const ca_rig_options* options, ca_rig** out) {
     if (out) *out = nullptr;
     return capi::guarded(ctx, [&]() -> Status {
+        const ca::Monitor monitor = ctx->monitor();  // one budget for the whole call
         ca_rig_options o;
-        Status st = read_arguments({{surface, "surface"}, {skeleton, "skeleton"}, {out, "out"}}, options, o);
-        if (!st.ok()) return st;
-        const ca::Monitor monitor = ctx->monitor();
         ca::SurfaceInput input;
         ca::Skeleton sk;
-        st = read_surface_and_skeleton(surface, skeleton, input, sk);
+        Status st = read_per_vertex_arguments(surface, skeleton, options, out, o, input, sk);
         if (!st.ok()) return st;
-        ca::RigOptions ropt;
-        ropt.root = o.root;
-        ropt.max_joints = o.max_joints;
-        ropt.joint_spacing = o.joint_spacing;
-        ropt.min_branch = o.min_branch;
-        ropt.correspond.smoothing = o.smoothing;
-        ropt.correspond.threads = ctx->desc.threads;
         ca::Rig rig;
-        st = ca::rig_step(input, sk, ropt, monitor, rig);
+        st = ca::rig_step(input, sk, to_core(o, ctx->desc.threads), monitor, rig);
         if (!st.ok()) return st;
         Pending<ca_rig> r(make_result<ca_rig>(ctx));
         ca_rig& a = *r.obj;
-        const size_t nj = rig.joints.size(), nv = rig.vertex_joints.size(), k = ca::kInfluences;
+        const size_t nj = rig.joints.size(), nv = rig.vertex_joints.size();
         a.joint_count = nj;
         a.vertex_count = nv;
         a.branch_count = rig.branch_count;
@@ -75,16 +50,9 @@ ca_status ca_rig_build(ca_context* ctx, const ca_surface_view* surface, const ca
             a.joint_balls.data[j] = rig.joint_ball[j];
             a.joint_branches.data[j] = rig.joint_branch[j];
         }
-        a.joints.assign(a.allocator, k * nv);
-        a.weights.assign(a.allocator, k * nv);
+        fill_influences(a.joints, a.weights, a.allocator, rig.vertex_joints, rig.vertex_weights);
         a.vertex_branches.assign(a.allocator, nv);
-        for (size_t i = 0; i < nv; ++i) {
-            for (size_t j = 0; j < k; ++j) {
-                a.joints.data[k * i + j] = rig.vertex_joints[i][j];
-                a.weights.data[k * i + j] = rig.vertex_weights[i][j];
-            }
-            a.vertex_branches.data[i] = rig.vertex_branch[i];
-        }
+        for (size_t i = 0; i < nv; ++i) a.vertex_branches.data[i] = rig.vertex_branch[i];
         *out = r.release();
         return Status::success();
     });

@@ -78,6 +78,12 @@ ca::Monitor ca_context::monitor() const {
 extern "C" {
 
 uint32_t ca_version(void) { return CA_VERSION_NUMBER; }
+// The version's one decoding into text, from the same three numbers as CA_VERSION_NUMBER.
+#define CA_TEXT_(x) #x
+#define CA_NUMBER_TEXT_(x) CA_TEXT_(x)
+const char* ca_version_string(void) {
+    return CA_NUMBER_TEXT_(CA_VERSION_MAJOR) "." CA_NUMBER_TEXT_(CA_VERSION_MINOR) "." CA_NUMBER_TEXT_(CA_VERSION_PATCH);
+}
 uint32_t ca_abi_version(void) { return CA_ABI_VERSION; }
 
 const char* ca_status_string(ca_status s) {

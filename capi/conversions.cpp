@@ -93,6 +93,19 @@ void fill(Array<double>& a, const Allocator& al, const std::vector<Vec3>& pts, c
     }
 }
 
+void fill_influences(Array<uint32_t>& index, Array<double>& weight, const Allocator& al,
+                     const std::vector<std::array<uint32_t, ca::kInfluences>>& in_index,
+                     const std::vector<std::array<double, ca::kInfluences>>& in_weight) {
+    const size_t n = in_index.size(), k = ca::kInfluences;
+    index.assign(al, k * n);
+    weight.assign(al, k * n);
+    for (size_t i = 0; i < n; ++i)
+        for (size_t j = 0; j < k; ++j) {
+            index.data[k * i + j] = in_index[i][j];
+            weight.data[k * i + j] = in_weight[i][j];
+        }
+}
+
 // The C ABI's enumeration values are the core's (the conversions below cast between them).
 static_assert(int32_t(ca::Generator::voronoi) == CA_CANDIDATES_VORONOI && int32_t(ca::Generator::random) == CA_CANDIDATES_RANDOM,
               "generators");
@@ -210,6 +223,19 @@ ca::ProxyOptions to_core(const ca_proxy_options& o, int32_t threads) {
     return p;
 }
 
+ca::BoneColliderOptions to_core(const ca_bone_collider_options& o, int32_t threads) {
+    ca::BoneColliderOptions b;
+    b.mode = static_cast<ca::ProxyMode>(o.mode);
+    b.shapes = static_cast<ca::ProxyShapes>(o.shapes);
+    b.min_share = o.min_share;
+    b.min_size = o.min_size;
+    b.surface_samples = o.surface_samples;
+    b.evaluate_samples = o.evaluate_samples;
+    b.seed = o.seed;
+    b.threads = threads;
+    return b;
+}
+
 // ---- options: core -> C (the defaults) ----
 
 ca_candidate_options to_c(const ca::CandidateOptions& c) {
@@ -270,6 +296,70 @@ ca_proxy_options to_c(const ca::ProxyOptions& p) {
     o.evaluate_samples = p.evaluate_samples;
     o.volume_samples = p.volume_samples;
     o.seed = p.seed;
+    return o;
+}
+
+ca_proxy_placement to_c(const ca::ProxyPlacement& pl) {
+    ca_proxy_placement o = zeroed<ca_proxy_placement>();
+    o.kind = static_cast<int32_t>(pl.kind);
+    for (int k = 0; k < 3; ++k) {
+        o.center[k] = pl.translation[k];
+        o.axis[k] = pl.axis[k];
+        o.half_extents[k] = 0.5 * pl.size[k];
+    }
+    o.rotation[0] = pl.rotation.x();
+    o.rotation[1] = pl.rotation.y();
+    o.rotation[2] = pl.rotation.z();
+    o.rotation[3] = pl.rotation.w();
+    o.radius_top = pl.radius_top;
+    o.radius_bottom = pl.radius_bottom;
+    o.height = pl.height;
+    return o;
+}
+
+ca_bone_collider_options to_c(const ca::BoneColliderOptions& b) {
+    ca_bone_collider_options o = zeroed<ca_bone_collider_options>();
+    o.mode = static_cast<int32_t>(b.mode);
+    o.shapes = static_cast<int32_t>(b.shapes);
+    o.min_share = b.min_share;
+    o.min_size = b.min_size;
+    o.surface_samples = b.surface_samples;
+    o.evaluate_samples = b.evaluate_samples;
+    o.seed = b.seed;
+    return o;
+}
+
+ca::CorrespondOptions to_core(const ca_correspondence_options& o, int32_t threads) {
+    ca::CorrespondOptions c;
+    c.smoothing = o.smoothing;
+    c.threads = threads;
+    return c;
+}
+
+ca::RigOptions to_core(const ca_rig_options& o, int32_t threads) {
+    ca::RigOptions r;
+    r.root = o.root;
+    r.max_joints = o.max_joints;
+    r.joint_spacing = o.joint_spacing;
+    r.min_branch = o.min_branch;
+    r.correspond.smoothing = o.smoothing;
+    r.correspond.threads = threads;
+    return r;
+}
+
+ca_correspondence_options to_c(const ca::CorrespondOptions& c) {
+    ca_correspondence_options o = zeroed<ca_correspondence_options>();
+    o.smoothing = c.smoothing;
+    return o;
+}
+
+ca_rig_options to_c(const ca::RigOptions& r) {
+    ca_rig_options o = zeroed<ca_rig_options>();
+    o.root = r.root;
+    o.max_joints = r.max_joints;
+    o.joint_spacing = r.joint_spacing;
+    o.min_branch = r.min_branch;
+    o.smoothing = r.correspond.smoothing;
     return o;
 }
 

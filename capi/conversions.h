@@ -69,8 +69,22 @@ ca::Status read_skeleton(const ca_skeleton_view* in, ca::Skeleton& out);
 ca::Status read_surface_and_skeleton(const ca_surface_view* surface, const ca_skeleton_view* skeleton,
                                      ca::SurfaceInput& input, ca::Skeleton& sk);
 
+// The arguments of a per-vertex step (ca_correspond, ca_rig_build): the pointers checked (`out`
+// last), the options read (NULL: the defaults), then the surface and the skeleton.
+template <class O, class Out>
+ca::Status read_per_vertex_arguments(const ca_surface_view* surface, const ca_skeleton_view* skeleton,
+                                     const O* options, Out** out, O& o, ca::SurfaceInput& input, ca::Skeleton& sk) {
+    const ca::Status st = read_arguments({{surface, "surface"}, {skeleton, "skeleton"}, {out, "out"}}, options, o);
+    return st.ok() ? read_surface_and_skeleton(surface, skeleton, input, sk) : st;
+}
+
 // Points in the caller's units, x y z per point, in memory from the result's allocator.
 void fill(Array<double>& a, const Allocator& al, const std::vector<ca::Vec3>& pts, const ca::Normalization& n);
+// Per-vertex influences, ca::kInfluences (index, weight) pairs per vertex, packed, in memory from
+// the result's allocator.
+void fill_influences(Array<uint32_t>& index, Array<double>& weight, const Allocator& al,
+                     const std::vector<std::array<uint32_t, ca::kInfluences>>& in_index,
+                     const std::vector<std::array<double, ca::kInfluences>>& in_weight);
 
 // The C option structs as the core's options and requests (threads: the context's), and the core's
 // defaults as the C structs (defaults.cpp: the C ABI's ca_*_defaults). The select options' masks
@@ -80,10 +94,19 @@ ca::SelectRequest to_core(const ca_select_options& o, int32_t threads);
 ca::ConnectRequest to_core(const ca_connect_options& o, int32_t threads);
 ca::EvaluateOptions to_core(const ca_evaluate_options& o, int32_t threads);
 ca::ProxyOptions to_core(const ca_proxy_options& o, int32_t threads);
+// the skip list is read by ca_bone_colliders_build (a borrowed array)
+ca::BoneColliderOptions to_core(const ca_bone_collider_options& o, int32_t threads);
+ca::CorrespondOptions to_core(const ca_correspondence_options& o, int32_t threads);
+ca::RigOptions to_core(const ca_rig_options& o, int32_t threads);
 ca_candidate_options to_c(const ca::CandidateOptions& o);
 ca_select_options to_c(const ca::SelectRequest& o);
 ca_connect_options to_c(const ca::ConnectRequest& o);
 ca_evaluate_options to_c(const ca::EvaluateOptions& o);
 ca_proxy_options to_c(const ca::ProxyOptions& o);
+ca_bone_collider_options to_c(const ca::BoneColliderOptions& o);
+// A primitive's placement as the C struct (full current size).
+ca_proxy_placement to_c(const ca::ProxyPlacement& p);
+ca_correspondence_options to_c(const ca::CorrespondOptions& o);
+ca_rig_options to_c(const ca::RigOptions& o);
 
 }  // namespace capi

@@ -20,6 +20,10 @@ template <> ca_select_options defaults<ca_select_options>() { return to_c(ca::Se
 template <> ca_connect_options defaults<ca_connect_options>() { return to_c(ca::ConnectRequest{}); }
 template <> ca_evaluate_options defaults<ca_evaluate_options>() { return to_c(ca::EvaluateOptions{}); }
 template <> ca_proxy_options defaults<ca_proxy_options>() { return to_c(ca::ProxyOptions{}); }
+template <> ca_skin_view defaults<ca_skin_view>() { return zeroed<ca_skin_view>(); }
+template <> ca_bone_collider_options defaults<ca_bone_collider_options>() { return to_c(ca::BoneColliderOptions{}); }
+template <> ca_correspondence_options defaults<ca_correspondence_options>() { return to_c(ca::CorrespondOptions{}); }
+template <> ca_rig_options defaults<ca_rig_options>() { return to_c(ca::RigOptions{}); }
 
 namespace {
 // Writes the defaults into the caller's first struct_size bytes (a published size only).
@@ -47,4 +51,6 @@ ca_status ca_evaluate_options_defaults(ca_evaluate_options* o, uint32_t size) { 
 ca_status ca_correspondence_options_defaults(ca_correspondence_options* o, uint32_t size) { return capi::fill_defaults(o, size); }
 ca_status ca_rig_options_defaults(ca_rig_options* o, uint32_t size) { return capi::fill_defaults(o, size); }
 ca_status ca_proxy_options_defaults(ca_proxy_options* o, uint32_t size) { return capi::fill_defaults(o, size); }
+ca_status ca_skin_view_defaults(ca_skin_view* v, uint32_t size) { return capi::fill_defaults(v, size); }
+ca_status ca_bone_collider_options_defaults(ca_bone_collider_options* o, uint32_t size) { return capi::fill_defaults(o, size); }
 }

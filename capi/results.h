@@ -51,6 +51,20 @@ struct ca_proxy_set {
     }
 };
 
+// Bone colliders (ca_bone_colliders.cpp): copies of the colliders (joint frames), nothing held.
+struct ca_bone_colliders {
+    capi::Allocator allocator;
+    capi::Array<uint32_t> joints;
+    capi::Array<int32_t> kinds;
+    capi::Array<double> centers, radii;   // a then b (6), radius of a, of b (2) per collider
+    capi::Array<double> contained, overlap;
+    ca_bone_collider_stats stats{};
+    void release_arrays() {
+        joints.release(allocator); kinds.release(allocator); centers.release(allocator); radii.release(allocator);
+        contained.release(allocator); overlap.release(allocator);
+    }
+};
+
 namespace capi {
 inline void retain_set(const ca_candidate_set* set) { set->references.fetch_add(1, std::memory_order_relaxed); }
 // Frees the set when the last reference goes.

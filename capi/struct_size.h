@@ -155,6 +155,10 @@ CA_PUBLISHED(ca_rig_options, {3, sizeof(ca_rig_options)})
 CA_PUBLISHED(ca_proxy_options, {3, sizeof(ca_proxy_options)})
 CA_PUBLISHED(ca_proxy_stats, {3, sizeof(ca_proxy_stats)})
 CA_PUBLISHED(ca_proxy_placement, {3, sizeof(ca_proxy_placement)})
+// bone colliders
+CA_PUBLISHED(ca_skin_view, {3, sizeof(ca_skin_view)})
+CA_PUBLISHED(ca_bone_collider_options, {3, sizeof(ca_bone_collider_options)})
+CA_PUBLISHED(ca_bone_collider_stats, {3, sizeof(ca_bone_collider_stats)})
 #undef CA_PUBLISHED
 
 static_assert(offsetof(ca_context_desc, threads) == offsetof(abi1::ca_context_desc, threads) &&
@@ -233,6 +237,8 @@ template <> ca_evaluate_options defaults<ca_evaluate_options>();
 template <> ca_correspondence_options defaults<ca_correspondence_options>();  // ca_correspondence.cpp
 template <> ca_rig_options defaults<ca_rig_options>();                        // ca_rig.cpp
 template <> ca_proxy_options defaults<ca_proxy_options>();
+template <> ca_skin_view defaults<ca_skin_view>();
+template <> ca_bone_collider_options defaults<ca_bone_collider_options>();
 
 // A struct of all zero bytes but its struct_size (sizeof T): the start of every default and result.
 template <class T>

@@ -2,28 +2,27 @@
  * coverage_axis.h - the one stable C ABI of the coverage-axis library (C99; compiles as C and C++).
  *
  * Coverage Axis (Dou et al., Eurographics 2022) turns a triangle mesh or an oriented point cloud
- * into a compact medial skeleton: a few medial balls (centre + radius) joined by edges and
- * triangles. Three calls:
- *
+ * into a few medial balls (centre + radius) joined by edges and triangles, in three calls:
  *   ca_candidates  surface -> surface samples + inner candidate balls        (ca_candidate_set)
  *   ca_select      fewest dilated candidate balls covering every sample      (ca_selection)
  *   ca_connect     edges and triangles between the selected balls            (ca_skeleton)
  *
- * Conventions (the full rules: docs/abi.md)
- * - Coordinates are doubles in the caller's units, and results come back in them. Lengths given as
- *   options (delta) are fractions of the longest side of the input's bounding box.
+ * Contracts of every call, stated once here (in full, with what each ABI version added: docs/abi.md)
+ * - Coordinates are doubles in the caller's units, as are results; lengths given as options are
+ *   fractions of the longest side of the input's bounding box.
  * - Inputs are borrowed views (pointer, count, byte stride; 0 = packed), read during the call only;
- *   every array has its count, and a count that does not match is CA_ERROR_INVALID_INPUT.
- * - Every fallible call returns a ca_status. On any status but CA_OK the output pointer is NULL and
- *   nothing is allocated (one exception: CA_ERROR_TARGET_NOT_REACHED); ca_context_last_error()
- *   explains. No exception crosses this boundary; nothing prints, exits or aborts.
- * - Results are opaque and immutable, freed with their ca_*_destroy, readable from several threads;
- *   getters' pointers live until destroy. A context is used by one thread at a time.
- * - Every struct starts with uint32_t struct_size and grows only at its end (fields name the ABI
- *   that added them; none = ABI 1). Any size this library published is accepted, others are
- *   CA_ERROR_STRUCT_SIZE. Fill inputs with ca_*_init() (C) or ca_*_defaults(p, size) (FFI); fields
- *   past the caller's size take their defaults. Outputs are written up to the caller's size.
- * - Defaults live in the library (ca_*_defaults); the comments name them, and a test checks that.
+ *   a count that does not match its array is CA_ERROR_INVALID_INPUT. Outputs are packed.
+ * - Fallible calls return a ca_status. On any but CA_OK (and CA_ERROR_TARGET_NOT_REACHED) the output
+ *   pointer is NULL and nothing is allocated; ca_context_last_error() explains. No exception
+ *   crosses this boundary; nothing prints, exits or aborts.
+ * - Results are opaque, immutable, readable from several threads and freed with their ca_*_destroy
+ *   (NULL: no-op); getters' pointers live until then. A context serves one thread at a time.
+ * - Every struct starts with uint32_t struct_size and grows only at its end; any size this library
+ *   published is accepted, others are CA_ERROR_STRUCT_SIZE (nothing written). Inputs: ca_*_init(p)
+ *   (C) or ca_*_defaults(p, size) (FFI); fields past the caller's size, and a NULL options pointer,
+ *   take the defaults. Outputs are written up to the caller's size.
+ * - Defaults live in the library: a field's comment names its default, else it is 0 / NULL
+ *   (tests/abi_layout/check_defaults.py checks both).
  */
 #ifndef COVERAGE_AXIS_H
 #define COVERAGE_AXIS_H
@@ -35,8 +34,7 @@
 extern "C" {
 #endif
 
-/* The library is built with hidden symbols; only the ca_* functions are exported from the
-   shared library (libcoverage_axis.so). Windows DLL users define CA_SHARED_LIBRARY. */
+/* Only the ca_* functions are exported; Windows DLL users define CA_SHARED_LIBRARY. */
 #if defined(_WIN32) && defined(CA_SHARED_LIBRARY)
 #  ifdef CA_BUILDING_LIBRARY
 #    define CA_API __declspec(dllexport)
@@ -49,18 +47,21 @@ extern "C" {
 #  define CA_API
 #endif
 
-/* ---- versions ------------------------------------------------------------------------------ */
+/* ca_xxx_init(p): p->struct_size = sizeof *p as the caller's compiler sees it, then the library's
+   defaults (never writes past the caller's struct). */
+#define CA_DEFINE_INIT_(type) static inline void type##_init(type* p) { \
+    if (p) { p->struct_size = (uint32_t)sizeof *p; (void)type##_defaults(p, (uint32_t)sizeof *p); } }
+
+/* ---- versions (what a release may change: docs/abi.md) ------------------------------------- */
 #define CA_VERSION_MAJOR 0
 #define CA_VERSION_MINOR 2
 #define CA_VERSION_PATCH 0
 #define CA_VERSION_NUMBER (CA_VERSION_MAJOR * 10000 + CA_VERSION_MINOR * 100 + CA_VERSION_PATCH)
-/* The struct layouts and entry points (what each ABI added: docs/abi.md). */
-#define CA_ABI_VERSION 3
-/* The shared library's SOVERSION: raised only by a release that breaks existing callers; a new
-   CA_ABI_VERSION that only appends keeps it (docs/abi.md, "Versions and releases"). */
-#define CA_SOVERSION 3
+#define CA_ABI_VERSION 3 /* the struct layouts and entry points */
+#define CA_SOVERSION 3   /* the shared library's; raised only by a release that breaks callers */
 
 CA_API uint32_t ca_version(void);     /* CA_VERSION_NUMBER of the linked library */
+CA_API const char* ca_version_string(void); /* the same as "major.minor.patch" (static) */
 CA_API uint32_t ca_abi_version(void); /* CA_ABI_VERSION of the linked library */
 
 /* ---- status codes (pinned values; never renumbered) ---------------------------------------- */
@@ -80,92 +81,69 @@ typedef int32_t ca_status;
 #define CA_ERROR_INTERNAL          12 /* a bug: please report it with the input */
 #define CA_ERROR_NO_CANDIDATES     13 /* no inner candidate ball was found */
 #define CA_ERROR_TIME_LIMIT        14 /* ca_context_desc.time_limit_s ran out; the message names the stage */
-#define CA_ERROR_TARGET_NOT_REACHED 15 /* ABI 3. ca_select: no probe reached target_error; the one failure
-                                       that still returns a result: *out holds the probe of lowest HD
-                                       (stats hd_reached), which the caller destroys as on success */
+#define CA_ERROR_TARGET_NOT_REACHED 15 /* ca_select: no probe reached target_error; the one failure with a
+                                       result: *out is the probe of lowest HD, destroyed as on success */
 
-/* A static English name for a status, e.g. "CA_ERROR_NULL_POINTER: a required pointer is NULL". */
+/* A static English name, e.g. "CA_ERROR_NULL_POINTER: a required pointer is NULL". */
 CA_API const char* ca_status_string(ca_status status);
 
 /* ---- context ------------------------------------------------------------------------------- */
 typedef struct ca_context ca_context;
-
-/* level: 0 debug, 1 info, 2 warning. Called on the calling thread. */
+/* The callbacks run on the calling thread. log level: 0 debug, 1 info, 2 warning. */
 typedef void (*ca_log_fn)(void* user, int32_t level, const char* message);
-/* stage: "sampling", "inside", "delaunay", "candidates", "coverage", "selection", "connect", ...
-   fraction in [0,1] within the stage. Return non-zero to cancel (the call returns
-   CA_ERROR_CANCELLED). Called on the calling thread. */
+/* stage: "sampling", "inside", "delaunay", "candidates", "coverage", "selection", "connect", ...;
+   fraction in [0,1] within the stage. Non-zero cancels the call (CA_ERROR_CANCELLED). */
 typedef int32_t (*ca_progress_fn)(void* user, const char* stage, double fraction);
-/* Allocator for the result objects and the arrays their getters return. Working memory during
-   a call, and the internal state a result keeps for later steps, use the C++ heap. Both
-   functions or neither. */
+/* Allocates the result objects and their getters' arrays (working memory uses the C++ heap). */
 typedef void* (*ca_alloc_fn)(void* user, size_t size);
 typedef void (*ca_free_fn)(void* user, void* pointer);
 
 typedef struct ca_context_desc {
     uint32_t struct_size;  /* sizeof(ca_context_desc) */
-    ca_alloc_fn alloc;     /* NULL: malloc */
+    ca_alloc_fn alloc;     /* NULL: malloc; set both alloc and free, or neither */
     ca_free_fn free;       /* NULL: free */
     void* alloc_user;
     ca_log_fn log;         /* NULL: no log */
     void* log_user;
     ca_progress_fn progress; /* NULL: no progress */
     void* progress_user;
-    int32_t threads;       /* worker threads for parallel stages; 0 = all cores, 1 = serial */
-    double progress_interval_s; /* ABI 2. Least time between two progress calls within a stage
-                                   (a stage's first call and calls with fraction 1 always come); default 0 =
-                                   every update. Cancel requests are still seen at every update. */
-    double time_limit_s;   /* ABI 2. Wall-clock budget of each long call: CA_ERROR_TIME_LIMIT naming
-                              the stage, except the exact solver, which returns its best cover
-                              unproven. Default 0 = unlimited. */
+    int32_t threads;       /* worker threads of the parallel stages; 0 = all cores, 1 = serial */
+    double progress_interval_s; /* least time between two progress calls of a stage (its first call and
+                                   fraction 1 always come); default 0 = every update */
+    double time_limit_s;   /* wall-clock budget of each long call: CA_ERROR_TIME_LIMIT, except the exact
+                              solver, which returns its best cover unproven; default 0 = unlimited */
 } ca_context_desc;
-
-/* Sets struct_size and the defaults (all zero/NULL, threads 0) of the first struct_size bytes of
-   *desc; CA_ERROR_STRUCT_SIZE (nothing written) if struct_size is not a published size. */
 CA_API ca_status ca_context_desc_defaults(ca_context_desc* desc, uint32_t struct_size);
-static inline void ca_context_desc_init(ca_context_desc* desc) {
-    if (desc) { desc->struct_size = (uint32_t)sizeof *desc; (void)ca_context_desc_defaults(desc, (uint32_t)sizeof *desc); }
-}
-/* desc may be NULL (defaults). */
-CA_API ca_status ca_context_create(const ca_context_desc* desc, ca_context** out);
-CA_API void ca_context_destroy(ca_context* ctx); /* NULL is a no-op */
-/* Any thread. The request stays in force (every long call returns CA_ERROR_CANCELLED) until
-   ca_context_clear_cancel() is called. */
+CA_DEFINE_INIT_(ca_context_desc)
+CA_API ca_status ca_context_create(const ca_context_desc* desc, ca_context** out); /* desc NULL: defaults */
+CA_API void ca_context_destroy(ca_context* ctx);
+/* Any thread. Every long call returns CA_ERROR_CANCELLED until ca_context_clear_cancel(). */
 CA_API void ca_context_request_cancel(ca_context* ctx);
 CA_API void ca_context_clear_cancel(ca_context* ctx);
-/* The message of the last failed call on this context ("" if none). Valid until the next call. */
+/* The message of the last failed call on this context ("" if none), valid until the next call. */
 CA_API const char* ca_context_last_error(const ca_context* ctx);
 
 /* ---- input views --------------------------------------------------------------------------- */
-/* A triangle mesh (triangle_count > 0) or a point cloud (triangle_count == 0; normals: one per
-   point, inward or outward, trusted as point_normals says; NULL = estimated from the points by
-   PCA and oriented, see docs/pointclouds.md). Meshes may be open, soups, or self-intersecting:
-   inside/outside comes from the generalised winding number (of the points, for a cloud). */
-/* How far a point cloud's normals are trusted (ca_surface_view.point_normals, ABI 2). */
-#define CA_POINT_NORMALS_TRUSTED    0 /* consistently oriented: used as given, but checked (signs
-                                         disagreeing between neighbours: re-oriented) */
+/* A triangle mesh (triangle_count > 0; may be open, a soup or self-intersecting: inside comes from
+   the generalised winding number) or a point cloud (triangle_count == 0; docs/pointclouds.md). */
+#define CA_POINT_NORMALS_TRUSTED    0 /* consistently oriented: used as given, signs checked */
 #define CA_POINT_NORMALS_UNORIENTED 1 /* directions right, signs not: re-oriented */
 #define CA_POINT_NORMALS_ESTIMATE   2 /* ignored: estimated from the points by PCA and oriented */
 typedef struct ca_surface_view {
     uint32_t struct_size;       /* sizeof(ca_surface_view) */
     const double* positions;    /* x y z per vertex */
     size_t vertex_count;
-    size_t position_stride;     /* bytes between vertices; 0 = 3 * sizeof(double) */
+    size_t position_stride;
     const uint32_t* triangles;  /* i j k per triangle, 0-based */
     size_t triangle_count;
-    size_t triangle_stride;     /* bytes between triangles; 0 = 3 * sizeof(uint32_t) */
-    const double* normals;      /* point clouds: nx ny nz per point; ignored for meshes */
-    size_t normal_stride;       /* 0 = 3 * sizeof(double) */
-    int32_t point_normals;      /* ABI 2: CA_POINT_NORMALS_*; default TRUSTED */
-    size_t normal_count;        /* ABI 3. Entries of normals (point clouds): vertex_count when normals
-                                   is set, else CA_ERROR_INVALID_INPUT; 0 with normals NULL. A caller
-                                   of ABI 1 or 2 has no such field: its normals count vertex_count */
+    size_t triangle_stride;
+    const double* normals;      /* point clouds: nx ny nz per point, inward or outward; NULL: estimated */
+    size_t normal_stride;
+    int32_t point_normals;      /* CA_POINT_NORMALS_*; default TRUSTED */
+    size_t normal_count;        /* entries of normals: vertex_count, or 0 with normals NULL */
 } ca_surface_view;
-
-CA_API ca_status ca_surface_view_defaults(ca_surface_view* view, uint32_t struct_size); /* all zero */
-static inline void ca_surface_view_init(ca_surface_view* view) {
-    if (view) { view->struct_size = (uint32_t)sizeof *view; (void)ca_surface_view_defaults(view, (uint32_t)sizeof *view); }
-}
+CA_API ca_status ca_surface_view_defaults(ca_surface_view* view, uint32_t struct_size);
+CA_DEFINE_INIT_(ca_surface_view)
 
 /* ---- step 1: candidates -------------------------------------------------------------------- */
 #define CA_CANDIDATES_VORONOI 0 /* inner Voronoi vertices of voronoi_samples surface samples */
@@ -179,83 +157,60 @@ typedef struct ca_candidate_options {
     uint32_t voronoi_samples;    /* |C|, samples whose Voronoi vertices are candidates; default 4000 */
     uint32_t random_candidates;  /* random generator: number of interior points; default 10000 */
     uint64_t seed;               /* default 1; the same seed gives the same result */
-    uint32_t connect_samples;    /* meshes: surface samples for the power-diagram connection;
+    uint32_t connect_samples;    /* meshes: surface samples of the power-diagram connection;
                                     default 10000; 0 = reuse the Voronoi samples */
-    uint32_t reserved_abi2_tail; /* ABI 3. The tail padding of the ABI 2 layout, never read (a caller of
-                                    ABI 2 may leave it uninitialised) */
-    int32_t volumetric_only;     /* ABI 3. 0 (default): a cover sample no inner ball reaches (sheets, cards,
-                                    thin parts) gets a surface ball, so a cover always exists. 1: inner
-                                    balls only (CA_ERROR_UNCOVERABLE, or CA_ERROR_NO_CANDIDATES) */
+    uint32_t reserved_abi2_tail; /* never read (the tail padding of an older layout) */
+    int32_t volumetric_only;     /* 0 (default): a cover sample no inner ball reaches (sheets, thin
+                                    parts) gets a surface ball, so a cover exists. 1: inner balls only */
 } ca_candidate_options;
-
-CA_API ca_status ca_candidate_options_defaults(ca_candidate_options* options, uint32_t struct_size); /* the defaults named above */
-static inline void ca_candidate_options_init(ca_candidate_options* options) {
-    if (options) { options->struct_size = (uint32_t)sizeof *options; (void)ca_candidate_options_defaults(options, (uint32_t)sizeof *options); }
-}
+CA_API ca_status ca_candidate_options_defaults(ca_candidate_options* options, uint32_t struct_size);
+CA_DEFINE_INIT_(ca_candidate_options)
 
 typedef struct ca_candidate_set ca_candidate_set;
-
 CA_API ca_status ca_candidates(ca_context* ctx, const ca_surface_view* surface,
                                const ca_candidate_options* options, ca_candidate_set** out);
-
-/* Build a candidate set from the caller's own samples and balls (radius = undilated medial
-   radius). reference_length is the length delta is a fraction of (the longest bbox side of the
-   model); 0 = the longest bbox side of the samples. Strides in bytes, 0 = packed. */
+/* A candidate set from the caller's own samples and balls (radius = undilated medial radius).
+   reference_length: the length delta is a fraction of; 0 = the samples' longest bbox side. */
 CA_API ca_status ca_candidates_from_arrays(ca_context* ctx,
                                            const double* samples, size_t sample_count, size_t sample_stride,
                                            const double* centers, size_t center_stride,
                                            const double* radii, size_t radius_stride,
                                            size_t ball_count, double reference_length,
                                            ca_candidate_set** out);
-/* Releases the caller's handle. Selections made from the set keep it alive (it is freed with the
-   last of them); the handle itself must not be used again. See docs/abi.md. */
+/* Releases the caller's handle; selections made from the set keep it alive. */
 CA_API void ca_candidate_set_destroy(ca_candidate_set* set);
-
-/* Zero-copy getters: x y z per item; valid until destroy. */
 CA_API size_t ca_candidate_set_count(const ca_candidate_set* set);
 CA_API const double* ca_candidate_set_centers(const ca_candidate_set* set);
 CA_API const double* ca_candidate_set_radii(const ca_candidate_set* set);
 CA_API size_t ca_candidate_set_sample_count(const ca_candidate_set* set);
 CA_API const double* ca_candidate_set_samples(const ca_candidate_set* set);
-/* The length delta is a fraction of (longest bbox side), in the caller's units. */
-CA_API double ca_candidate_set_reference_length(const ca_candidate_set* set);
-/* 1 if the input mesh faced inward (or the cloud's normals pointed inward) and was flipped for the
-   inside test, else 0. */
+CA_API double ca_candidate_set_reference_length(const ca_candidate_set* set); /* caller's units */
+/* 1 if the mesh faced inward (or the cloud's normals pointed inward) and was flipped, else 0. */
 CA_API int32_t ca_candidate_set_flipped(const ca_candidate_set* set);
-/* Which normals a point cloud's candidates used: CA_NORMALS_* (meshes: CA_NORMALS_NONE). */
 #define CA_NORMALS_NONE      0 /* a mesh: no point normals */
 #define CA_NORMALS_GIVEN     1 /* the caller's normals */
 #define CA_NORMALS_ORIENTED  2 /* the caller's normals, re-oriented */
 #define CA_NORMALS_ESTIMATED 3 /* estimated from the points (PCA) and oriented */
-CA_API int32_t ca_candidate_set_normals(const ca_candidate_set* set);
-/* Point clouds: how many (de-duplicated) points were dropped as outliers: isolated points and
-   points far off their neighbours' plane (docs/pointclouds.md). 0 for meshes and clean clouds. */
+CA_API int32_t ca_candidate_set_normals(const ca_candidate_set* set); /* CA_NORMALS_*: what a cloud used */
+/* Point clouds: (de-duplicated) points dropped as outliers; 0 for meshes. */
 CA_API uint64_t ca_candidate_set_outlier_count(const ca_candidate_set* set);
-/* ABI 3. Point clouds: how many given normals were zero, which means "none": they were estimated
-   (from the points, signed to agree with the given normals around them; when every normal is
-   zero, the cloud's normals are estimated as with NULL normals). 0 for meshes. */
+/* Point clouds: given normals that were zero ("none") and were estimated; 0 for meshes. */
 CA_API uint64_t ca_candidate_set_normals_replaced(const ca_candidate_set* set);
-/* Copy-out: capacity in balls; centers needs 3*capacity doubles, radii capacity doubles (either
-   may be NULL). *count receives the number of balls; CA_ERROR_BUFFER_TOO_SMALL if capacity is
-   smaller (nothing copied). */
+/* Copy-out (centers: 3 * capacity doubles, radii: capacity; either may be NULL); *count: the
+   number of balls; a smaller capacity is CA_ERROR_BUFFER_TOO_SMALL, nothing copied. */
 CA_API ca_status ca_candidate_set_copy(const ca_candidate_set* set, double* centers, double* radii,
                                        size_t capacity, size_t* count);
 
 /* ---- step 2: selection (minimum set cover) ------------------------------------------------- */
 #define CA_DILATE_OFFSET 0 /* r' = r + delta * reference_length */
 #define CA_DILATE_SCALE  1 /* r' = r * scale */
-
-#define CA_SOLVER_EXACT  0 /* reduction, LP bound, local search, CBC branch and bound (see CA_EFFORT_*) */
+#define CA_SOLVER_EXACT  0 /* reduction, LP bound, local search, CBC branch and bound (CA_EFFORT_*) */
 #define CA_SOLVER_GREEDY 1 /* classic greedy + redundancy removal */
 #define CA_SOLVER_CAPP   2 /* Coverage Axis++ score greedy + redundancy removal */
-
-/* Effort of the exact solver (deterministic for a seed unless the time limit ends the work). */
-#define CA_EFFORT_FAST  0 /* default: LP bound + local search; CBC only when one ball separates the
-                             cover from the bound on a small kernel, with a node limit; otherwise the
-                             cover is returned unproven with its bound and gap */
-#define CA_EFFORT_PROVE 1 /* a short CBC search for a smaller cover among the balls of zero
-                             reduced cost at the LP optimum, then CBC until the cover is proven
-                             optimal or the time limit ends it */
+/* Effort of the exact solver (docs/solver.md). */
+#define CA_EFFORT_FAST  0 /* LP bound + local search; CBC only on a small kernel one ball from the
+                             bound; else the cover comes back unproven with its bound and gap */
+#define CA_EFFORT_PROVE 1 /* CBC until the cover is proven optimal or the time limit ends it */
 
 typedef struct ca_select_options {
     uint32_t struct_size;        /* sizeof(ca_select_options) */
@@ -263,91 +218,70 @@ typedef struct ca_select_options {
     double delta;                /* offset, fraction of the longest bbox side; default 0.02 */
     double scale;                /* scale factor; default 1.5 */
     int32_t solver;              /* CA_SOLVER_*; default EXACT */
-    double time_limit_s;         /* exact solver wall-clock budget (a safety net: results then depend on
-                                    the machine's speed); default 60; <= 0: no limit */
-    int32_t skip_uncoverable;    /* 0 (default): uncoverable samples fail with CA_ERROR_UNCOVERABLE;
+    double time_limit_s;         /* exact solver's wall-clock budget, a safety net; default 60; <= 0: none */
+    int32_t skip_uncoverable;    /* 0 (default): uncoverable samples are CA_ERROR_UNCOVERABLE;
                                     1: they are ignored and listed in the result */
-    /* Optional masks (NULL = none), non-zero = set; borrowed during the call; their entry counts
-       are the *_count fields at the end (ABI 3). */
-    const uint8_t* ignorable_samples; /* sample_count entries: need not be covered */
-    const uint8_t* forced_in;         /* ball_count entries: must be selected */
-    const uint8_t* forced_out;        /* ball_count entries: must not be selected */
-    uint32_t target_count;       /* 0 (default): off. K > 0: at most K balls: the smallest dilation that
-                                    achieves it (bisection), then with the offset dilation the lowest
-                                    two-sided HD among probed deltas (docs/fidelity.md; hd_reached) */
-    double target_tolerance;     /* bisection tolerance on delta (fraction of L) or scale; default 1e-4 */
-    uint32_t divide_threshold;   /* more samples than this: divide and conquer (paper 8.1);
-                                    default 100000; 0 = never */
+    const uint8_t* ignorable_samples; /* per sample, non-zero: need not be covered */
+    const uint8_t* forced_in;         /* per candidate ball, non-zero: must be selected */
+    const uint8_t* forced_out;        /* per candidate ball, non-zero: must not be selected */
+    uint32_t target_count;       /* 0 (default): off. K: at most K balls, at the smallest dilation that
+                                    achieves it, then the lowest HD among probed deltas (docs/fidelity.md) */
+    double target_tolerance;     /* bisection tolerance on delta or scale; default 1e-4 */
+    uint32_t divide_threshold;   /* more samples: divide and conquer; default 100000; 0 = never */
     int32_t effort;              /* CA_EFFORT_*; default FAST */
-    double target_error;         /* ABI 2. 0 (default): off. E > 0: few balls whose skeleton (connected and
-                                    evaluated at the defaults) is within two-sided HD E % of the bbox
-                                    diagonal, by a search over delta (offset dilation, not with
-                                    target_count; docs/fidelity.md). None within E:
-                                    CA_ERROR_TARGET_NOT_REACHED with *out the lowest-HD selection */
-    int32_t probe_fit;           /* ABI 2. The searches' probes: 0 (default): connected at the defaults;
-                                    1: with fit = 1, so hd_reached is the fitted skeleton's (meshes) */
-    /* ABI 3: the entries of the masks above, one per sample (ignorable_samples) or per candidate
-       ball (forced_in, forced_out) when the mask is set, else CA_ERROR_INVALID_INPUT; 0 with the
-       mask NULL. A caller of ABI 1 or 2 has no such fields: its masks count the set's samples or balls */
-    size_t ignorable_samples_count;
+    double target_error;         /* 0 (default): off. E: few balls whose skeleton is within two-sided HD
+                                    E % of the bbox diagonal (offset dilation, not with target_count) */
+    int32_t probe_fit;           /* 0 (default): the searches' probes connected at the defaults;
+                                    1: with fit = 1 (meshes) */
+    size_t ignorable_samples_count; /* the masks' entries: the set's samples or balls, 0 with NULL */
     size_t forced_in_count;
     size_t forced_out_count;
 } ca_select_options;
-
-CA_API ca_status ca_select_options_defaults(ca_select_options* options, uint32_t struct_size); /* the defaults named above */
-static inline void ca_select_options_init(ca_select_options* options) {
-    if (options) { options->struct_size = (uint32_t)sizeof *options; (void)ca_select_options_defaults(options, (uint32_t)sizeof *options); }
-}
+CA_API ca_status ca_select_options_defaults(ca_select_options* options, uint32_t struct_size);
+CA_DEFINE_INIT_(ca_select_options)
 
 typedef struct ca_selection ca_selection;
-
 CA_API ca_status ca_select(ca_context* ctx, const ca_candidate_set* set,
                            const ca_select_options* options, ca_selection** out);
 CA_API void ca_selection_destroy(ca_selection* selection);
-
 CA_API size_t ca_selection_count(const ca_selection* selection);
 CA_API const uint32_t* ca_selection_indices(const ca_selection* selection); /* into the candidate set */
-CA_API const double* ca_selection_centers(const ca_selection* selection);   /* x y z per ball */
+CA_API const double* ca_selection_centers(const ca_selection* selection);
 CA_API const double* ca_selection_radii(const ca_selection* selection);     /* undilated */
 CA_API const double* ca_selection_dilated_radii(const ca_selection* selection);
 CA_API size_t ca_selection_uncovered_count(const ca_selection* selection);
 CA_API const uint32_t* ca_selection_uncovered(const ca_selection* selection); /* sample indices */
 
 typedef struct ca_select_stats {
-    uint32_t struct_size;        /* set by the caller: sizeof(ca_select_stats) */
+    uint32_t struct_size;        /* sizeof(ca_select_stats) */
     int32_t proven_optimal;      /* 1 iff the cover is a proven minimum */
     int32_t solver;              /* CA_SOLVER_* used */
     double objective;            /* number of selected balls */
     double lower_bound;          /* a valid lower bound on the minimum */
     double gap;                  /* (objective - lower_bound) / objective */
     double delta_absolute;       /* the offset in the caller's units (0 for SCALE) */
-    double time_reduce_s;
-    double time_solve_s;
-    double time_total_s;         /* including the coverage matrix */
+    double time_reduce_s, time_solve_s, time_total_s; /* the total includes the coverage matrix */
     uint64_t rows_before, cols_before, rows_after, cols_after, forced;
     uint64_t components;         /* independent parts of the reduced problem */
-    uint64_t probes;             /* set-cover solves (target_count: one per bisection step and HD probe;
-                                    target_error: one per select + connect + evaluate probe) */
+    uint64_t probes;             /* set-cover solves of the searches (target_count, target_error) */
     uint64_t parts;              /* divide and conquer: spatial parts (0 = not used) */
     double scale_used;           /* the scale factor used (CA_DILATE_SCALE), else 0 */
-    double time_coverage_s;      /* ABI 2: building the coverage matrix (part of time_total_s) */
-    uint64_t cbc_components;     /* ABI 2: components of the kernel that needed CBC */
-    uint64_t rowgen_rounds;      /* ABI 2: row-generation rounds (sub-problems solved) */
-    double hd_reached;           /* ABI 2. The searches: the returned selection's two-sided HD, % of the
-                                    bbox diagonal; -1 when not measured */
+    double time_coverage_s;      /* building the coverage matrix (part of time_total_s) */
+    uint64_t cbc_components;     /* components of the kernel that needed CBC */
+    uint64_t rowgen_rounds;      /* row-generation rounds */
+    double hd_reached;           /* the searches: the selection's two-sided HD, %; -1: not measured */
 } ca_select_stats;
-
 CA_API ca_status ca_selection_stats(const ca_selection* selection, ca_select_stats* stats);
 
 /* ---- step 3: connectivity ------------------------------------------------------------------ */
-#define CA_FIT_AUTO     (-1) /* ABI 3: the thorough fit for a target_count selection on a mesh, else off */
+#define CA_FIT_AUTO     (-1) /* THOROUGH for a target_count selection on a mesh, else OFF */
 #define CA_FIT_OFF      0
-#define CA_FIT_ONCE     1
-#define CA_FIT_THOROUGH 2
-#define CA_FIT_COVERED  3 /* ABI 3: ONCE, then the cover it breaks repaired with added balls (docs/fidelity.md) */
+#define CA_FIT_ONCE     1 /* each ball's centre and radius fitted to the surface (meshes) */
+#define CA_FIT_THOROUGH 2 /* of ONCE and a fit with twice the samples, the lower evaluated HD */
+#define CA_FIT_COVERED  3 /* ONCE, then added balls keep every cover sample covered */
 #define CA_CONNECT_POWER  0 /* regular triangulation of selected balls and dense surface samples */
-#define CA_CONNECT_MEDIAL 1 /* regions of the selected balls on the inner Voronoi medial mesh (meshes, point clouds) */
-#define CA_CONNECT_AUTO   2 /* MEDIAL for meshes and clean point clouds, POWER for noisy clouds and caller arrays */
+#define CA_CONNECT_MEDIAL 1 /* regions of the selected balls on the inner Voronoi medial mesh */
+#define CA_CONNECT_AUTO   2 /* MEDIAL for meshes and clean point clouds, else POWER */
 
 typedef struct ca_connect_options {
     uint32_t struct_size;        /* sizeof(ca_connect_options) */
@@ -355,28 +289,18 @@ typedef struct ca_connect_options {
     int32_t remove_outside;      /* 1 (default): drop edges/triangles whose interior leaves the shape */
     int32_t fill_holes;          /* 1 (default): fill 3- and 4-edge holes whose triangles stay inside */
     int32_t reconnect;           /* 1 (default): join components by the shortest inside edges */
-    int32_t fit;                 /* ABI 2. CA_FIT_* (meshes; docs/fidelity.md). ONCE: each ball's centre and
-                                    radius fitted to the surface, edges and faces kept; THOROUGH: of
-                                    that and a fit with twice the samples, the lower evaluated HD;
-                                    COVERED: ONCE, then added balls keep every cover sample covered
-                                    (more vertices than balls); AUTO (default): THOROUGH for a
-                                    target_count selection, else OFF */
-    int32_t fit_iterations;      /* ABI 2. Fitting steps; default 10 */
+    int32_t fit;                 /* CA_FIT_*; default AUTO (docs/fidelity.md) */
+    int32_t fit_iterations;      /* fitting steps; default 10 */
 } ca_connect_options;
-
-CA_API ca_status ca_connect_options_defaults(ca_connect_options* options, uint32_t struct_size); /* the defaults named above */
-static inline void ca_connect_options_init(ca_connect_options* options) {
-    if (options) { options->struct_size = (uint32_t)sizeof *options; (void)ca_connect_options_defaults(options, (uint32_t)sizeof *options); }
-}
+CA_API ca_status ca_connect_options_defaults(ca_connect_options* options, uint32_t struct_size);
+CA_DEFINE_INIT_(ca_connect_options)
 
 typedef struct ca_skeleton ca_skeleton;
-
 CA_API ca_status ca_connect(ca_context* ctx, const ca_candidate_set* set, const ca_selection* selection,
                             const ca_connect_options* options, ca_skeleton** out);
 CA_API void ca_skeleton_destroy(ca_skeleton* skeleton);
-
 CA_API size_t ca_skeleton_vertex_count(const ca_skeleton* skeleton);
-CA_API const double* ca_skeleton_centers(const ca_skeleton* skeleton); /* x y z per vertex */
+CA_API const double* ca_skeleton_centers(const ca_skeleton* skeleton);
 CA_API const double* ca_skeleton_radii(const ca_skeleton* skeleton);   /* undilated medial radii */
 CA_API size_t ca_skeleton_edge_count(const ca_skeleton* skeleton);
 CA_API const uint32_t* ca_skeleton_edges(const ca_skeleton* skeleton); /* i j per edge, incl. face edges */
@@ -384,38 +308,31 @@ CA_API size_t ca_skeleton_face_count(const ca_skeleton* skeleton);
 CA_API const uint32_t* ca_skeleton_faces(const ca_skeleton* skeleton); /* i j k per face */
 
 typedef struct ca_skeleton_stats {
-    uint32_t struct_size;        /* set by the caller: sizeof(ca_skeleton_stats) */
+    uint32_t struct_size;        /* sizeof(ca_skeleton_stats) */
     uint64_t vertices, edges, faces;
     uint64_t components;         /* connected components (isolated vertices count) */
     uint64_t isolated;           /* vertices with no edge */
     int64_t betti1;              /* independent cycles of the complex */
     double time_s;
     int32_t method;              /* CA_CONNECT_POWER or CA_CONNECT_MEDIAL: the route used */
-    double fit_time_s;           /* ABI 2. time of the fit (included in time_s) */
-    double fit_error_before;     /* ABI 2. fit's largest residual before / after, in percent of the */
-    double fit_error_after;      /*        longest bbox side (surface and envelope-boundary samples) */
-    uint64_t fit_uncovered;      /* ABI 2. cover samples that no fitted ball covers within its
-                                    dilated radius (0 = the cover still holds) */
-    int32_t fitted;              /* ABI 2. 1 if the balls were fitted (fit on, mesh input) */
-    int64_t genus;               /* ABI 2. Genus of the input mesh (sum over its parts), -1 if unknown
-                                    (clouds, open or non-manifold parts); loops beyond it are removed */
-    uint64_t thin_handles;       /* ABI 2. max(0, genus - betti1): handles of the shape that the
-                                    skeleton has no loop for (too thin for the dilation); 0 if
-                                    the genus is unknown */
-    uint64_t medial_balls;       /* ABI 3. vertices that are inner (medial) balls */
-    uint64_t surface_balls;      /* ABI 3. vertices that are surface balls (ca_candidate_options.
-                                    volumetric_only), joined along the surface */
-    uint64_t open_parts;         /* ABI 3. connected parts of the input mesh with a boundary (sheets,
-                                    cards, open cloth); 0 for point clouds */
+    double fit_time_s;           /* part of time_s */
+    double fit_error_before;     /* fit's largest residual before / after, % of the longest bbox side */
+    double fit_error_after;
+    uint64_t fit_uncovered;      /* cover samples no fitted dilated ball covers (0: the cover holds) */
+    int32_t fitted;              /* 1 if the balls were fitted */
+    int64_t genus;               /* the input mesh's (sum over its parts); -1: unknown (clouds, open or
+                                    non-manifold parts); loops beyond it are removed */
+    uint64_t thin_handles;       /* max(0, genus - betti1): handles too thin for a loop; 0: genus unknown */
+    uint64_t medial_balls;       /* vertices that are inner (medial) balls */
+    uint64_t surface_balls;      /* vertices that are surface balls (see volumetric_only) */
+    uint64_t open_parts;         /* connected parts of the input mesh with a boundary; 0 for clouds */
 } ca_skeleton_stats;
-
 CA_API ca_status ca_skeleton_stats_get(const ca_skeleton* skeleton, ca_skeleton_stats* stats);
 
-/* ---- evaluation: how far is a skeleton from the shape? ----------------------------------- */
-/* The reconstruction is the union of the skeleton's balls, the medial cones of its edges and the
-   medial slabs of its faces (exact signed distances). Reported: one-sided Hausdorff distances
-   surface -> reconstruction and reconstruction -> surface (maximum and mean) and the two-sided
-   maximum, all in percent of the input's bounding-box diagonal. */
+/* ---- evaluation: how far is a skeleton from the shape? ------------------------------------- */
+/* The reconstruction is the union of the skeleton's balls, edges' medial cones and faces' medial
+   slabs. Hausdorff distances (max and mean), one-sided and two-sided, in % of the input's
+   bounding-box diagonal (docs/evaluation.md). */
 typedef struct ca_skeleton_view {
     uint32_t struct_size;        /* sizeof(ca_skeleton_view) */
     const double* centers;       /* x y z per ball, packed */
@@ -426,11 +343,8 @@ typedef struct ca_skeleton_view {
     const uint32_t* faces;       /* i j k per face, packed; may be NULL if face_count == 0 */
     size_t face_count;
 } ca_skeleton_view;
-
-CA_API ca_status ca_skeleton_view_defaults(ca_skeleton_view* view, uint32_t struct_size); /* all zero */
-static inline void ca_skeleton_view_init(ca_skeleton_view* view) {
-    if (view) { view->struct_size = (uint32_t)sizeof *view; (void)ca_skeleton_view_defaults(view, (uint32_t)sizeof *view); }
-}
+CA_API ca_status ca_skeleton_view_defaults(ca_skeleton_view* view, uint32_t struct_size);
+CA_DEFINE_INIT_(ca_skeleton_view)
 /* A view of a skeleton result (valid while the skeleton lives). */
 CA_API ca_status ca_skeleton_get_view(const ca_skeleton* skeleton, ca_skeleton_view* view);
 
@@ -440,14 +354,11 @@ typedef struct ca_evaluate_options {
     uint32_t envelope_samples;   /* samples of the reconstruction's boundary; default 100000 */
     uint64_t seed;               /* default 1 */
 } ca_evaluate_options;
-
-CA_API ca_status ca_evaluate_options_defaults(ca_evaluate_options* options, uint32_t struct_size); /* the defaults named above */
-static inline void ca_evaluate_options_init(ca_evaluate_options* options) {
-    if (options) { options->struct_size = (uint32_t)sizeof *options; (void)ca_evaluate_options_defaults(options, (uint32_t)sizeof *options); }
-}
+CA_API ca_status ca_evaluate_options_defaults(ca_evaluate_options* options, uint32_t struct_size);
+CA_DEFINE_INIT_(ca_evaluate_options)
 
 typedef struct ca_evaluation {
-    uint32_t struct_size;        /* set by the caller: sizeof(ca_evaluation) */
+    uint32_t struct_size;        /* sizeof(ca_evaluation) */
     double hd_surface_to_recon;  /* max over surface samples of the distance to the reconstruction, % */
     double mean_surface_to_recon;
     double hd_recon_to_surface;  /* max over reconstruction boundary samples of the distance to the surface, % */
@@ -458,16 +369,15 @@ typedef struct ca_evaluation {
     double time_s;
 } ca_evaluation;
 
-/* surface: the input mesh (or a point cloud: triangle_count 0, normals not needed; distances
-   then go to the nearest point). Fills *result; no allocation to free. */
+/* surface: the input mesh, or a point cloud (distances to its nearest point). Fills *result. */
 CA_API ca_status ca_evaluate(ca_context* ctx, const ca_surface_view* surface, const ca_skeleton_view* skeleton,
                              const ca_evaluate_options* options, ca_evaluation* result);
 
-/* ---- correspondence and rig ---------------------------------------------------------------- */
-/* docs/rig.md. For every vertex of a surface and a skeleton in the same units: the correspondence
-   (the nearest skeleton primitive, and up to CA_INFLUENCES balls with weights that sum to 1 and
-   vary continuously), and the rig (a tree of joints along a curve skeleton, and per vertex
-   CA_INFLUENCES joints with weights). */
+/* ---- correspondence and rig (docs/rig.md) -------------------------------------------------- */
+/* For every vertex of a surface and a skeleton in the same units: the correspondence (the nearest
+   skeleton primitive, and up to CA_INFLUENCES balls with weights), and the rig (a tree of joints
+   along a curve skeleton, and CA_INFLUENCES joints with weights). Weights sum to 1, by decreasing
+   weight; an unused slot has weight 0 and repeats the first ball or joint. */
 #define CA_INFLUENCES 4
 #define CA_NEAREST_BALL 0 /* ca_correspondence_nearest_kinds: the index is a ball's */
 #define CA_NEAREST_EDGE 1 /* an edge's (of ca_skeleton_view.edges) */
@@ -478,46 +388,33 @@ typedef struct ca_correspondence_options {
     double smoothing;            /* the blend's width, in median ball radii: a primitive farther than
                                     the nearest by that much weighs e^-1 of it; > 0; default 0.5 */
 } ca_correspondence_options;
-
-CA_API ca_status ca_correspondence_options_defaults(ca_correspondence_options* options, uint32_t struct_size); /* the defaults named above */
-static inline void ca_correspondence_options_init(ca_correspondence_options* options) {
-    if (options) { options->struct_size = (uint32_t)sizeof *options; (void)ca_correspondence_options_defaults(options, (uint32_t)sizeof *options); }
-}
+CA_API ca_status ca_correspondence_options_defaults(ca_correspondence_options* options, uint32_t struct_size);
+CA_DEFINE_INIT_(ca_correspondence_options)
 
 typedef struct ca_correspondence ca_correspondence;
-
 CA_API ca_status ca_correspond(ca_context* ctx, const ca_surface_view* surface, const ca_skeleton_view* skeleton,
                                const ca_correspondence_options* options, ca_correspondence** out);
 CA_API void ca_correspondence_destroy(ca_correspondence* correspondence);
-
 CA_API size_t ca_correspondence_vertex_count(const ca_correspondence* correspondence);
-/* CA_INFLUENCES per vertex, by decreasing weight; an unused slot has weight 0 and repeats the
-   first ball. */
-CA_API const uint32_t* ca_correspondence_balls(const ca_correspondence* correspondence);
-CA_API const double* ca_correspondence_weights(const ca_correspondence* correspondence);
+CA_API const uint32_t* ca_correspondence_balls(const ca_correspondence* correspondence);  /* CA_INFLUENCES per vertex */
+CA_API const double* ca_correspondence_weights(const ca_correspondence* correspondence); /* CA_INFLUENCES per vertex */
 CA_API const int32_t* ca_correspondence_nearest_kinds(const ca_correspondence* correspondence);    /* CA_NEAREST_* */
 CA_API const uint32_t* ca_correspondence_nearest_indices(const ca_correspondence* correspondence); /* ball, edge or face */
 
 typedef struct ca_rig_options {
     uint32_t struct_size;        /* sizeof(ca_rig_options) */
     int64_t root;                /* the root joint's ball; default -1: the largest ball */
-    uint32_t max_joints;         /* at most this many joints, >= 1 (fewer branches kept, then wider
-                                    spacing); default 64 */
+    uint32_t max_joints;         /* at most this many joints, >= 1; default 64 */
     double joint_spacing;        /* joints about this far apart along a branch, fraction of the longest
                                     side of the balls' bounding box, > 0; default 0.1 */
-    double min_branch;           /* a branch is kept when its tip's ball reaches past every ball of the
-                                    tree by more than this many times that ball's radius and it is
-                                    longer than this many tip radii, >= 0; default 1.5 */
+    double min_branch;           /* a branch is kept when its tip ball reaches past the tree by more than
+                                    this many radii and it is this many tip radii long, >= 0; default 1.5 */
     double smoothing;            /* the ball weights' blend, as ca_correspondence_options; default 0.5 */
 } ca_rig_options;
-
-CA_API ca_status ca_rig_options_defaults(ca_rig_options* options, uint32_t struct_size); /* the defaults named above */
-static inline void ca_rig_options_init(ca_rig_options* options) {
-    if (options) { options->struct_size = (uint32_t)sizeof *options; (void)ca_rig_options_defaults(options, (uint32_t)sizeof *options); }
-}
+CA_API ca_status ca_rig_options_defaults(ca_rig_options* options, uint32_t struct_size);
+CA_DEFINE_INIT_(ca_rig_options)
 
 typedef struct ca_rig ca_rig;
-
 CA_API ca_status ca_rig_build(ca_context* ctx, const ca_surface_view* surface, const ca_skeleton_view* skeleton,
                               const ca_rig_options* options, ca_rig** out);
 CA_API void ca_rig_destroy(ca_rig* rig);
@@ -530,18 +427,15 @@ CA_API const uint32_t* ca_rig_joint_balls(const ca_rig* rig);    /* the ball eac
 CA_API const uint32_t* ca_rig_joint_branches(const ca_rig* rig); /* the branch each joint is on (root: 0) */
 CA_API size_t ca_rig_branch_count(const ca_rig* rig);            /* branches between root, junctions, tips */
 CA_API size_t ca_rig_vertex_count(const ca_rig* rig);
-/* CA_INFLUENCES per vertex, by decreasing weight (sum 1; unused: weight 0, the first joint). */
-CA_API const uint32_t* ca_rig_vertex_joints(const ca_rig* rig);
-CA_API const double* ca_rig_vertex_weights(const ca_rig* rig);
+CA_API const uint32_t* ca_rig_vertex_joints(const ca_rig* rig);   /* CA_INFLUENCES per vertex */
+CA_API const double* ca_rig_vertex_weights(const ca_rig* rig);    /* CA_INFLUENCES per vertex */
 CA_API const uint32_t* ca_rig_vertex_branches(const ca_rig* rig); /* the branch of the vertex's heaviest ball */
 
 /* ---- engine proxies ------------------------------------------------------------------------ */
-/* At most `count` convex primitives engines take as colliders (docs/proxies.md): spheres, tapered
-   capsules (the convex hull of two balls) and oriented boxes, from a skeleton and its surface.
-   - INSCRIBED: chosen at the least two-sided HD; no primitive reaches farther outside the shape
-     than the skeleton's own balls and edges (a proven bound against a measurement);
-   - CONSERVATIVE: chosen at the least volume outside the shape; the union holds every point of the
-     surface (every point of every triangle, not only samples). */
+/* At most `count` convex colliders (docs/proxies.md): spheres, tapered capsules (the convex hull of
+   two balls) and oriented boxes, from a skeleton and its surface. INSCRIBED: the least two-sided HD,
+   no primitive reaching farther outside than the skeleton's balls and edges (a proven bound);
+   CONSERVATIVE: the least volume outside, the union holding every point of every triangle. */
 #define CA_PROXY_SHAPES_SPHERES  0 /* spheres only */
 #define CA_PROXY_SHAPES_CAPSULES 1 /* tapered capsules and spheres */
 #define CA_PROXY_SHAPES_BOXES    2 /* oriented boxes and spheres */
@@ -556,47 +450,38 @@ typedef struct ca_proxy_options {
     uint32_t struct_size;        /* sizeof(ca_proxy_options) */
     int32_t shapes;              /* CA_PROXY_SHAPES_*; default CAPSULES */
     int32_t mode;                /* CA_PROXY_INSCRIBED or CA_PROXY_CONSERVATIVE; default INSCRIBED */
-    uint32_t count;              /* at most this many primitives (>= 1; fewer when more would not lower
-                                    the error); default 16 */
+    uint32_t count;              /* at most this many primitives, >= 1; default 16 */
     uint32_t surface_samples;    /* about this many corners of the surface cells; default 20000 */
     uint32_t evaluate_samples;   /* stats: surface and proxy-boundary samples each; default 20000 */
     uint32_t volume_samples;     /* stats: Monte Carlo points for the volumes; default 100000 */
     uint64_t seed;               /* default 1; the same seed gives the same proxies */
 } ca_proxy_options;
-
-CA_API ca_status ca_proxy_options_defaults(ca_proxy_options* options, uint32_t struct_size); /* the defaults named above */
-static inline void ca_proxy_options_init(ca_proxy_options* options) {
-    if (options) { options->struct_size = (uint32_t)sizeof *options; (void)ca_proxy_options_defaults(options, (uint32_t)sizeof *options); }
-}
+CA_API ca_status ca_proxy_options_defaults(ca_proxy_options* options, uint32_t struct_size);
+CA_DEFINE_INIT_(ca_proxy_options)
 
 typedef struct ca_proxy_set ca_proxy_set;
-
-/* Proxies of `skeleton` (in the caller's units: ca_skeleton_get_view of ca_connect's result, or the
-   caller's own arrays) over the surface of `set`, which must come from a triangle mesh (a point
-   cloud or caller arrays: CA_ERROR_INVALID_ARGUMENT). */
+/* Proxies of `skeleton` (caller's units) over the surface of `set`, which must come from a triangle
+   mesh (else CA_ERROR_INVALID_ARGUMENT). */
 CA_API ca_status ca_proxies(ca_context* ctx, const ca_candidate_set* set, const ca_skeleton_view* skeleton,
                             const ca_proxy_options* options, ca_proxy_set** out);
 CA_API void ca_proxy_set_destroy(ca_proxy_set* proxies);
-
 CA_API size_t ca_proxy_set_count(const ca_proxy_set* proxies);
-CA_API const int32_t* ca_proxy_set_kinds(const ca_proxy_set* proxies);   /* CA_PROXY_SPHERE, CAPSULE or BOX per primitive */
-CA_API const double* ca_proxy_set_centers(const ca_proxy_set* proxies);  /* a then b, x y z each: 6 per primitive
-                                                                           (a sphere's b is its a; a box: its
-                                                                           centre twice) */
-CA_API const double* ca_proxy_set_radii(const ca_proxy_set* proxies);    /* radius of a, of b: 2 per primitive
-                                                                           (a box: 0 and 0) */
+CA_API const int32_t* ca_proxy_set_kinds(const ca_proxy_set* proxies);   /* CA_PROXY_SPHERE, CAPSULE or BOX */
+/* Per primitive, balls a and b: centres (6 doubles) and radii (2); a sphere's b is its a, a box has
+   its centre twice and radii 0. */
+CA_API const double* ca_proxy_set_centers(const ca_proxy_set* proxies);
+CA_API const double* ca_proxy_set_radii(const ca_proxy_set* proxies);
 
 typedef struct ca_proxy_stats {
-    uint32_t struct_size;        /* set by the caller: sizeof(ca_proxy_stats) */
-    double hd_surface_to_proxies;   /* as ca_evaluation measures a skeleton whose balls and edges are the */
-    double mean_surface_to_proxies; /* primitives: percent of the bbox diagonal */
+    uint32_t struct_size;        /* sizeof(ca_proxy_stats) */
+    double hd_surface_to_proxies;   /* as ca_evaluation, the primitives as balls and edges, % */
+    double mean_surface_to_proxies;
     double hd_proxies_to_surface;
     double mean_proxies_to_surface;
     double hd_two_sided;
     double outside_bound;        /* proven bound of how far any primitive reaches outside the shape, % */
-    double skeleton_outside;     /* how far the skeleton's balls and edges reach outside the shape at
-                                    least (measured at points of them), % (INSCRIBED: outside_bound
-                                    is at most this) */
+    double skeleton_outside;     /* how far the skeleton's balls and edges reach outside at least
+                                    (measured), % (INSCRIBED: outside_bound is at most this) */
     double union_volume;         /* Monte Carlo volume of the union of the primitives, caller's units^3 */
     double outside_volume;       /* of which outside the shape (winding-number inside test) */
     double radius_change;        /* CONSERVATIVE: the most a primitive grew; INSCRIBED: the most a
@@ -606,7 +491,6 @@ typedef struct ca_proxy_stats {
     uint64_t surface_cells;      /* small triangles the surface was cut into */
     double time_s;
 } ca_proxy_stats;
-
 CA_API ca_status ca_proxy_set_stats(const ca_proxy_set* proxies, ca_proxy_stats* stats);
 
 /* One primitive as an engine places it, in the caller's units: a node at `center` turned by the
@@ -620,7 +504,7 @@ CA_API ca_status ca_proxy_set_stats(const ca_proxy_set* proxies, ca_proxy_stats*
    ball, kind CA_PROXY_SPHERE. `axis` is the node's +Y axis in the caller's frame (a capsule: the
    unit vector from a to b). Unused fields are 0 (height of a sphere, half_extents of a capsule). */
 typedef struct ca_proxy_placement {
-    uint32_t struct_size;        /* set by the caller: sizeof(ca_proxy_placement) */
+    uint32_t struct_size;        /* sizeof(ca_proxy_placement) */
     int32_t kind;                /* CA_PROXY_SPHERE, CA_PROXY_CAPSULE or CA_PROXY_BOX */
     double center[3];            /* the node's translation */
     double rotation[4];          /* the node's rotation, x y z w, w >= 0 */
@@ -629,12 +513,93 @@ typedef struct ca_proxy_placement {
     double half_extents[3];
 } ca_proxy_placement;
 
-/* Fills `placement` for primitive `index` (< ca_proxy_set_count), up to its struct_size.
-   CA_ERROR_NULL_POINTER for a NULL set or placement, CA_ERROR_INVALID_ARGUMENT for an index out of
-   range, CA_ERROR_STRUCT_SIZE for a struct_size this library did not publish. */
+/* Fills `placement` for primitive `index` (< ca_proxy_set_count; else CA_ERROR_INVALID_ARGUMENT). */
 CA_API ca_status ca_proxy_set_placement(const ca_proxy_set* proxies, size_t index, ca_proxy_placement* placement);
+
+/* ---- Bone colliders (docs/bone_colliders.md) ----
+   One collider per joint (bone) of a skin: a tapered capsule or sphere fitted to the part of the
+   surface that joint dominates (the heaviest of the interpolated weights there), from the medial
+   balls of that part, placed in the joint's frame so it moves with the bone. */
+
+/* A skin: joints with a hierarchy and inverse bind matrices, and up to 8 joint weights per vertex
+   of the surface it deforms (glTF skins, assimp aiBone), in its bind pose (the vertices as given).
+   Where the surface repeats a vertex position, the first vertex's weights are used. */
+typedef struct ca_skin_view {
+    uint32_t struct_size;           /* sizeof(ca_skin_view) */
+    size_t joint_count;             /* >= 1 */
+    const int32_t* parents;         /* joint_count; -1 for a root; no cycles */
+    const double* inverse_bind;     /* joint_count * 16, column-major 4x4 (glTF): the surface's frame to
+                                       the joint's frame at bind time, a rotation (or reflection) with a
+                                       uniform scale and a translation; NULL = identity */
+    size_t vertex_count;            /* must equal the surface's vertex_count */
+    uint32_t influences;            /* joints per vertex, 1..8 */
+    const uint32_t* vertex_joints;  /* vertex_count * influences, each < joint_count */
+    const double* vertex_weights;   /* vertex_count * influences, finite, >= 0; normalised per vertex by
+                                       the library (all zero: the vertex drives no joint) */
+} ca_skin_view;
+CA_API ca_status ca_skin_view_defaults(ca_skin_view* view, uint32_t struct_size); /* all zero */
+CA_DEFINE_INIT_(ca_skin_view)
+
+typedef struct ca_bone_collider_options {
+    uint32_t struct_size;           /* sizeof(ca_bone_collider_options) */
+    int32_t mode;                   /* CA_PROXY_CONSERVATIVE (holds every point of its part) or
+                                       CA_PROXY_INSCRIBED (stays inside the shape); default CONSERVATIVE */
+    int32_t shapes;                 /* CA_PROXY_SHAPES_*: CAPSULES (a tapered capsule or sphere each) or
+                                       SPHERES; default CAPSULES */
+    double min_share;               /* a joint dominating less than this fraction of the surface's area
+                                       gets no collider; default 0.005 */
+    double min_size;                /* a collider whose larger radius is below this (percent of the
+                                       surface's bounding-box diagonal) is dropped; default 0.5 */
+    const uint32_t* skip_joints;    /* joints to give no collider (may be NULL when skip_count is 0) */
+    size_t skip_count;
+    uint32_t surface_samples;       /* samples of each part the fit uses; default 2000 */
+    uint32_t evaluate_samples;      /* fresh surface samples for the stats; default 100000 */
+    uint64_t seed;                  /* default 1 */
+} ca_bone_collider_options;
+CA_API ca_status ca_bone_collider_options_defaults(ca_bone_collider_options* options, uint32_t struct_size);
+CA_DEFINE_INIT_(ca_bone_collider_options)
+
+typedef struct ca_bone_colliders ca_bone_colliders;
+
+/* One collider per joint that dominates at least min_share of the surface (and is not skipped),
+   fitted to the inner balls of `set` (made by ca_candidates from the same triangle mesh; else
+   CA_ERROR_INVALID_ARGUMENT) whose nearest surface point lies in that joint's part, and expressed
+   in the joint's frame (inverse_bind applied). `skeleton` may be NULL (it is not used yet; when
+   given, its view is checked). Bad skins (NULL arrays, NaN/Inf, indices out of range, a
+   vertex_count that is not the surface's, influences 0 or > 8, cycles, an inverse bind with shear
+   or non-uniform scale): CA_ERROR_INVALID_INPUT and nothing returned. The result copies what it
+   needs: it outlives `set`. */
+CA_API ca_status ca_bone_colliders_build(ca_context* ctx, const ca_candidate_set* set,
+                                         const ca_skeleton_view* skeleton, const ca_skin_view* skin,
+                                         const ca_bone_collider_options* options, ca_bone_colliders** out);
+CA_API void ca_bone_colliders_destroy(ca_bone_colliders* colliders);
+CA_API size_t ca_bone_colliders_count(const ca_bone_colliders* colliders);
+CA_API const uint32_t* ca_bone_colliders_joints(const ca_bone_colliders* colliders); /* joint of each, ascending */
+/* Placement of collider `index` in ITS JOINT'S frame (ca_proxy_placement's conventions; kind
+   CA_PROXY_SPHERE or CA_PROXY_CAPSULE). */
+CA_API ca_status ca_bone_colliders_placement(const ca_bone_colliders* colliders, size_t index,
+                                             ca_proxy_placement* placement);
+
+typedef struct ca_bone_collider_stats {
+    uint32_t struct_size;           /* set by the caller: sizeof(ca_bone_collider_stats) */
+    double contained_fraction;      /* fresh surface samples held by their part's collider, over all
+                                       parts that have one (conservative: 1) */
+    double union_volume, outside_volume;  /* Monte Carlo: the colliders' union and its part outside the
+                                             shape, caller's units cubed (surface frame) */
+    double neighbour_overlap;       /* sum over colliders of the overlap volume with the parent's */
+    uint64_t joints_with_collider;
+    uint64_t joints_skipped;        /* joints that dominate some of the surface but got no collider */
+    double time_s;
+} ca_bone_collider_stats;
+CA_API ca_status ca_bone_colliders_stats(const ca_bone_colliders* colliders, ca_bone_collider_stats* stats);
+/* Per collider (count entries): the fraction of its part's fresh samples it holds (0..1), and the
+   volume of its overlap with its parent's collider (the nearest ancestor joint that has one; 0 for
+   none), caller's units cubed. */
+CA_API const double* ca_bone_colliders_contained(const ca_bone_colliders* colliders);
+CA_API const double* ca_bone_colliders_overlap(const ca_bone_colliders* colliders);
 
 #ifdef __cplusplus
 }
 #endif
+#undef CA_DEFINE_INIT_
 #endif /* COVERAGE_AXIS_H */

@@ -208,12 +208,45 @@ namespace CoverageAxis
             public fixed double half_extents[3];
         }
 
+        [StructLayout(LayoutKind.Sequential)]
+        public struct SkinView
+        {
+            public uint struct_size;
+            public UIntPtr joint_count;
+            public IntPtr parents, inverse_bind;
+            public UIntPtr vertex_count;
+            public uint influences;
+            public IntPtr vertex_joints, vertex_weights;
+        }
+
+        [StructLayout(LayoutKind.Sequential)]
+        public struct BoneColliderOptions
+        {
+            public uint struct_size;
+            public int mode, shapes;
+            public double min_share, min_size;
+            public IntPtr skip_joints;
+            public UIntPtr skip_count;
+            public uint surface_samples, evaluate_samples;
+            public ulong seed;
+        }
+
+        [StructLayout(LayoutKind.Sequential)]
+        public struct BoneColliderStats
+        {
+            public uint struct_size;
+            public double contained_fraction, union_volume, outside_volume, neighbour_overlap;
+            public ulong joints_with_collider, joints_skipped;
+            public double time_s;
+        }
+
         /// <summary>Every struct declared here, in header order (for the layout check).</summary>
         public static readonly Type[] Structs = {
             typeof(ContextDesc), typeof(SurfaceView), typeof(CandidateOptions), typeof(SelectOptions),
             typeof(SelectStats), typeof(ConnectOptions), typeof(SkeletonStats), typeof(SkeletonView),
             typeof(EvaluateOptions), typeof(Evaluation), typeof(CorrespondenceOptions), typeof(RigOptions),
             typeof(ProxyOptions), typeof(ProxyStats), typeof(ProxyPlacement),
+            typeof(SkinView), typeof(BoneColliderOptions), typeof(BoneColliderStats),
         };
 
         [DllImport(Lib)] public static extern uint ca_version();
@@ -306,6 +339,18 @@ namespace CoverageAxis
         [DllImport(Lib)] public static extern int ca_proxy_set_stats(ProxySetHandle p, ref ProxyStats stats);
         [DllImport(Lib)] public static extern int ca_proxy_set_placement(ProxySetHandle p, UIntPtr index, ref ProxyPlacement placement);
 
+        [DllImport(Lib)] public static extern int ca_skin_view_defaults(ref SkinView v, uint size);
+        [DllImport(Lib)] public static extern int ca_bone_collider_options_defaults(ref BoneColliderOptions o, uint size);
+        [DllImport(Lib)] public static extern int ca_bone_colliders_build(ContextHandle ctx, CandidateSetHandle set,
+            IntPtr skeleton, ref SkinView skin, ref BoneColliderOptions options, out BoneCollidersHandle colliders);
+        [DllImport(Lib)] public static extern void ca_bone_colliders_destroy(IntPtr colliders);
+        [DllImport(Lib)] public static extern UIntPtr ca_bone_colliders_count(BoneCollidersHandle c);
+        [DllImport(Lib)] public static extern IntPtr ca_bone_colliders_joints(BoneCollidersHandle c);
+        [DllImport(Lib)] public static extern IntPtr ca_bone_colliders_contained(BoneCollidersHandle c);
+        [DllImport(Lib)] public static extern IntPtr ca_bone_colliders_overlap(BoneCollidersHandle c);
+        [DllImport(Lib)] public static extern int ca_bone_colliders_stats(BoneCollidersHandle c, ref BoneColliderStats stats);
+        [DllImport(Lib)] public static extern int ca_bone_colliders_placement(BoneCollidersHandle c, UIntPtr index, ref ProxyPlacement placement);
+
         public static uint SizeOf<T>() { return (uint)Marshal.SizeOf(typeof(T)); }
 
         /// <summary>Throws unless the library knows this binding's layout of a struct.</summary>
@@ -357,6 +402,11 @@ namespace CoverageAxis
     public sealed class ProxySetHandle : OwnedHandle
     {
         protected override bool ReleaseHandle() { Native.ca_proxy_set_destroy(handle); return true; }
+    }
+
+    public sealed class BoneCollidersHandle : OwnedHandle
+    {
+        protected override bool ReleaseHandle() { Native.ca_bone_colliders_destroy(handle); return true; }
     }
 
     /// <summary>Pins managed arrays for the duration of one call.</summary>
@@ -558,6 +608,39 @@ namespace CoverageAxis
         public ulong Seed { get { return Raw.seed; } set { Raw.seed = value; } }
     }
 
+    /// <summary>A skin over the candidate set's mesh (its bind pose): per joint its parent (-1 for a
+    /// root) and optionally its inverse bind matrix (16 doubles, column-major); per vertex
+    /// Influences joints and weights. Lengths are checked before the call (Status.InvalidInput).</summary>
+    public sealed class Skin
+    {
+        public int[] Parents;
+        public double[] InverseBind;
+        public uint Influences;
+        public uint[] VertexJoints;
+        public double[] VertexWeights;
+    }
+
+    /// <summary>Options of Context.BoneColliders, starting from the library's defaults.</summary>
+    public sealed class BoneColliderOptions
+    {
+        internal Native.BoneColliderOptions Raw;
+        public BoneColliderOptions()
+        {
+            Native.CheckDefaults(Native.ca_bone_collider_options_defaults(ref Raw, Native.SizeOf<Native.BoneColliderOptions>()),
+                                 "ca_bone_collider_options");
+        }
+        /// <summary>Conservative (default): each holds its whole part; inscribed: each stays inside.</summary>
+        public ProxyMode Mode { get { return (ProxyMode)Raw.mode; } set { Raw.mode = (int)value; } }
+        public ProxyShapes Shapes { get { return (ProxyShapes)Raw.shapes; } set { Raw.shapes = (int)value; } }
+        public double MinShare { get { return Raw.min_share; } set { Raw.min_share = value; } }
+        public double MinSize { get { return Raw.min_size; } set { Raw.min_size = value; } }
+        /// <summary>Joints to give no collider.</summary>
+        public uint[] SkipJoints;
+        public uint SurfaceSamples { get { return Raw.surface_samples; } set { Raw.surface_samples = value; } }
+        public uint EvaluateSamples { get { return Raw.evaluate_samples; } set { Raw.evaluate_samples = value; } }
+        public ulong Seed { get { return Raw.seed; } set { Raw.seed = value; } }
+    }
+
     public sealed class ProgressEventArgs : EventArgs
     {
         public string Stage { get; internal set; }
@@ -751,6 +834,44 @@ namespace CoverageAxis
             GC.KeepAlive(skeleton);
             return done;
         }
+
+        /// <summary>A tapered capsule or sphere per joint of the skin, fitted to the part of the set's
+        /// mesh the joint dominates, in the joint's frame (docs/bone_colliders.md).</summary>
+        public BoneColliders BoneColliders(CandidateSet set, Skin skin, BoneColliderOptions options = null,
+                                           CancellationToken token = default(CancellationToken))
+        {
+            options = options ?? new BoneColliderOptions();
+            int k = (int)skin.Influences;
+            if (skin.Parents == null || skin.VertexJoints == null || skin.VertexWeights == null || k == 0 ||
+                skin.VertexJoints.Length % k != 0 || skin.VertexWeights.Length != skin.VertexJoints.Length ||
+                (skin.InverseBind != null && skin.InverseBind.Length != 16 * skin.Parents.Length))
+                throw new CoverageAxisException(Status.InvalidInput,
+                    "skin: Parents, VertexJoints and VertexWeights (Influences >= 1 per vertex) and 16 InverseBind values per joint");
+            var o = options.Raw;
+            var pins = new[] { Pinning.Pin(skin.Parents), Pinning.Pin(skin.InverseBind), Pinning.Pin(skin.VertexJoints),
+                               Pinning.Pin(skin.VertexWeights), Pinning.Pin(options.SkipJoints) };
+            try
+            {
+                var view = new Native.SkinView();
+                Native.CheckDefaults(Native.ca_skin_view_defaults(ref view, Native.SizeOf<Native.SkinView>()), "ca_skin_view");
+                view.joint_count = (UIntPtr)skin.Parents.Length;
+                view.parents = Pinning.Address(pins[0]);
+                view.inverse_bind = Pinning.Address(pins[1]);
+                view.vertex_count = (UIntPtr)(skin.VertexJoints.Length / k);
+                view.influences = skin.Influences;
+                view.vertex_joints = Pinning.Address(pins[2]);
+                view.vertex_weights = Pinning.Address(pins[3]);
+                o.skip_joints = Pinning.Address(pins[4]);
+                o.skip_count = (UIntPtr)(options.SkipJoints == null ? 0 : options.SkipJoints.Length);
+                BoneCollidersHandle h = null;
+                return Run(token, () => Native.ca_bone_colliders_build(handle, set.Handle, IntPtr.Zero, ref view, ref o, out h),
+                           () => new BoneColliders(h));
+            }
+            finally
+            {
+                Pinning.Free(pins);
+            }
+        }
     }
 
     /// <summary>Copies getter arrays out of the C objects.</summary>
@@ -915,6 +1036,71 @@ namespace CoverageAxis
             {
                 var s = new Native.ProxyStats { struct_size = Native.SizeOf<Native.ProxyStats>() };
                 Native.CheckDefaults(Native.ca_proxy_set_stats(Handle, ref s), "ca_proxy_stats");
+                return s;
+            }
+        }
+    }
+
+    /// <summary>One bone collider as an engine places it under its joint (the joint's frame): a node
+    /// at Center turned by Rotation (x y z w) holding a sphere of RadiusTop, or a capsule along its
+    /// +Y axis (Axis in the joint's frame), the ball of RadiusTop at +Height/2 and of RadiusBottom
+    /// at -Height/2.</summary>
+    public sealed class BoneCollider
+    {
+        public uint Joint;
+        public bool IsCapsule;
+        public double[] Center, Rotation, Axis;
+        public double RadiusTop, RadiusBottom, Height;
+    }
+
+    /// <summary>Bone colliders (Context.BoneColliders), each in its joint's frame; they hold nothing
+    /// of the other objects.</summary>
+    public sealed class BoneColliders : IDisposable
+    {
+        internal readonly BoneCollidersHandle Handle;
+        internal BoneColliders(BoneCollidersHandle h) { Handle = h; }
+        public void Dispose() { Handle.Dispose(); }
+        public int Count { get { return (int)Native.ca_bone_colliders_count(Handle); } }
+        /// <summary>The joint of each collider, ascending.</summary>
+        public uint[] Joints { get { return Copy.UInts(Native.ca_bone_colliders_joints(Handle), (ulong)Count); } }
+        /// <summary>Per collider: the fraction of its part's fresh samples it holds.</summary>
+        public double[] Contained { get { return Copy.Doubles(Native.ca_bone_colliders_contained(Handle), (ulong)Count); } }
+        /// <summary>Per collider: its overlap volume with its parent joint's collider.</summary>
+        public double[] Overlap { get { return Copy.Doubles(Native.ca_bone_colliders_overlap(Handle), (ulong)Count); } }
+        /// <summary>Collider i as an engine places it under its joint (ca_proxy_placement's conventions).</summary>
+        public Native.ProxyPlacement Placement(int i)
+        {
+            var p = new Native.ProxyPlacement { struct_size = Native.SizeOf<Native.ProxyPlacement>() };
+            int status = Native.ca_bone_colliders_placement(Handle, (UIntPtr)i, ref p);
+            if (status != 0) throw new CoverageAxisException((Status)status, "ca_bone_colliders_placement: index " + i);
+            return p;
+        }
+        /// <summary>Every collider's placement, with its joint.</summary>
+        public unsafe BoneCollider[] Colliders
+        {
+            get
+            {
+                var joints = Joints;
+                var all = new BoneCollider[joints.Length];
+                for (int i = 0; i < all.Length; ++i)
+                {
+                    var p = Placement(i);
+                    all[i] = new BoneCollider {
+                        Joint = joints[i], IsCapsule = p.kind == 1,
+                        Center = new[] { p.center[0], p.center[1], p.center[2] },
+                        Rotation = new[] { p.rotation[0], p.rotation[1], p.rotation[2], p.rotation[3] },
+                        Axis = new[] { p.axis[0], p.axis[1], p.axis[2] },
+                        RadiusTop = p.radius_top, RadiusBottom = p.radius_bottom, Height = p.height };
+                }
+                return all;
+            }
+        }
+        public Native.BoneColliderStats Stats
+        {
+            get
+            {
+                var s = new Native.BoneColliderStats { struct_size = Native.SizeOf<Native.BoneColliderStats>() };
+                Native.CheckDefaults(Native.ca_bone_colliders_stats(Handle, ref s), "ca_bone_collider_stats");
                 return s;
             }
         }

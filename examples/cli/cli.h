@@ -90,6 +90,8 @@ Failure library_failure(ca_context* ctx, ca_status st, const std::string& step);
 Failure file_failure(const std::string& message);
 // format_version, tool_version, library_version, abi_version, input: the start of every report.
 Json report_header(const std::string& input);
+// The report's "skin": {"joints": N, "influences": K} for a mesh read with a skin, else null.
+Json skin_json(const caio::MeshData& mesh);
 
 // The surface view of a file's mesh or cloud, and the report's name of the normals (surface_view.h).
 using caio::normals_name;

@@ -64,6 +64,7 @@ int evaluate_command(int argc, char** argv) {
     if (json) {
         Json j = report_header(input);
         j["dropped"] = mesh.dropped;
+        j["skin"] = skin_json(mesh);
         j["skeleton"] = skeleton_path;
         j["vertices"] = view.vertex_count;
         j["edges"] = view.edge_count;

@@ -4,9 +4,11 @@
 // executable (/proc/self/exe, by posix_spawn, which is safe while other batch threads run) with
 // the internal command `--internal-read PATH FORMAT SECONDS MIB`. The child lowers its own limits
 // first (no core file, CPU time, and once the input is loaded its address space), reads the input
-// with caio::read_mesh and writes one frame to its standard output: a header, then the mesh (and
-// the lines naming what the reader dropped) or the error message. Whatever the reader itself prints goes to the child's standard error, which
-// the parent keeps to quote in a crash's message. The parent waits at most the read's time limit
+// with caio::read_mesh and writes one frame to its standard output: a header, then the mesh (the
+// lines naming what the reader dropped, and the skin) or the error message. Whatever the reader
+// itself prints goes to the child's standard error, which the parent keeps to quote in a crash's
+// message. Every count in the header is checked against the input's size before memory is taken
+// for it, and the skin that arrives passes caio::skin_problem like any reader's. The parent waits at most the read's time limit
 // and stops the child past it; a signal, a non-zero exit or a malformed frame becomes an error.
 // Where the child cannot be started (no /proc, the executable gone) the read runs in this process.
 #include "cli.h"
@@ -43,7 +45,7 @@ namespace {
 
 // ---- the frame the child writes: a header, then the mesh's arrays or the error message ----
 
-constexpr char kMagic[8] = {'C', 'A', 'M', 'E', 'S', 'H', '0', '2'};
+constexpr char kMagic[8] = {'C', 'A', 'M', 'E', 'S', 'H', '0', '3'};
 
 struct FrameHeader {
     char magic[8];
@@ -52,6 +54,10 @@ struct FrameHeader {
     uint64_t vertices, triangles, normals;  // normals: 0 or `vertices`
     uint64_t message_bytes;
     uint64_t dropped_bytes;  // after the mesh: MeshData::dropped, one line each, '\n'-separated
+    // then the skin (SkinData): its joints (0: none), weights per vertex (0 without joints, else
+    // 1..8), glTF node indices (0 or `joints`) and the bytes of the joint names, which follow
+    // their lengths (one uint32 per joint)
+    uint64_t joints, influences, gltf_nodes, name_bytes;
 };
 
 // A longer message from the child is taken for a malformed frame.
@@ -148,6 +154,19 @@ public:
     }
     const std::string& message() const { return message_; }
     const std::string& problem() const { return problem_; }
+    // The joint names cut from their bytes by their lengths, once the frame is complete; false
+    // when the lengths do not add up to the bytes.
+    bool take_joint_names() {
+        uint64_t total = 0;
+        for (uint32_t n : name_lengths_) total += n;
+        if (total != names_.size()) return false;
+        size_t at = 0;
+        for (uint32_t n : name_lengths_) {
+            out_.skin.joint_names.push_back(names_.substr(at, n));
+            at += n;
+        }
+        return true;
+    }
 
 private:
     struct Part {
@@ -167,11 +186,25 @@ private:
         if (h.input_bytes > input_limit_ || h.vertices > h.input_bytes || h.triangles > h.input_bytes ||
             h.vertices > UINT32_MAX || (h.normals != 0 && h.normals != h.vertices) || h.dropped_bytes > kMaxDropped)
             return problem_ = "counts beyond the input's limits", false;
+        // every joint and every byte of its name comes from the input
+        if (h.joints > h.input_bytes || h.name_bytes > h.input_bytes || h.influences > caio::kMaxInfluences ||
+            (h.joints == 0) != (h.influences == 0) || (h.gltf_nodes != 0 && h.gltf_nodes != h.joints))
+            return problem_ = "skin counts beyond the input's limits", false;
         try {
             out_.positions.resize(size_t(3 * h.vertices));
             out_.triangles.resize(size_t(3 * h.triangles));
             out_.normals.resize(size_t(3 * h.normals));
             dropped_.resize(size_t(h.dropped_bytes));
+            caio::SkinData& s = out_.skin;
+            s.parents.resize(size_t(h.joints));
+            s.inverse_bind.resize(size_t(16 * h.joints));
+            s.joint_world.resize(size_t(16 * h.joints));
+            s.gltf_nodes.resize(size_t(h.gltf_nodes));
+            s.influences = uint32_t(h.influences);
+            s.vertex_joints.resize(size_t(h.vertices * h.influences));
+            s.vertex_weights.resize(size_t(h.vertices * h.influences));
+            name_lengths_.resize(size_t(h.joints));
+            names_.resize(size_t(h.name_bytes));
         } catch (const std::exception&) {  // bad_alloc, or length_error on a count past max_size
             return problem_ = "counts beyond this process's memory", false;
         }
@@ -179,6 +212,15 @@ private:
         add(out_.triangles);
         add(out_.normals);
         if (!dropped_.empty()) parts_.push_back({&dropped_[0], dropped_.size()});
+        caio::SkinData& s = out_.skin;
+        add(s.parents);
+        add(s.inverse_bind);
+        add(s.joint_world);
+        add(s.gltf_nodes);
+        add(s.vertex_joints);
+        add(s.vertex_weights);
+        add(name_lengths_);
+        if (!names_.empty()) parts_.push_back({&names_[0], names_.size()});
         return true;
     }
     template <class T>
@@ -191,7 +233,8 @@ private:
     FrameHeader header_{};
     std::vector<Part> parts_;
     size_t part_ = 0, done_ = 0;
-    std::string message_, problem_, dropped_;
+    std::string message_, problem_, dropped_, names_;
+    std::vector<uint32_t> name_lengths_;
 };
 
 // A pipe whose ends are close-on-exec (other batch threads' children must not inherit them) and
@@ -366,6 +409,9 @@ Read read_in_child(const std::string& path, const std::string& format, const Rea
     const size_t nv = out.positions.size() / 3;
     for (uint32_t i : out.triangles)
         if (i >= nv) return failed("the assimp reader's output was malformed (an index out of range)");
+    if (!frame.take_joint_names()) return failed("the assimp reader's output was malformed (joint names)");
+    const std::string skin = caio::skin_problem(out);
+    if (!skin.empty()) return failed("the assimp reader's output was malformed (" + skin + ")");
     out.dropped = frame.dropped();
     return Read::done;
 }
@@ -425,12 +471,29 @@ int read_child_command(int argc, char** argv) {
     for (const std::string& line : mesh.dropped) dropped += (dropped.empty() ? "" : "\n") + line;
     if (dropped.size() > kMaxDropped) dropped.resize(kMaxDropped);
     h.dropped_bytes = ok ? dropped.size() : 0;
+    const caio::SkinData& s = mesh.skin;
+    std::vector<uint32_t> name_lengths;
+    std::string names;
+    for (const std::string& n : s.joint_names) {
+        name_lengths.push_back(uint32_t(n.size()));
+        names += n;
+    }
+    if (ok) {
+        h.joints = s.joint_names.size();
+        h.influences = s.influences;
+        h.gltf_nodes = s.gltf_nodes.size();
+        h.name_bytes = names.size();
+    }
+    auto write_vector = [&](const auto& v) { return write_all(frame_fd, v.data(), v.size() * sizeof(v[0])); };
     const bool written =
         frame_fd >= 0 && write_all(frame_fd, &h, sizeof h) &&
         (ok ? write_all(frame_fd, mesh.positions.data(), mesh.positions.size() * sizeof(double)) &&
                   write_all(frame_fd, mesh.triangles.data(), mesh.triangles.size() * sizeof(uint32_t)) &&
                   write_all(frame_fd, mesh.normals.data(), mesh.normals.size() * sizeof(double)) &&
-                  write_all(frame_fd, dropped.data(), dropped.size())
+                  write_all(frame_fd, dropped.data(), dropped.size()) && write_vector(s.parents) &&
+                  write_vector(s.inverse_bind) && write_vector(s.joint_world) && write_vector(s.gltf_nodes) &&
+                  write_vector(s.vertex_joints) && write_vector(s.vertex_weights) && write_vector(name_lengths) &&
+                  write_all(frame_fd, names.data(), names.size())
             : write_all(frame_fd, error.data(), error.size()));
     // no destructors at exit: nothing of a reader that went wrong runs after the frame
     _exit(written ? 0 : 1);

@@ -49,6 +49,10 @@ void print_summary(const cli::Json& j, const cli::RunOptions& o) {
     auto u = [&](const char* k) { return j[k].get<unsigned long long>(); };
     std::printf("input       %s (%llu vertices, %llu triangles)\n", j["input"].get<std::string>().c_str(), u("input_vertices"),
                 u("input_triangles"));
+    const cli::Json& skin = j["skin"];
+    if (!skin.is_null())
+        std::printf("skin        %llu joints, %llu weights per vertex\n", skin["joints"].get<unsigned long long>(),
+                    skin["influences"].get<unsigned long long>());
     const cli::Json& dropped = j["dropped"];
     if (!dropped.empty()) {
         std::string parts;

@@ -59,6 +59,11 @@ Json report_header(const std::string& input) {
                 {"abi_version", ca_abi_version()}, {"input", input}};
 }
 
+Json skin_json(const caio::MeshData& mesh) {
+    if (mesh.skin.empty()) return nullptr;
+    return Json{{"joints", mesh.skin.joint_names.size()}, {"influences", mesh.skin.influences}};
+}
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -383,6 +388,7 @@ Json run_report(const std::string& input, const caio::MeshData& mesh, const Owne
     j["input_triangles"] = mesh.triangles.size() / 3;
     j["input_normals"] = mesh.triangles.empty() && !mesh.normals.empty();
     j["dropped"] = mesh.dropped;
+    j["skin"] = skin_json(mesh);
     j["normals"] = normals_name(owned.normals);
     j["flipped"] = owned.flipped;
     j["surface_samples"] = ca_candidate_set_sample_count(owned.set);

@@ -313,8 +313,7 @@ Json options_json(const RunOptions& o) {
 }
 
 std::string library_version() {
-    const uint32_t v = ca_version();
-    return std::to_string(v / 10000) + "." + std::to_string(v / 100 % 100) + "." + std::to_string(v % 100);
+    return ca_version_string();
 }
 
 std::string version_text() {

@@ -3,10 +3,11 @@
 // references (materials, textures, external geometry) are never read. Assimp imports the scene
 // with only its own structure validation; the scene then passes check_assimp_scene
 // (check_assimp_scene.cpp) before any post-processing step runs, because those steps trust the
-// importer's output and crash or abort on a malformed scene. Post-processing then triangulates,
-// merges identical vertices and applies the node transforms (pre-transformed vertices, in world
-// units); point and line primitives are dropped. The output obeys the same one-per-input-byte
-// limit as the other readers. Normals are not read (MeshData normals stay empty).
+// importer's output and crash or abort on a malformed scene. Post-processing then drops the
+// vertex attributes other than positions, triangulates and merges vertices at one position;
+// place_assimp_meshes.cpp places every node's meshes in world units, with the bones as the skin.
+// Point and line primitives are dropped. The output obeys the same one-per-input-byte limit as
+// the other readers. Normals are not read (MeshData normals stay empty).
 // Geometry first: assimp's validation refuses a whole scene for a fault in a part the readers
 // never use (an animation key past its animation's end, an empty object, a camera's clip planes).
 // When it refuses one, the file is imported again without validation, those parts are dropped
@@ -27,13 +28,11 @@
 
 #include <cctype>
 #include <cstring>
-#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "readers.h"
-#include "large_pages.h"
 
 namespace caio {
 namespace detail {
@@ -114,37 +113,20 @@ bool read_assimp(const std::string& name, const std::string& buf, const std::str
         if (!scene) return fail(error, name, 0, "assimp: " + printable(importer.GetErrorString(), kMessageChars) + after);
     }
     if (!check_assimp_scene(name, scene, buf.size(), error)) return false;
-    scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                                         aiProcess_PreTransformVertices | aiProcess_SortByPType);
+    // Normals, tangents, colours and texture coordinates are removed first (the readers use none
+    // of them), so the join merges every corner at one position and the surface comes out
+    // connected, not split at each crease or UV seam. No PreTransformVertices: it deletes the
+    // bones; place_assimp_meshes places the instances.
+    importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, aiComponent_NORMALS | aiComponent_TANGENTS_AND_BITANGENTS |
+                                                            aiComponent_COLORS | aiComponent_TEXCOORDS);
+    scene = importer.ApplyPostProcessing(aiProcess_RemoveComponent | aiProcess_Triangulate |
+                                         aiProcess_JoinIdenticalVertices | aiProcess_SortByPType);
     if (!scene)
         return fail(error, name, 0, "assimp post-processing: " + printable(importer.GetErrorString(), kMessageChars));
-    size_t nv = 0, nt = 0;
-    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-        nv += scene->mMeshes[m]->mNumVertices;
-        nt += scene->mMeshes[m]->mNumFaces;
-    }
-    if (!check_budget(name, buf.size(), nv, nt, error)) return false;
-    if (nv > std::numeric_limits<uint32_t>::max()) return fail(error, name, 0, "too many vertices");
-    ca::reserve_large(out.positions, 3 * nv);
-    ca::reserve_large(out.triangles, 3 * nt);
-    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-        const aiMesh* mesh = scene->mMeshes[m];
-        const uint32_t base = static_cast<uint32_t>(out.positions.size() / 3);
-        for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
-            const aiVector3D& p = mesh->mVertices[v];
-            out.positions.insert(out.positions.end(), {double(p.x), double(p.y), double(p.z)});
-        }
-        for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
-            const aiFace& face = mesh->mFaces[f];
-            if (face.mNumIndices != 3) continue;
-            for (unsigned k = 0; k < 3; ++k) {
-                if (face.mIndices[k] >= mesh->mNumVertices)
-                    return fail(error, name, 0, "assimp returned an index out of range");
-                out.triangles.push_back(base + face.mIndices[k]);
-            }
-        }
-    }
+    if (!place_assimp_meshes(name, *scene, buf.size(), out, error)) return false;
     if (out.triangles.empty()) return fail(error, name, 0, "no triangles");
+    const std::string skin = skin_problem(out);
+    if (!skin.empty()) return fail(error, name, 0, "skin: " + skin);
     out.dropped = std::move(dropped);
     return true;
 }

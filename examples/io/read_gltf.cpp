@@ -4,7 +4,8 @@
 // default scene; every parentless node when there are no scenes) is placed in world coordinates
 // by its node's transform (matrix or T*R*S, composed down the hierarchy); a mesh used by several
 // nodes appears once per node. POSITION must be float VEC3; indices unsigned byte, short or int.
-// Normals are not read (MeshData normals stay empty).
+// Normals are not read (MeshData normals stay empty). When drawn meshes are skinned, the skin is
+// read too and the meshes are placed in the skinned mesh's own space instead (see "skins" below).
 //
 // Assets come from outside, so before tinygltf sees the asset every buffer and image URI is
 // checked: data: URIs must not declare more bytes than the file holds; any other URI must be a
@@ -34,7 +35,6 @@ namespace detail {
 namespace {
 
 namespace fs = std::filesystem;
-using Mat4 = std::array<double, 16>;  // column-major, as glTF stores matrices
 
 // ---- URI checks ----
 
@@ -171,19 +171,6 @@ bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, in
 
 // ---- transforms ----
 
-Mat4 identity() { return {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; }
-
-Mat4 mul(const Mat4& a, const Mat4& b) {
-    Mat4 c{};
-    for (int col = 0; col < 4; ++col)
-        for (int row = 0; row < 4; ++row) {
-            double s = 0;
-            for (int k = 0; k < 4; ++k) s += a[k * 4 + row] * b[col * 4 + k];
-            c[col * 4 + row] = s;
-        }
-    return c;
-}
-
 // The node's local matrix: `matrix` if given, else T * R * S.
 Mat4 local_matrix(const tinygltf::Node& n) {
     if (n.matrix.size() == 16) {
@@ -191,7 +178,7 @@ Mat4 local_matrix(const tinygltf::Node& n) {
         for (int i = 0; i < 16; ++i) m[i] = n.matrix[i];
         return m;
     }
-    Mat4 t = identity(), r = identity(), s = identity();
+    Mat4 t = identity4(), r = identity4(), s = identity4();
     if (n.translation.size() == 3)
         for (int i = 0; i < 3; ++i) t[12 + i] = n.translation[i];
     if (n.rotation.size() == 4) {
@@ -203,7 +190,7 @@ Mat4 local_matrix(const tinygltf::Node& n) {
     }
     if (n.scale.size() == 3)
         for (int i = 0; i < 3; ++i) s[i * 5] = n.scale[i];
-    return mul(t, mul(r, s));
+    return mul4(t, mul4(r, s));
 }
 
 // ---- accessors ----
@@ -229,7 +216,7 @@ bool view_accessor(const std::string& name, const tinygltf::Model& m, int index,
     if (bv.buffer < 0 || static_cast<size_t>(bv.buffer) >= m.buffers.size())
         return fail(error, name, 0, where + ": buffer view without a buffer");
     const size_t buf_size = m.buffers[static_cast<size_t>(bv.buffer)].data.size();
-    const size_t elem = comp_size * static_cast<size_t>(type == TINYGLTF_TYPE_VEC3 ? 3 : 1);
+    const size_t elem = comp_size * static_cast<size_t>(tinygltf::GetNumComponentsInType(static_cast<uint32_t>(type)));
     const size_t stride = bv.byteStride ? bv.byteStride : elem;
     if (stride < elem) return fail(error, name, 0, where + ": byteStride smaller than an element");
     if (bv.byteOffset > buf_size || bv.byteLength > buf_size - bv.byteOffset)
@@ -330,13 +317,25 @@ std::vector<int> root_nodes(const tinygltf::Model& m) {
     return roots;
 }
 
-// Walks the node hierarchy from the roots, adding every triangle primitive in world space.
-bool add_scene(const std::string& name, const tinygltf::Model& m, size_t budget, MeshData& out, std::string& error) {
-    struct Item { int node; Mat4 parent; size_t depth; };
+// One visit of a node instance during the walk: its node, its world matrix, and the nearest joint
+// at or above it (an index into the scene's joints, -1 for none; see SceneSkin).
+struct Visit {
+    int node;
+    Mat4 world;
+    int32_t joint;
+};
+
+// Walks the node hierarchy from the roots depth first, in file order, calling `visit` for every
+// node instance (a node under several parents once per path). `joint_of_node` (may be empty)
+// maps a node to its joint index, -1 for none.
+template <class F>
+bool walk_scene(const std::string& name, const tinygltf::Model& m, size_t budget,
+                const std::vector<int32_t>& joint_of_node, std::string& error, F&& visit) {
+    struct Item { int node; Mat4 parent; size_t depth; int32_t joint; };
     std::vector<Item> stack;
     // Depth first, in file order: roots and children are pushed last to first.
     const std::vector<int> roots = root_nodes(m);
-    for (auto r = roots.rbegin(); r != roots.rend(); ++r) stack.push_back({*r, identity(), 0});
+    for (auto r = roots.rbegin(); r != roots.rend(); ++r) stack.push_back({*r, identity4(), 0, -1});
     size_t visits = 0;
     while (!stack.empty()) {
         const Item it = stack.back();
@@ -348,15 +347,327 @@ bool add_scene(const std::string& name, const tinygltf::Model& m, size_t budget,
         if (it.depth > m.nodes.size()) return fail(error, name, 0, "node hierarchy has a cycle");
         if (++visits > budget) return fail(error, name, 0, "more node instances than input bytes");
         const tinygltf::Node& n = m.nodes[static_cast<size_t>(it.node)];
-        const Mat4 world = mul(it.parent, local_matrix(n));
-        if (n.mesh >= 0) {
-            if (static_cast<size_t>(n.mesh) >= m.meshes.size())
-                return fail(error, name, 0, "mesh " + std::to_string(n.mesh) + " does not exist");
-            for (const auto& p : m.meshes[static_cast<size_t>(n.mesh)].primitives)
-                if (is_triangles(p.mode) && !add_primitive(name, m, p, world, budget, out, error)) return false;
-        }
-        for (auto c = n.children.rbegin(); c != n.children.rend(); ++c) stack.push_back({*c, world, it.depth + 1});
+        const Mat4 world = mul4(it.parent, local_matrix(n));
+        const int32_t joint = joint_of_node.empty() || joint_of_node[static_cast<size_t>(it.node)] < 0
+                                  ? it.joint : joint_of_node[static_cast<size_t>(it.node)];
+        if (!visit(Visit{it.node, world, joint})) return false;
+        for (auto c = n.children.rbegin(); c != n.children.rend(); ++c)
+            stack.push_back({*c, world, it.depth + 1, joint});
     }
+    return true;
+}
+
+// The node's mesh, checked; null when it has none.
+bool node_mesh(const std::string& name, const tinygltf::Model& m, const tinygltf::Node& n, const tinygltf::Mesh*& mesh,
+               std::string& error) {
+    mesh = nullptr;
+    if (n.mesh < 0) return true;
+    if (static_cast<size_t>(n.mesh) >= m.meshes.size())
+        return fail(error, name, 0, "mesh " + std::to_string(n.mesh) + " does not exist");
+    mesh = &m.meshes[static_cast<size_t>(n.mesh)];
+    return true;
+}
+
+// ---- skins ----
+// The skins of the drawn meshes become one SkinData. Its joints are the union of those skins'
+// joint nodes (first skin first); its frame is the first skin's mesh space, whose meshes keep
+// their positions as stored (the bind pose). The other meshes are brought into that frame through
+// the rest pose: M0 = world(j) * inverseBind(j) for the first skin's first joint j takes the frame
+// to world coordinates at rest, so an unskinned mesh is placed at M0^-1 * its node's world, and a
+// mesh of another skin at M0^-1 * its own skin's blend at rest. A joint only other skins name gets
+// inverse bind world(j)^-1 * M0 (the frame to the joint's frame at rest). An unskinned mesh under
+// a joint node follows that joint (weight 1; a prop in a hand); elsewhere it gets zero weights.
+
+struct SceneSkin {
+    std::vector<int> skins;                      // skins drawn, in order of first use
+    std::vector<std::vector<uint32_t>> joints;   // per drawn skin: its joints' indices in the union
+    std::vector<std::vector<Mat4>> inverse_bind; // per drawn skin: its own inverse bind matrices
+    std::vector<int32_t> joint_of_node;          // per node: its index in the union, -1 if not a joint
+    std::vector<int> node_parent;                // per node: the node listing it as a child, -1 if none
+    std::vector<int> joint_nodes;                // per joint of the union: its node
+    std::vector<Mat4> union_inverse_bind, joint_world;
+    Mat4 frame_to_world = identity4();           // M0: the first skin's mesh space -> world at rest
+    Mat4 to_frame = identity4();                 // M0^-1
+    // per output vertex, kMaxInfluences slots, filled while the primitives are added
+    std::vector<uint32_t> vertex_joints;
+    std::vector<double> vertex_weights;
+    bool second_set = false;                     // some primitive had JOINTS_1
+};
+
+// World matrices of the nodes at rest, from the parent links (every node, drawn or not: joints
+// need not be in the scene). A node listed as a child twice, or a cycle, is refused when a joint
+// depends on it; `need` lists the nodes whose matrices are wanted.
+bool joint_worlds(const std::string& name, const tinygltf::Model& m, const std::vector<int>& need,
+                  std::vector<int>& parent, std::vector<Mat4>& world, std::string& error) {
+    const size_t nn = m.nodes.size();
+    parent.assign(nn, -1);
+    std::vector<char> twice(nn, 0);
+    for (size_t i = 0; i < nn; ++i)
+        for (int c : m.nodes[i].children) {
+            if (c < 0 || static_cast<size_t>(c) >= nn)
+                return fail(error, name, 0, "node " + std::to_string(i) + ": child " + std::to_string(c) + " does not exist");
+            if (parent[static_cast<size_t>(c)] != -1) twice[static_cast<size_t>(c)] = 1;
+            parent[static_cast<size_t>(c)] = static_cast<int>(i);
+        }
+    world.assign(nn, identity4());
+    std::vector<char> done(nn, 0);
+    std::vector<int> chain;
+    for (int start : need) {
+        chain.clear();
+        for (int at = start; at != -1 && !done[static_cast<size_t>(at)]; at = parent[static_cast<size_t>(at)]) {
+            if (twice[static_cast<size_t>(at)])
+                return fail(error, name, 0, "skin: node " + std::to_string(at) + " above joint node " + std::to_string(start) +
+                                                " has more than one parent");
+            if (chain.size() > nn)
+                return fail(error, name, 0, "skin: the nodes above joint node " + std::to_string(start) + " form a cycle");
+            chain.push_back(at);
+        }
+        for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+            const size_t i = static_cast<size_t>(*it);
+            const int p = parent[i];
+            world[i] = p == -1 ? local_matrix(m.nodes[i]) : mul4(world[static_cast<size_t>(p)], local_matrix(m.nodes[i]));
+            done[i] = 1;
+        }
+    }
+    return true;
+}
+
+// Reads the used skins' joints and matrices into `sk` (the skins are those of drawn mesh nodes).
+bool gather_skins(const std::string& name, const tinygltf::Model& m, size_t budget, SceneSkin& sk, std::string& error) {
+    std::vector<char> used(m.skins.size(), 0);
+    const bool walked = walk_scene(name, m, budget, {}, error, [&](const Visit& v) {
+        const tinygltf::Node& n = m.nodes[static_cast<size_t>(v.node)];
+        const tinygltf::Mesh* mesh = nullptr;
+        if (!node_mesh(name, m, n, mesh, error)) return false;
+        if (!mesh || n.skin < 0) return true;
+        if (static_cast<size_t>(n.skin) >= m.skins.size())
+            return fail(error, name, 0, "node " + std::to_string(v.node) + ": skin " + std::to_string(n.skin) + " does not exist");
+        if (!used[static_cast<size_t>(n.skin)]) sk.skins.push_back(n.skin);
+        used[static_cast<size_t>(n.skin)] = 1;
+        return true;
+    });
+    if (!walked) return false;
+    if (sk.skins.empty()) return true;
+    sk.joint_of_node.assign(m.nodes.size(), -1);
+    std::vector<int> need;
+    for (int s : sk.skins) {
+        const tinygltf::Skin& skin = m.skins[static_cast<size_t>(s)];
+        const std::string where = "skin " + std::to_string(s);
+        if (skin.joints.empty()) return fail(error, name, 0, where + " has no joints");
+        std::vector<char> seen(m.nodes.size(), 0);
+        for (int j : skin.joints) {
+            if (j < 0 || static_cast<size_t>(j) >= m.nodes.size())
+                return fail(error, name, 0, where + ": joint node " + std::to_string(j) + " does not exist");
+            if (seen[static_cast<size_t>(j)]) return fail(error, name, 0, where + ": joint node " + std::to_string(j) + " listed twice");
+            seen[static_cast<size_t>(j)] = 1;
+            need.push_back(j);
+        }
+    }
+    std::vector<Mat4> world;
+    if (!joint_worlds(name, m, need, sk.node_parent, world, error)) return false;
+    for (size_t si = 0; si < sk.skins.size(); ++si) {
+        const tinygltf::Skin& skin = m.skins[static_cast<size_t>(sk.skins[si])];
+        const std::string where = "skin " + std::to_string(sk.skins[si]);
+        std::vector<Mat4> ibm(skin.joints.size(), identity4());
+        if (skin.inverseBindMatrices >= 0) {
+            if (static_cast<size_t>(skin.inverseBindMatrices) >= m.accessors.size() ||
+                m.accessors[static_cast<size_t>(skin.inverseBindMatrices)].componentType != TINYGLTF_COMPONENT_TYPE_FLOAT)
+                return fail(error, name, 0, where + ": inverseBindMatrices must be a float MAT4 accessor");
+            AccessorView av;
+            if (!view_accessor(name, m, skin.inverseBindMatrices, TINYGLTF_TYPE_MAT4, 4, "inverseBindMatrices", av, error))
+                return false;
+            if (av.count != skin.joints.size())
+                return fail(error, name, 0, where + ": " + std::to_string(av.count) + " inverse bind matrices for " +
+                                                std::to_string(skin.joints.size()) + " joints");
+            for (size_t j = 0; j < av.count; ++j) {
+                float f[16];
+                std::memcpy(f, av.data + j * av.stride, sizeof f);
+                for (int k = 0; k < 16; ++k) {
+                    if (!std::isfinite(f[k]))
+                        return fail(error, name, 0, where + ": inverse bind matrix " + std::to_string(j) + " holds NaN or infinity");
+                    ibm[j][static_cast<size_t>(k)] = f[k];
+                }
+            }
+        }
+        if (si == 0) {
+            sk.frame_to_world = mul4(world[static_cast<size_t>(skin.joints[0])], ibm[0]);
+            if (!invert4(sk.frame_to_world, sk.to_frame))
+                return fail(error, name, 0, where + ": joint 0's world matrix times its inverse bind matrix is singular");
+        }
+        std::vector<uint32_t> local;
+        for (size_t j = 0; j < skin.joints.size(); ++j) {
+            const size_t node = static_cast<size_t>(skin.joints[j]);
+            if (sk.joint_of_node[node] < 0) {
+                Mat4 inverse_bind = ibm[j];
+                if (si > 0) {
+                    Mat4 world_inverse;
+                    if (!invert4(world[node], world_inverse))
+                        return fail(error, name, 0, where + ": joint node " + std::to_string(node) + " has a singular world matrix");
+                    inverse_bind = mul4(world_inverse, sk.frame_to_world);
+                }
+                sk.joint_of_node[node] = static_cast<int32_t>(sk.joint_nodes.size());
+                sk.joint_nodes.push_back(static_cast<int>(node));
+                sk.union_inverse_bind.push_back(inverse_bind);
+                sk.joint_world.push_back(world[node]);
+            }
+            local.push_back(static_cast<uint32_t>(sk.joint_of_node[node]));
+        }
+        sk.joints.push_back(std::move(local));
+        sk.inverse_bind.push_back(std::move(ibm));
+    }
+    return true;
+}
+
+// Reads a skinned primitive's JOINTS_n/WEIGHTS_n (n = 0, and 1 when present) for its `nv`
+// vertices: kMaxInfluences slots per vertex, joints as indices into the skin's own joint list
+// (`skin_joints` of them), weights normalised per vertex.
+bool read_influences(const std::string& name, const tinygltf::Model& m, const tinygltf::Primitive& p, size_t nv,
+                     size_t skin_joints, std::vector<uint32_t>& joints, std::vector<double>& weights, bool& second_set,
+                     std::string& error) {
+    joints.assign(nv * kMaxInfluences, 0);
+    weights.assign(nv * kMaxInfluences, 0.0);
+    for (int set = 0; set < 2; ++set) {
+        const std::string jn = "JOINTS_" + std::to_string(set), wn = "WEIGHTS_" + std::to_string(set);
+        const auto ja = p.attributes.find(jn), wa = p.attributes.find(wn);
+        const bool has_j = ja != p.attributes.end(), has_w = wa != p.attributes.end();
+        if (set == 0 && (!has_j || !has_w)) return fail(error, name, 0, "skinned primitive without JOINTS_0 and WEIGHTS_0");
+        if (has_j != has_w) return fail(error, name, 0, "skinned primitive has " + (has_j ? jn : wn) + " without " + (has_j ? wn : jn));
+        if (!has_j) continue;
+        if (set == 1) second_set = true;
+        auto component = [&](int index) {
+            return index >= 0 && static_cast<size_t>(index) < m.accessors.size()
+                       ? m.accessors[static_cast<size_t>(index)].componentType : -1;
+        };
+        const int jt = component(ja->second), wt = component(wa->second);
+        const size_t js = jt == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ? 1 : jt == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2 : 0;
+        const size_t ws = wt == TINYGLTF_COMPONENT_TYPE_FLOAT ? 4 : wt == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ? 1
+                          : wt == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT ? 2 : 0;
+        if (js == 0) return fail(error, name, 0, jn + " must be an unsigned byte or short VEC4 accessor");
+        if (ws == 0) return fail(error, name, 0, wn + " must be a float or normalized unsigned byte or short VEC4 accessor");
+        AccessorView jv, wv;
+        if (!view_accessor(name, m, ja->second, TINYGLTF_TYPE_VEC4, js, jn.c_str(), jv, error)) return false;
+        if (!view_accessor(name, m, wa->second, TINYGLTF_TYPE_VEC4, ws, wn.c_str(), wv, error)) return false;
+        if (jv.count != nv || wv.count != nv)
+            return fail(error, name, 0, jn + " and " + wn + " have " + std::to_string(jv.count) + " and " + std::to_string(wv.count) +
+                                            " elements for " + std::to_string(nv) + " vertices");
+        for (size_t v = 0; v < nv; ++v)
+            for (size_t k = 0; k < 4; ++k) {
+                const unsigned char* je = jv.data + v * jv.stride + k * js;
+                const unsigned char* we = wv.data + v * wv.stride + k * ws;
+                uint32_t j = 0;
+                if (js == 1) j = je[0];
+                else { uint16_t u; std::memcpy(&u, je, 2); j = u; }
+                double w = 0;
+                if (ws == 4) { float f; std::memcpy(&f, we, 4); w = f; }
+                else if (ws == 1) w = we[0] / 255.0;
+                else { uint16_t u; std::memcpy(&u, we, 2); w = u / 65535.0; }
+                if (!std::isfinite(w) || w < 0)
+                    return fail(error, name, 0, wn + ": vertex " + std::to_string(v) + " has a weight that is negative, NaN or infinite");
+                if (j >= skin_joints)
+                    return fail(error, name, 0, jn + ": vertex " + std::to_string(v) + " names joint " + std::to_string(j) +
+                                                    ", out of range (the skin has " + std::to_string(skin_joints) + " joints)");
+                joints[v * kMaxInfluences + set * 4 + k] = j;
+                weights[v * kMaxInfluences + set * 4 + k] = w;
+            }
+    }
+    for (size_t v = 0; v < nv; ++v)
+        if (!normalise_row(&weights[v * kMaxInfluences], &joints[v * kMaxInfluences], kMaxInfluences))
+            return fail(error, name, 0, "vertex " + std::to_string(v) + ": weights do not sum to a finite number");
+    return true;
+}
+
+// Adds the instance's triangle primitives to `out`: placed in world coordinates when the scene has
+// no skin, else in the first skin's mesh space with their weights (see SceneSkin above).
+bool add_instance(const std::string& name, const tinygltf::Model& m, const Visit& v, size_t budget, SceneSkin* sk,
+                  MeshData& out, std::string& error) {
+    const tinygltf::Node& n = m.nodes[static_cast<size_t>(v.node)];
+    const tinygltf::Mesh* mesh = nullptr;
+    if (!node_mesh(name, m, n, mesh, error)) return false;
+    if (!mesh) return true;
+    size_t si = 0;  // the node's skin among the drawn ones
+    if (sk && n.skin >= 0)
+        while (sk->skins[si] != n.skin) ++si;  // gather_skins found every drawn skin
+    const bool skinned = sk && n.skin >= 0;
+    const Mat4 place = !sk ? v.world : !skinned ? mul4(sk->to_frame, v.world) : identity4();
+    for (const auto& p : mesh->primitives) {
+        if (!is_triangles(p.mode)) continue;
+        const size_t nv0 = out.positions.size() / 3;
+        if (!add_primitive(name, m, p, place, budget, out, error)) return false;
+        if (!sk) continue;
+        const size_t nv = out.positions.size() / 3 - nv0;
+        std::vector<uint32_t> joints;
+        std::vector<double> weights;
+        if (skinned) {
+            const std::vector<uint32_t>& local = sk->joints[si];
+            if (!read_influences(name, m, p, nv, local.size(), joints, weights, sk->second_set, error)) return false;
+            if (si > 0) {  // another skin: its blend at rest, into the first skin's mesh space
+                const std::vector<Mat4>& ibm = sk->inverse_bind[si];
+                for (size_t i = 0; i < nv; ++i) {
+                    Mat4 blend{};
+                    double* q = &out.positions[3 * (nv0 + i)];
+                    for (size_t k = 0; k < kMaxInfluences; ++k) {
+                        const double w = weights[i * kMaxInfluences + k];
+                        if (w == 0) continue;
+                        const uint32_t j = joints[i * kMaxInfluences + k];
+                        const Mat4 jm = mul4(sk->joint_world[local[j]], ibm[j]);
+                        for (size_t e = 0; e < 16; ++e) blend[e] += w * jm[e];
+                    }
+                    if (blend[15] == 0) continue;  // no weight: the vertex stays as stored
+                    const double stored[3] = {q[0], q[1], q[2]};
+                    double world[3];
+                    transform_point(blend, stored, world);
+                    transform_point(sk->to_frame, world, q);
+                }
+            }
+            for (size_t i = 0; i < joints.size(); ++i)
+                joints[i] = weights[i] == 0 ? 0 : local[joints[i]];
+        } else {
+            joints.assign(nv * kMaxInfluences, 0);
+            weights.assign(nv * kMaxInfluences, 0.0);
+            if (v.joint >= 0)  // under a joint node: the mesh follows that joint
+                for (size_t i = 0; i < nv; ++i) {
+                    joints[i * kMaxInfluences] = static_cast<uint32_t>(v.joint);
+                    weights[i * kMaxInfluences] = 1;
+                }
+        }
+        sk->vertex_joints.insert(sk->vertex_joints.end(), joints.begin(), joints.end());
+        sk->vertex_weights.insert(sk->vertex_weights.end(), weights.begin(), weights.end());
+    }
+    return true;
+}
+
+// Every triangle primitive of the scene (see the file comment), and the skin when drawn meshes
+// have one.
+bool add_scene(const std::string& name, const tinygltf::Model& m, size_t budget, MeshData& out, std::string& error) {
+    SceneSkin sk;
+    if (!gather_skins(name, m, budget, sk, error)) return false;
+    SceneSkin* skin = sk.skins.empty() ? nullptr : &sk;
+    const bool ok = walk_scene(name, m, budget, sk.joint_of_node, error,
+                               [&](const Visit& v) { return add_instance(name, m, v, budget, skin, out, error); });
+    if (!ok || !skin) return ok;
+    SkinData& s = out.skin;
+    const size_t nj = sk.joint_nodes.size();
+    s.influences = sk.second_set ? kMaxInfluences : 4;
+    for (size_t j = 0; j < nj; ++j) {
+        const int node = sk.joint_nodes[j];
+        const std::string& jname = m.nodes[static_cast<size_t>(node)].name;
+        s.joint_names.push_back(jname.empty() ? "node_" + std::to_string(node) : jname);
+        s.gltf_nodes.push_back(node);
+        s.inverse_bind.insert(s.inverse_bind.end(), sk.union_inverse_bind[j].begin(), sk.union_inverse_bind[j].end());
+        s.joint_world.insert(s.joint_world.end(), sk.joint_world[j].begin(), sk.joint_world[j].end());
+        // the joint's own hierarchy: its nearest ancestor node that is a joint (gather_skins
+        // checked that the nodes above every joint form a chain)
+        int32_t parent = -1;
+        for (int at = sk.node_parent[static_cast<size_t>(node)]; at != -1 && parent < 0; at = sk.node_parent[static_cast<size_t>(at)])
+            parent = sk.joint_of_node[static_cast<size_t>(at)];
+        s.parents.push_back(parent);
+    }
+    const size_t nv = out.positions.size() / 3;
+    for (size_t v = 0; v < nv; ++v)
+        for (size_t k = 0; k < s.influences; ++k) {
+            s.vertex_joints.push_back(sk.vertex_joints[v * kMaxInfluences + k]);
+            s.vertex_weights.push_back(sk.vertex_weights[v * kMaxInfluences + k]);
+        }
     return true;
 }
 
@@ -385,6 +696,8 @@ bool read_gltf(const std::string& name, const std::string& buf, bool binary, con
     // External buffers count towards the input size that bounds the output.
     if (!add_scene(name, model, buf.size() + jail.bytes_read, out, error)) return false;
     if (out.triangles.empty()) return fail(error, name, 0, "no triangle primitives in the scene");
+    const std::string skin = skin_problem(out);
+    if (!skin.empty()) return fail(error, name, 0, "skin: " + skin);
     return true;
 }
 

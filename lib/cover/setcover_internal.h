@@ -1,10 +1,11 @@
 // setcover_internal.h: what the set-cover files share; not part of the library's interface.
 // The compact problem (rows = samples x columns = balls, stored both ways) with its heuristics
 // and bounds (setcover_problem.cpp), the exact machinery (lagrangian.cpp: the Lagrangian bound;
-// lp_cbc.cpp: the LP, and CBC behind the process-wide mutex; row_generation.cpp), the local
+// lp.cpp: the LP; cbc.cpp: CBC behind the process-wide mutex; row_generation.cpp), the local
 // search (local_search.cpp),
-// and the reduction of the input and of compact problems (reduction.cpp; the solve driver
-// is setcover.cpp).
+// the reduction of the input and of compact problems (reduction.cpp), the input checks
+// (setcover_checks.cpp) and the exact solve of one component (component_solve.cpp); the solve
+// driver is setcover.cpp.
 #pragma once
 #include "setcover.h"
 #include "timing.h"
@@ -37,6 +38,10 @@ std::vector<uint32_t> capp_cover(const Problem& P, const std::vector<Vec3>& cent
                                  const std::vector<double>& radii, const std::vector<uint32_t>& preselected);
 // 0, 1, ..., R-1: every row of P.
 std::vector<uint32_t> all_rows(const Problem& P);
+// The columns of reduced cost below max_cost, and the per_row cheapest columns of each of `rows`
+// (ties to the lower index), as a mask over P's columns.
+std::vector<uint8_t> core_columns(const Problem& P, const std::vector<double>& cost, double max_cost, size_t per_row,
+                                  const std::vector<uint32_t>& rows);
 uint32_t disjoint_bound(const Problem& P);
 bool covers_problem(const Problem& P, const std::vector<uint32_t>& sel);
 std::vector<Problem> split_components(const Problem& P);
@@ -85,7 +90,7 @@ Lagrange lagrangian(const Problem& P, std::vector<uint32_t> incumbent, int max_i
 // ceil(bound) >= |best|; the reduced-cost greedy runs every 8 steps.
 Lagrange volume_ascent(const Problem& P, std::vector<uint32_t> incumbent, int max_iter, const Deadline& deadline);
 
-// ---- lp_cbc.cpp ----
+// ---- lp.cpp ----
 // The LP relaxation min 1'x, Ax >= 1, 0 <= x <= 1, solved by Clp's dual simplex (no lock: any
 // number of these run at once). Returns its row duals clamped to >= 0 (empty if Clp failed or ran out of time).
 // The LP optimum equals the best Lagrangian bound; the bound itself is then recomputed from these
@@ -116,6 +121,7 @@ std::vector<double> lp_duals_rows(const Problem& P, const std::vector<double>& u
 // node-limited CBC search for a one-ball gap on a small kernel.
 bool no_cover_within(const Problem& K, size_t size, int max_branches, const std::function<bool()>& stop = {});
 
+// ---- cbc.cpp ----
 struct CbcOutcome {
     bool ok = false;            // CBC ran and returned without error
     bool has_solution = false;  // a cover better than the cutoff, verified
@@ -256,6 +262,30 @@ Status reduce_coverage(const Coverage& cov, bool transpose_ok, const std::vector
 // Reduction of a compact problem to its kernel (every row required, every column allowed):
 // `forced` and the kernel's col_id / row_id are P-local.
 Status reduce_problem(const Problem& P, const Monitor& monitor, std::vector<uint32_t>& forced, Problem& kernel);
+
+// ---- setcover_checks.cpp ----
+// Shared front part: checks, masks, uncoverable samples.
+struct Prepared {
+    std::vector<uint8_t> required, allowed, locked;
+    bool transpose_ok = false;  // cov's sample -> ball lists can be used as they are
+    std::vector<uint32_t> uncovered;
+    size_t rows_before = 0, cols_before = 0;
+};
+Status prepare(const Coverage& cov, const CoverOptions& opt, bool skip_uncoverable, Prepared& pr);
+
+// ---- component_solve.cpp ----
+// Exact solve of one connected component: greedy -> Lagrangian bound and heuristic ->
+// reduced-cost fixing (drop every column that no cover smaller than the incumbent can use) ->
+// reduction of what is left -> CBC on that, with the incumbent as cutoff.
+struct ComponentResult {
+    std::vector<uint32_t> sel;  // P-local columns, ascending
+    double lb = 0;
+    bool proven = false;
+    bool used_cbc = false;
+    size_t rowgen_rounds = 0;
+};
+ComponentResult solve_component(const Problem& P, const Deadline& deadline, int threads,
+                                bool row_gen, Effort effort, int search_threads, const Monitor& monitor);
 
 }  // namespace sc
 }  // namespace ca

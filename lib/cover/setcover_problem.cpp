@@ -278,5 +278,22 @@ void add_spread_rows(const Problem& K, std::vector<uint32_t> cand, size_t cap, s
     std::sort(rows.begin(), rows.end());
 }
 
+// The columns of reduced cost below max_cost, and the per_row cheapest columns of each of `rows`
+// (ties to the lower index), as a mask over P's columns.
+std::vector<uint8_t> core_columns(const Problem& P, const std::vector<double>& cost, double max_cost, size_t per_row,
+                                  const std::vector<uint32_t>& rows) {
+    std::vector<uint8_t> in_core(P.C, 0);
+    for (uint32_t c = 0; c < P.C; ++c) in_core[c] = cost[c] < max_cost;
+    std::vector<uint32_t> cheapest;
+    for (uint32_t r : rows) {
+        cheapest.assign(P.rcol.begin() + P.rptr[r], P.rcol.begin() + P.rptr[r + 1]);
+        const size_t k = std::min(per_row, cheapest.size());
+        std::partial_sort(cheapest.begin(), cheapest.begin() + k, cheapest.end(),
+                          [&](uint32_t a, uint32_t b) { return cost[a] != cost[b] ? cost[a] < cost[b] : a < b; });
+        for (size_t i = 0; i < k; ++i) in_core[cheapest[i]] = 1;
+    }
+    return in_core;
+}
+
 }  // namespace sc
 }  // namespace ca

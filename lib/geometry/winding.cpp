@@ -96,6 +96,169 @@ double farthest_corner(const std::vector<detail::BvhNode>& nodes, const std::vec
     return r2;
 }
 
+// A node's area sums and its expansion about its centre, returned to its parent (the radius is
+// unused there).
+struct Sums {
+    double weight = 0;               // total area
+    Vec3 weighted = Vec3::Zero();    // area-weighted centroid sum
+    Expansion expansion;
+};
+
+// The far field of every node of a tree, bottom-up: a leaf sums its triangles' moments about its
+// centre, a parent shifts its children's moments to its own centre, so the build is O(F) apart
+// from the radius (the farthest corner from the centre, over the node's triangles: farthest_corner
+// prunes that walk by the node boxes). A node's moments are returned to its parent through the
+// recursion (its depth is the tree's, about log2(F / 8)), so only the queries' far fields are
+// stored. With threads > 1 the subtrees below the top levels are done at once.
+class FarFieldBuilder {
+public:
+    FarFieldBuilder(const detail::TriangleTree& tree, double beta, std::vector<detail::FarField>& out,
+                    const std::function<bool()>& stop)
+        : nodes_(tree.bvh.nodes), tris_(tree.tris), beta_(beta), out_(out), stop_(stop) {}
+
+    // false when stopped
+    bool run(int threads) {
+        if (threads > 1 && !nodes_[0].leaf()) expand_parallel(threads);
+        else expand(0);
+        return !halted_.load(std::memory_order_relaxed);
+    }
+
+private:
+    // the node's radius and far field from its expansion about its centre
+    void finish(uint32_t n, Expansion& e, Sums& out) {
+        e.radius = std::sqrt(farthest_corner(nodes_, tris_, n, e.centre));
+        out.expansion = e;
+        out_[n] = detail::FarField(e, beta_);
+    }
+
+    Vec3 centre(uint32_t n, const Sums& s) const {
+        const detail::BvhNode& node = nodes_[n];
+        return s.weight > 0 ? Vec3(s.weighted / s.weight) : Vec3(0.5 * (node.lo + node.hi));
+    }
+
+    Sums leaf(uint32_t n) {
+        const detail::BvhNode& node = nodes_[n];
+        Sums out;
+        for (uint32_t i = node.begin; i < node.end; ++i) {
+            const auto& v = tris_[i];
+            const Vec3 a = 0.5 * (v[1] - v[0]).cross(v[2] - v[0]);
+            const Vec3 c = (v[0] + v[1] + v[2]) / 3.0;
+            out.weight += a.norm();
+            out.weighted += a.norm() * c;
+        }
+        Expansion e;
+        e.centre = centre(n, out);
+        for (uint32_t i = node.begin; i < node.end; ++i) {
+            const auto& v = tris_[i];
+            const Vec3 a = 0.5 * (v[1] - v[0]).cross(v[2] - v[0]);
+            const Vec3 c = (v[0] + v[1] + v[2]) / 3.0;
+            Eigen::Matrix3d S = Eigen::Matrix3d::Zero();   // E[(x - centre)(x - centre)^T] over the triangle
+            for (const Vec3& p : v) S += (p - c) * (p - c).transpose();
+            const Vec3 d = c - e.centre;
+            S = S / 12.0 + d * d.transpose();
+            e.N += a;
+            e.M += a * d.transpose();
+            for (int k = 0; k < 3; ++k) e.Q[k] += a[k] * S;
+        }
+        finish(n, e, out);
+        return out;
+    }
+
+    Sums parent(uint32_t n, const Sums& left, const Sums& right) {
+        Sums out;
+        out.weight = left.weight + right.weight;
+        out.weighted = left.weighted + right.weighted;
+        Expansion e;
+        e.centre = centre(n, out);
+        for (const Sums* child : {&left, &right}) {
+            const Expansion& ch = child->expansion;
+            const Vec3 s = ch.centre - e.centre;   // d about the parent = d about the child + s
+            e.N += ch.N;
+            e.M += ch.M + ch.N * s.transpose();
+            for (int k = 0; k < 3; ++k) {
+                const Vec3 row = ch.M.row(k).transpose();
+                e.Q[k] += ch.Q[k] + row * s.transpose() + s * row.transpose() + ch.N[k] * (s * s.transpose());
+            }
+        }
+        finish(n, e, out);
+        return out;
+    }
+
+    Sums expand(uint32_t n) {
+        // a node's radius pass reads all its triangles: near the root a test every node, below
+        // every kStopCheckItems nodes (the recursion visits the ids in order: parents first)
+        if (halted_.load(std::memory_order_relaxed)) return Sums{};
+        const detail::BvhNode& node = nodes_[n];
+        if (stop_ && (n % detail::kStopCheckItems == 0 || node.end - node.begin > detail::kStopCheckItems) &&
+            stop_()) {
+            halted_.store(true, std::memory_order_relaxed);
+            return Sums{};
+        }
+        if (node.leaf()) return leaf(n);
+        const Sums left = expand(node.left), right = expand(node.right);
+        if (halted_.load(std::memory_order_relaxed)) return Sums{};
+        return parent(n, left, right);
+    }
+
+    // The roots of the subtrees below the top `levels` levels, in preorder.
+    void collect(uint32_t n, int depth, int levels, std::vector<uint32_t>& below) const {
+        const detail::BvhNode& node = nodes_[n];
+        if (depth < levels && !node.leaf()) {
+            collect(node.left, depth + 1, levels, below);
+            collect(node.right, depth + 1, levels, below);
+        } else {
+            below.push_back(n);
+        }
+    }
+
+    // The top nodes from the subtrees' sums (taken in preorder from `at`), each from its
+    // children's sums by the same expressions as on one thread.
+    Sums combine(uint32_t n, int depth, int levels, const std::vector<Sums>& sums, size_t& at) {
+        const detail::BvhNode& node = nodes_[n];
+        if (depth < levels && !node.leaf()) {
+            const Sums left = combine(node.left, depth + 1, levels, sums, at);
+            const Sums right = combine(node.right, depth + 1, levels, sums, at);
+            return parent(n, left, right);
+        }
+        return sums[at++];
+    }
+
+    // The subtrees below the top levels (as many as threads, like the tree's build) expanded at
+    // once, then the top nodes combined here.
+    void expand_parallel(int threads) {
+        const int levels = detail::parallel_top_levels(threads);
+        std::vector<uint32_t> below;
+        collect(0, 0, levels, below);
+        std::vector<Sums> sums(below.size());
+        const size_t workers = std::min(below.size(), size_t(threads));
+        run_workers(workers, [&](size_t w) {
+            for (size_t i = w; i < below.size(); i += workers) sums[i] = expand(below[i]);
+        });
+        size_t at = 0;
+        if (!halted_.load(std::memory_order_relaxed)) combine(0, 0, levels, sums, at);
+    }
+
+    const std::vector<detail::BvhNode>& nodes_;
+    const std::vector<std::array<Vec3, 3>>& tris_;
+    const double beta_;
+    std::vector<detail::FarField>& out_;
+    const std::function<bool()>& stop_;
+    std::atomic<bool> halted_{false};
+};
+
+// `count` zero far fields, reserved (address space only) and then filled kStopCheckItems at a
+// time with a stop test before each chunk: filling them touches every page, which a stop request
+// should not have to wait for (nor free afterwards). false when stopped.
+bool zero_far_fields(std::vector<detail::FarField>& exp, size_t count, const std::function<bool()>& stop) {
+    reserve_large(exp, count);
+    for (size_t filled = 0; filled < count;) {
+        if (stop && stop()) return false;
+        filled = std::min<size_t>(count, filled + detail::kStopCheckItems);
+        exp.resize(filled);
+    }
+    return true;
+}
+
 }  // namespace
 
 struct WindingNumber::Impl {
@@ -114,138 +277,10 @@ WindingNumber::WindingNumber(std::shared_ptr<const detail::TriangleTree> tree, d
     : impl_(std::make_unique<Impl>(std::move(tree))) {
     Impl& m = *impl_;
     m.beta = (beta >= 0 && std::isfinite(beta)) ? beta : 2.0;
-    // Bottom-up: a leaf sums its triangles' moments about its centre, a parent shifts its
-    // children's moments to its own centre, so the build is O(F) apart from the radius (the
-    // farthest corner from the centre, over the node's triangles: farthest_corner prunes that walk
-    // by the node boxes). A node's moments are returned to its parent through the recursion
-    // (its depth is the tree's, about log2(F / 8)), so only the queries' far fields are stored.
-    // With threads > 1 the subtrees below the top levels are done at once.
     const size_t count = m.bvh.nodes.size();
     if (count == 0) return;
-    // The far fields are reserved (address space only) and then zero-filled kStopCheckItems
-    // nodes at a time with a stop test before each chunk: filling them touches every page, which
-    // a stop request should not have to wait for (nor free afterwards).
-    reserve_large(m.exp, count);
-    for (size_t filled = 0; filled < count;) {
-        if (stop && stop()) {
-            impl_.reset();
-            return;
-        }
-        filled = std::min<size_t>(count, filled + detail::kStopCheckItems);
-        m.exp.resize(filled);
-    }
-    struct Sums {
-        double weight = 0;               // total area
-        Vec3 weighted = Vec3::Zero();    // area-weighted centroid sum
-        Expansion expansion;             // about the node's centre (its radius unused by the parent)
-    };
-    std::atomic<bool> halted{false};
-    // the node's radius and far field from its expansion about its centre
-    auto finish = [&](uint32_t n, Expansion& e, Sums& out) {
-        e.radius = std::sqrt(farthest_corner(m.bvh.nodes, m.tris, n, e.centre));
-        out.expansion = e;
-        m.exp[n] = detail::FarField(e, m.beta);
-    };
-    auto leaf = [&](uint32_t n) {
-        const detail::BvhNode& node = m.bvh.nodes[n];
-        Sums out;
-        for (uint32_t i = node.begin; i < node.end; ++i) {
-            const auto& v = m.tris[i];
-            const Vec3 a = 0.5 * (v[1] - v[0]).cross(v[2] - v[0]);
-            const Vec3 c = (v[0] + v[1] + v[2]) / 3.0;
-            out.weight += a.norm();
-            out.weighted += a.norm() * c;
-        }
-        Expansion e;
-        e.centre = out.weight > 0 ? Vec3(out.weighted / out.weight) : Vec3(0.5 * (node.lo + node.hi));
-        for (uint32_t i = node.begin; i < node.end; ++i) {
-            const auto& v = m.tris[i];
-            const Vec3 a = 0.5 * (v[1] - v[0]).cross(v[2] - v[0]);
-            const Vec3 c = (v[0] + v[1] + v[2]) / 3.0;
-            Eigen::Matrix3d S = Eigen::Matrix3d::Zero();   // E[(x - centre)(x - centre)^T] over the triangle
-            for (const Vec3& p : v) S += (p - c) * (p - c).transpose();
-            const Vec3 d = c - e.centre;
-            S = S / 12.0 + d * d.transpose();
-            e.N += a;
-            e.M += a * d.transpose();
-            for (int k = 0; k < 3; ++k) e.Q[k] += a[k] * S;
-        }
-        finish(n, e, out);
-        return out;
-    };
-    auto parent = [&](uint32_t n, const Sums& left, const Sums& right) {
-        const detail::BvhNode& node = m.bvh.nodes[n];
-        Sums out;
-        out.weight = left.weight + right.weight;
-        out.weighted = left.weighted + right.weighted;
-        Expansion e;
-        e.centre = out.weight > 0 ? Vec3(out.weighted / out.weight) : Vec3(0.5 * (node.lo + node.hi));
-        for (const Sums* child : {&left, &right}) {
-            const Expansion& ch = child->expansion;
-            const Vec3 s = ch.centre - e.centre;   // d about the parent = d about the child + s
-            e.N += ch.N;
-            e.M += ch.M + ch.N * s.transpose();
-            for (int k = 0; k < 3; ++k) {
-                const Vec3 row = ch.M.row(k).transpose();
-                e.Q[k] += ch.Q[k] + row * s.transpose() + s * row.transpose() + ch.N[k] * (s * s.transpose());
-            }
-        }
-        finish(n, e, out);
-        return out;
-    };
-    auto expand = [&](auto&& self, uint32_t n) -> Sums {
-        // a node's radius pass reads all its triangles: near the root a test every node, below
-        // every kStopCheckItems nodes (the recursion visits the ids in order: parents first)
-        if (halted.load(std::memory_order_relaxed)) return Sums{};
-        const detail::BvhNode& node = m.bvh.nodes[n];
-        if (stop && (n % detail::kStopCheckItems == 0 || node.end - node.begin > detail::kStopCheckItems) &&
-            stop()) {
-            halted.store(true, std::memory_order_relaxed);
-            return Sums{};
-        }
-        if (node.leaf()) return leaf(n);
-        const Sums left = self(self, node.left), right = self(self, node.right);
-        if (halted.load(std::memory_order_relaxed)) return Sums{};
-        return parent(n, left, right);
-    };
-    const detail::BvhNode& root = m.bvh.nodes[0];
-    if (threads > 1 && !root.leaf()) {
-        // The subtrees below the top levels (as many as threads, like the tree's build) are
-        // expanded at once; the top nodes are then combined here, each from its children's sums
-        // by the same expressions as on one thread.
-        int levels = 0;
-        while ((1 << levels) < threads && levels < detail::kMaxParallelLevels) ++levels;
-        std::vector<uint32_t> below;   // the subtrees' roots, in preorder
-        auto collect = [&](auto&& self, uint32_t n, int depth) -> void {
-            const detail::BvhNode& node = m.bvh.nodes[n];
-            if (depth < levels && !node.leaf()) {
-                self(self, node.left, depth + 1);
-                self(self, node.right, depth + 1);
-            } else {
-                below.push_back(n);
-            }
-        };
-        collect(collect, 0, 0);
-        std::vector<Sums> sums(below.size());
-        const size_t workers = std::min(below.size(), size_t(threads));
-        run_workers(workers, [&](size_t w) {
-            for (size_t i = w; i < below.size(); i += workers) sums[i] = expand(expand, below[i]);
-        });
-        size_t at = 0;
-        auto combine = [&](auto&& self, uint32_t n, int depth) -> Sums {
-            const detail::BvhNode& node = m.bvh.nodes[n];
-            if (depth < levels && !node.leaf()) {
-                const Sums left = self(self, node.left, depth + 1);
-                const Sums right = self(self, node.right, depth + 1);
-                return parent(n, left, right);
-            }
-            return sums[at++];
-        };
-        if (!halted.load(std::memory_order_relaxed)) combine(combine, 0, 0);
-    } else {
-        expand(expand, 0);
-    }
-    if (halted.load(std::memory_order_relaxed)) impl_.reset();
+    if (!zero_far_fields(m.exp, count, stop) || !FarFieldBuilder(*m.tree, m.beta, m.exp, stop).run(threads))
+        impl_.reset();   // a stopped build answers 0 everywhere
 }
 
 WindingNumber::~WindingNumber() = default;

@@ -199,6 +199,12 @@ struct HugChoice {
 Status hug_choice(const Mesh& mesh, const ShapeQueries& shape, const Skeleton& skeleton, const std::vector<Vec3>& points,
                   const ProxyOptions& opt, int threads, const Monitor& monitor, HugChoice& out);
 
+// Monte Carlo volumes (proxy_stats.cpp): `samples` seeded uniform points in the primitives' bounding
+// box; the volume of their union, and of its part outside the shape (winding-number inside test).
+// False when `monitor` said stop (progress reported as `stage`).
+bool union_volumes(const std::vector<Proxy>& proxies, const ShapeQueries& shape, size_t samples, uint64_t seed,
+                   int threads, const Monitor& monitor, const char* stage, double& union_volume,
+                   double& outside_volume);
 // The stats (proxy_stats.cpp) of `proxies` against the mesh.
 Status proxy_stats(const Mesh& mesh, const std::vector<Proxy>& proxies, const ShapeQueries& shape,
                    const ProxyOptions& opt, const Monitor& monitor, ProxyStats& out);

@@ -127,6 +127,47 @@ Status union_hausdorff(const Mesh& mesh, const std::vector<Proxy>& proxies, cons
 
 }  // namespace
 
+bool union_volumes(const std::vector<Proxy>& proxies, const ShapeQueries& shape, size_t samples, uint64_t seed,
+                   int threads, const Monitor& monitor, const char* stage, double& union_volume,
+                   double& outside_volume) {
+    union_volume = outside_volume = 0;
+    if (proxies.empty() || samples == 0) return true;
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    for (const Proxy& p : proxies) {
+        const auto box = proxy_box(p);
+        lo = lo.cwiseMin(box.first);
+        hi = hi.cwiseMax(box.second);
+    }
+    const size_t n = samples;
+    std::vector<Vec3> points(n);
+    Rng rng(seed);
+    for (Vec3& x : points)
+        for (int k = 0; k < 3; ++k) x[k] = lo[k] + (hi[k] - lo[k]) * rng.uniform();
+    std::vector<uint8_t> where(n, 0);   // 1: in the union, inside the shape; 2: in the union, outside
+    if (!parallel_for(n, threads, 4096, monitor, stage, [&](size_t b, size_t e) {
+            for (size_t i = b; i < e; ++i) {
+                bool in = false;
+                for (const Proxy& p : proxies)
+                    if (proxy_distance(p, points[i]) <= 0) {
+                        in = true;
+                        break;
+                    }
+                if (in) where[i] = shape.winding->inside(points[i]) ? 1 : 2;
+            }
+        }))
+        return false;
+    size_t in_union = 0, outside = 0;
+    for (uint8_t w : where) {
+        in_union += w != 0;
+        outside += w == 2;
+    }
+    const Vec3 extent = hi - lo;
+    const double box = extent.x() * extent.y() * extent.z();
+    union_volume = box * double(in_union) / double(n);
+    outside_volume = box * double(outside) / double(n);
+    return true;
+}
+
 Status proxy_stats(const Mesh& mesh, const std::vector<Proxy>& proxies, const ShapeQueries& shape,
                    const ProxyOptions& opt, const Monitor& monitor, ProxyStats& out) {
     out = ProxyStats{};
@@ -163,39 +204,9 @@ Status proxy_stats(const Mesh& mesh, const std::vector<Proxy>& proxies, const Sh
     out.outside_bound *= 100 / out.diagonal;
 
     // ---- Monte Carlo volumes ----
-    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-    for (const Proxy& p : proxies) {
-        const auto box = proxy_box(p);
-        lo = lo.cwiseMin(box.first);
-        hi = hi.cwiseMax(box.second);
-    }
-    const size_t n = opt.volume_samples;
-    std::vector<Vec3> points(n);
-    Rng rng(opt.seed ^ 0x3C6EF372FE94F82Bull);
-    for (Vec3& x : points)
-        for (int k = 0; k < 3; ++k) x[k] = lo[k] + (hi[k] - lo[k]) * rng.uniform();
-    std::vector<uint8_t> where(n, 0);   // 1: in the union, inside the shape; 2: in the union, outside
-    if (!parallel_for(n, resolve_threads(opt.threads), 4096, monitor, "proxies", [&](size_t b, size_t e) {
-            for (size_t i = b; i < e; ++i) {
-                bool in = false;
-                for (const Proxy& p : proxies)
-                    if (proxy_distance(p, points[i]) <= 0) {
-                        in = true;
-                        break;
-                    }
-                if (in) where[i] = shape.winding->inside(points[i]) ? 1 : 2;
-            }
-        }))
+    if (!union_volumes(proxies, shape, opt.volume_samples, opt.seed ^ 0x3C6EF372FE94F82Bull, resolve_threads(opt.threads),
+                       monitor, "proxies", out.union_volume, out.outside_volume))
         return monitor.stop_status("proxies");
-    size_t in_union = 0, outside = 0;
-    for (uint8_t w : where) {
-        in_union += w != 0;
-        outside += w == 2;
-    }
-    const Vec3 extent = hi - lo;
-    const double box = extent.x() * extent.y() * extent.z();
-    out.union_volume = box * double(in_union) / double(n);
-    out.outside_volume = box * double(outside) / double(n);
     return Status::success();
 }
 

@@ -5,6 +5,7 @@
 // (Monitor::note). The defaults are those of the option structs; the C ABI's ca_*_defaults are
 // converted from them, so they are stated once.
 #pragma once
+#include "bones.h"
 #include "candidates.h"
 #include "connect.h"
 #include "correspondence.h"
@@ -134,5 +135,13 @@ Status rig_step(const SurfaceInput& surface, const Skeleton& skeleton, const Rig
 // the result are in the caller's units (the errors are percent of the diagonal).
 Status proxies_step(const CandidateSet& set, const Skeleton& skeleton, const ProxyOptions& opt,
                     const Monitor& monitor, ProxyResult& out);
+
+// ---- bone colliders (bone_colliders_step.cpp) ----
+
+// A collider per joint of `skin` on the set's surface (a triangle mesh, else invalid_argument),
+// fitted to the set's inner balls (bones.h); the result in the caller's units, each collider in
+// its joint's frame.
+Status bone_colliders_step(const CandidateSet& set, const Skin& skin, const BoneColliderOptions& opt,
+                           const Monitor& monitor, BoneColliderResult& out);
 
 }  // namespace ca

@@ -3,7 +3,8 @@ usage: check_defaults.py LIBRARY HEADER   (PYTHONPATH points at bindings/python)
 The header states each option's default once, in the comment of its field ("default 60",
 "default VORONOI" with the constants' prefix named as CA_CANDIDATES_*, or "0 (default)"). For every
 struct with a ca_<name>_defaults function, the struct is filled by the library through the Python
-binding's ctypes layout, and each stated default is compared with the field's value."""
+binding's ctypes layout, and each stated default is compared with the field's value. A field whose
+comment names no default must be 0 / NULL, as the header's opening comment says."""
 import ctypes
 import re
 import sys
@@ -34,20 +35,46 @@ def stated_defaults(text):
     return out
 
 
+def filled(lib, struct):
+    """The struct as ca_<name>_defaults fills it, or None (no binding layout or no defaults function)."""
+    cls = getattr(_structs, "_" + "".join(w.capitalize() for w in struct[3:].split("_")), None)
+    fn = getattr(lib, "%s_defaults" % struct, None)
+    if cls is None or fn is None:
+        return None
+    obj = cls()
+    fn.restype, fn.argtypes = ctypes.c_int32, [ctypes.c_void_p, ctypes.c_uint32]
+    return obj if fn(ctypes.byref(obj), ctypes.sizeof(obj)) == 0 else False
+
+
+def unstated_are_zero(lib, text, stated):
+    """(passed, failures): every field with no stated default, of a struct with ca_*_defaults, is 0 / NULL."""
+    passed, failed = 0, []
+    for struct in re.findall(r"typedef struct (\w+) \{.*?\} \1;", text, re.S):
+        obj = filled(lib, struct)
+        if not obj:
+            continue
+        for field, _ in obj._fields_:
+            if field == "struct_size" or (struct, field) in stated:
+                continue
+            if getattr(obj, field) in (0, None):
+                passed += 1
+            else:
+                failed.append("%s.%s states no default, so it must default to 0 / NULL; the library gives %s"
+                              % (struct, field, getattr(obj, field)))
+    return passed, failed
+
+
 def main():
     lib = ctypes.CDLL(sys.argv[1])
     text = open(sys.argv[2]).read()
     defs = constants(text)
     passed, failed = 0, []
     for struct, field, value, comment in stated_defaults(text):
-        cls = getattr(_structs, "_" + "".join(w.capitalize() for w in struct[3:].split("_")), None)
-        fn = getattr(lib, "%s_defaults" % struct, None)
-        if cls is None or fn is None:
+        obj = filled(lib, struct)
+        if obj is None:
             failed.append("%s.%s states a default, but there is no ca_*_defaults or binding layout" % (struct, field))
             continue
-        obj = cls()
-        fn.restype, fn.argtypes = ctypes.c_int32, [ctypes.c_void_p, ctypes.c_uint32]
-        if fn(ctypes.byref(obj), ctypes.sizeof(obj)) != 0:
+        if obj is False:
             failed.append("%s_defaults failed" % struct)
             continue
         got = getattr(obj, field)
@@ -66,6 +93,9 @@ def main():
             passed += 1
         else:
             failed.append("%s.%s: the header says default %s, the library gives %s" % (struct, field, value, got))
+    zero_passed, zero_failed = unstated_are_zero(lib, text, {(s, f) for s, f, _, _ in stated_defaults(text)})
+    passed += zero_passed
+    failed += zero_failed
     for f in failed:
         print("FAILED", f)
     print("check_defaults: %d passed, %d failed" % (passed, len(failed)))

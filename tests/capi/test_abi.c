@@ -19,6 +19,11 @@ static ca_candidate_options small_options(void) {
 
 static void test_versions(void) {
     CHECK(ca_version() == CA_VERSION_NUMBER);
+    {
+        char text[32];
+        snprintf(text, sizeof text, "%d.%d.%d", CA_VERSION_MAJOR, CA_VERSION_MINOR, CA_VERSION_PATCH);
+        CHECK(strcmp(ca_version_string(), text) == 0);
+    }
     CHECK(ca_abi_version() == CA_ABI_VERSION);
     CHECK(strncmp(ca_status_string(CA_ERROR_NULL_POINTER), "CA_ERROR_NULL_POINTER", 21) == 0);
     CHECK(strcmp(ca_status_string(9999), "unknown ca_status") == 0);

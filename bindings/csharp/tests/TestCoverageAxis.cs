@@ -362,6 +362,76 @@ static class TestCoverageAxis
         }
     }
 
+    // A 2 x 1 x 1 box: its x = 0 end weighted to joint 0, its x = 2 end to joint 1 (turned about z
+    // and moved by its inverse bind); each collider holds its half's corners in its joint's frame.
+    static void BoneCollidersHoldTheirParts()
+    {
+        var surface = new Surface {
+            Positions = new double[] { 0, 0, 0, 2, 0, 0, 2, 1, 0, 0, 1, 0, 0, 0, 1, 2, 0, 1, 2, 1, 1, 0, 1, 1 },
+            Triangles = new uint[] { 0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4, 1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6,
+                                     3, 0, 4, 3, 4, 7 } };
+        var ib = new double[] { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -1, 0, 0, 1, 0, 0, 0, 0, 0, 1, 0, -1, 2, 0.5, 1 };
+        var joints = new uint[16];
+        var weights = new double[16];
+        for (int v = 0; v < 8; ++v)
+        {
+            joints[2 * v] = surface.Positions[3 * v] == 0 ? 0u : 1u;
+            joints[2 * v + 1] = 1 - joints[2 * v];
+            weights[2 * v] = 1;
+        }
+        var skin = new Skin { Parents = new[] { -1, 0 }, InverseBind = ib, Influences = 2, VertexJoints = joints, VertexWeights = weights };
+        using (var ctx = new Context(threads: 2))
+        using (var set = ctx.Candidates(surface, new CandidateOptions { CoverSamples = 300, VoronoiSamples = 800 }))
+        {
+            Check(new BoneColliderOptions().Mode == ProxyMode.Conservative, "bone collider defaults");
+            using (var bc = ctx.BoneColliders(set, skin))
+            {
+                Check(bc.Count == 2 && bc.Joints[0] == 0 && bc.Joints[1] == 1, bc.Count + " colliders");
+                Check(bc.Stats.contained_fraction == 1.0 && bc.Contained[1] == 1.0, "containment");
+                var colliders = bc.Colliders;
+                for (int i = 0; i < bc.Count; ++i)
+                {
+                    var p = colliders[i];
+                    double x0 = i == 0 ? 0 : 1;
+                    for (int c = 0; c < 8; ++c)
+                    {
+                        double[] x = { x0 + (c & 1), (c >> 1) & 1, (c >> 2) & 1 };
+                        var y = new double[3];
+                        for (int r = 0; r < 3; ++r) y[r] = ib[16 * i + r] * x[0] + ib[16 * i + 4 + r] * x[1] + ib[16 * i + 8 + r] * x[2] + ib[16 * i + 12 + r];
+                        var a = new double[3];
+                        var b = new double[3];
+                        for (int k = 0; k < 3; ++k)
+                        {
+                            a[k] = p.Center[k] - 0.5 * p.Height * p.Axis[k];
+                            b[k] = p.Center[k] + 0.5 * p.Height * p.Axis[k];
+                        }
+                        double lo = 0, hi = 1;
+                        Func<double, double> f = t => Math.Sqrt(Enumerable.Range(0, 3).Sum(k => Math.Pow(y[k] - (a[k] + t * (b[k] - a[k])), 2))) -
+                                                      (p.RadiusBottom + t * (p.RadiusTop - p.RadiusBottom));
+                        for (int it = 0; it < 200; ++it)
+                        {
+                            double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
+                            if (f(m1) <= f(m2)) hi = m2; else lo = m1;
+                        }
+                        double d = Math.Min(Math.Min(f(0), f(1)), f(0.5 * (lo + hi)));
+                        Check(d <= 1e-9, "joint " + i + " corner " + c + " outside by " + d);
+                    }
+                }
+            }
+            using (var bc = ctx.BoneColliders(set, skin, new BoneColliderOptions { SkipJoints = new uint[] { 0 } }))
+                Check(bc.Count == 1 && bc.Joints[0] == 1, "skip list");
+            try
+            {
+                ctx.BoneColliders(set, new Skin { Parents = new[] { 1, 0 }, InverseBind = ib, Influences = 2, VertexJoints = joints, VertexWeights = weights });
+                Check(false, "a cycle was accepted");
+            }
+            catch (CoverageAxisException e)
+            {
+                Check(e.Status == Status.InvalidInput && e.Message.Contains("cycle"), "cycle: " + e.Message);
+            }
+        }
+    }
+
     static void Test(string name, Action body)
     {
         try { body(); ++passed; Console.WriteLine("ok   " + name); }
@@ -381,6 +451,7 @@ static class TestCoverageAxis
         Test("results outlive context and set", ResultsOutliveContextAndSet);
         Test("rig and correspondence match the CLI", RigMatchesTheCli);
         Test("conservative proxies hold the vertices", ConservativeProxiesHoldTheVertices);
+        Test("bone colliders hold their parts", BoneCollidersHoldTheirParts);
         Console.WriteLine("{0} passed, {1} failed", passed, failed);
         return failed == 0 ? 0 : 1;
     }

@@ -229,6 +229,41 @@ struct ProxyPlacement
     half_extents::NTuple{3, Float64}
 end
 
+struct SkinView
+    struct_size::UInt32
+    joint_count::Csize_t
+    parents::Ptr{Int32}
+    inverse_bind::Ptr{Float64}
+    vertex_count::Csize_t
+    influences::UInt32
+    vertex_joints::Ptr{UInt32}
+    vertex_weights::Ptr{Float64}
+end
+
+struct BoneColliderOptions
+    struct_size::UInt32
+    mode::Int32
+    shapes::Int32
+    min_share::Float64
+    min_size::Float64
+    skip_joints::Ptr{UInt32}
+    skip_count::Csize_t
+    surface_samples::UInt32
+    evaluate_samples::UInt32
+    seed::UInt64
+end
+
+struct BoneColliderStats
+    struct_size::UInt32
+    contained_fraction::Float64
+    union_volume::Float64
+    outside_volume::Float64
+    neighbour_overlap::Float64
+    joints_with_collider::UInt64
+    joints_skipped::UInt64
+    time_s::Float64
+end
+
 # ---- errors, defaults -------------------------------------------------------------------------
 """A failed call: the library's status code and its message."""
 struct CoverageAxisError <: Exception

@@ -21,14 +21,15 @@ from ._library import (CA_OK, CA_ERROR_INVALID_ARGUMENT, CA_ERROR_NULL_POINTER, 
                        CA_ERROR_SOLVER, CA_ERROR_CANCELLED, CA_ERROR_OUT_OF_MEMORY, CA_ERROR_BUFFER_TOO_SMALL,
                        CA_ERROR_INTERNAL, CA_ERROR_NO_CANDIDATES, CA_ERROR_TIME_LIMIT,
                        CA_ERROR_TARGET_NOT_REACHED)
-from ._steps import (CandidateSet, Proxies, Selection, Skeleton, candidates, connect, defaults, evaluate, proxies,
-                     select, skeletonize)
+from ._steps import (BoneColliders, CandidateSet, Proxies, Selection, Skeleton, bone_colliders, candidates, connect,
+                     defaults, evaluate, proxies, select, skeletonize)
 from ._rig import INFLUENCES, NEAREST_KINDS, Correspondence, Rig, correspond, rig
 
 __all__ = ["HAVE_NUMPY", "Context", "ABI_VERSION", "STATUS_NAMES", "CoverageAxisError", "LibraryNotFoundError",
            "TargetNotReachedError",
            "load_library", "CandidateSet", "Proxies", "Selection", "Skeleton", "candidates", "connect", "defaults",
            "evaluate", "proxies", "select", "skeletonize", "version", "Correspondence", "Rig", "correspond", "rig",
+           "BoneColliders", "bone_colliders",
            "INFLUENCES", "NEAREST_KINDS",
            "CA_OK", "CA_ERROR_INVALID_ARGUMENT", "CA_ERROR_NULL_POINTER", "CA_ERROR_STRUCT_SIZE",
            "CA_ERROR_INVALID_INPUT", "CA_ERROR_DEGENERATE_INPUT", "CA_ERROR_UNCOVERABLE", "CA_ERROR_GEOMETRY",
@@ -39,5 +40,4 @@ __all__ = ["HAVE_NUMPY", "Context", "ABI_VERSION", "STATUS_NAMES", "CoverageAxis
 
 def version():
     """The linked library's version, "major.minor.patch"."""
-    v = _lib().ca_version()
-    return "%d.%d.%d" % (v // 10000, v // 100 % 100, v % 100)
+    return _lib().ca_version_string().decode()

@@ -17,7 +17,8 @@ from ctypes import POINTER, CFUNCTYPE, c_char_p, c_double, c_int32, c_size_t, c_
 
 from ._structs import (_CandidateOptions, _ConnectOptions, _ContextDesc, _CorrespondenceOptions, _EvaluateOptions,
                        _Evaluation, _ProxyOptions, _ProxyPlacement, _ProxyStats, _RigOptions, _SelectOptions,
-                       _SelectStats, _SkeletonStats, _SkeletonView, _SurfaceView)
+                       _SelectStats, _SkeletonStats, _SkeletonView, _SurfaceView, _SkinView, _BoneColliderOptions,
+                       _BoneColliderStats)
 
 ABI_VERSION = 3
 
@@ -63,7 +64,7 @@ class LibraryNotFoundError(ImportError):
 
 P = c_void_p
 _SIGNATURES = {
-    "ca_version": (c_uint32, []), "ca_abi_version": (c_uint32, []), "ca_status_string": (c_char_p, [c_int32]),
+    "ca_version": (c_uint32, []), "ca_version_string": (c_char_p, []), "ca_abi_version": (c_uint32, []), "ca_status_string": (c_char_p, [c_int32]),
     "ca_context_desc_defaults": (c_int32, [POINTER(_ContextDesc), c_uint32]),
     "ca_context_create": (c_int32, [POINTER(_ContextDesc), POINTER(P)]), "ca_context_destroy": (None, [P]),
     "ca_context_request_cancel": (None, [P]), "ca_context_clear_cancel": (None, [P]),
@@ -113,6 +114,15 @@ _SIGNATURES = {
     "ca_proxy_set_kinds": (P, [P]), "ca_proxy_set_centers": (P, [P]), "ca_proxy_set_radii": (P, [P]),
     "ca_proxy_set_stats": (c_int32, [P, POINTER(_ProxyStats)]),
     "ca_proxy_set_placement": (c_int32, [P, c_size_t, POINTER(_ProxyPlacement)]),
+    "ca_skin_view_defaults": (c_int32, [POINTER(_SkinView), c_uint32]),
+    "ca_bone_collider_options_defaults": (c_int32, [POINTER(_BoneColliderOptions), c_uint32]),
+    "ca_bone_colliders_build": (c_int32, [P, P, POINTER(_SkeletonView), POINTER(_SkinView),
+                                          POINTER(_BoneColliderOptions), POINTER(P)]),
+    "ca_bone_colliders_destroy": (None, [P]), "ca_bone_colliders_count": (c_size_t, [P]),
+    "ca_bone_colliders_joints": (P, [P]), "ca_bone_colliders_contained": (P, [P]),
+    "ca_bone_colliders_overlap": (P, [P]),
+    "ca_bone_colliders_stats": (c_int32, [P, POINTER(_BoneColliderStats)]),
+    "ca_bone_colliders_placement": (c_int32, [P, c_size_t, POINTER(_ProxyPlacement)]),
 }
 
 _lock = threading.Lock()

@@ -14,7 +14,7 @@ from ._library import (CA_ERROR_INVALID_ARGUMENT, CA_ERROR_INVALID_INPUT, CA_ERR
                        _CorrespondenceOptions, _EvaluateOptions, _Evaluation, _ProxyOptions, _ProxyStats, _RigOptions,
                        _SelectOptions, _SelectStats, _SkeletonStats, _SkeletonView, _SurfaceView, fill_defaults, lib,
                        output_struct, struct_dict)
-from ._structs import _ContextDesc
+from ._structs import _BoneColliderOptions, _BoneColliderStats, _ContextDesc, _ProxyPlacement, _SkinView
 
 # the header's #define values, by name
 ENUMS = {
@@ -36,10 +36,12 @@ _STEPS = {
     "correspond": ("ca_correspondence_options_defaults", _CorrespondenceOptions),
     "rig": ("ca_rig_options_defaults", _RigOptions),
     "proxies": ("ca_proxy_options_defaults", _ProxyOptions),
+    "bone_colliders": ("ca_bone_collider_options_defaults", _BoneColliderOptions),
 }
 _NOT_OPTIONS = {"struct_size", "alloc", "free", "alloc_user", "log", "log_user", "progress", "progress_user",
                 "reserved_abi2_tail",  # padding, never read
-                "ignorable_samples_count", "forced_in_count", "forced_out_count"}  # the masks' lengths
+                "ignorable_samples_count", "forced_in_count", "forced_out_count",  # the masks' lengths
+                "skip_joints", "skip_count"}  # bone_colliders(): its own argument
 
 
 def _option_names(step):
@@ -55,7 +57,7 @@ def _named(name, value):
 
 def defaults(step):
     """The library's defaults of a step's options ("context", "candidates", "select", "connect",
-    "evaluate", "correspond", "rig", "proxies") as a dict, enumerations by name."""
+    "evaluate", "correspond", "rig", "proxies", "bone_colliders") as a dict, enumerations by name."""
     s = fill_defaults(*_STEPS[step])
     return {name: _named(name, getattr(s, name)) for name in _option_names(step)}
 
@@ -324,6 +326,80 @@ def proxies(candidate_set, skeleton, *, context=None, **options):
     if status:
         raise CoverageAxisError(status, "ca_proxy_set_stats failed")
     return Proxies(primitives, struct_dict(stats))
+
+
+class BoneColliders:
+    """Bone colliders (bone_colliders()): `colliders`, one dict per collider, each in ITS JOINT'S
+    frame: {"joint": j, "kind": "sphere" | "capsule", "center": (x, y, z), "rotation": (x, y, z, w),
+    "axis": (x, y, z), "radius_top", "radius_bottom", "height" (ca_proxy_placement's conventions),
+    "contained": fraction of its part's fresh samples held, "overlap": volume shared with its
+    parent's collider}, and `stats` (ca_bone_collider_stats)."""
+
+    def __init__(self, colliders, stats):
+        self.colliders, self.stats = colliders, stats
+
+    def __len__(self):
+        return len(self.colliders)
+
+
+def bone_colliders(candidate_set, parents, vertex_joints, vertex_weights, inverse_bind=None, *, skip_joints=None,
+                   context=None, **options):
+    """One tapered capsule or sphere per joint of a skin of the candidate set's mesh, fitted to the
+    part of the surface the joint dominates (docs/bone_colliders.md). `parents`: one per joint, -1
+    for a root; `vertex_joints`, `vertex_weights`: (vertex_count, influences), 1 to 8 influences;
+    `inverse_bind`: (joint_count, 16) column-major matrices (None: identity); `skip_joints`: joint
+    indices to give none. Options: mode ("conservative" | "inscribed"), shapes ("capsules" |
+    "spheres"), min_share, min_size, surface_samples, evaluate_samples, seed."""
+    opts = _options("bone_colliders", options)
+    par = [int(p) for p in (parents.tolist() if hasattr(parents, "tolist") else parents)]
+    par_arr = (ctypes.c_int32 * max(len(par), 1))(*par)
+    first = vertex_joints[0] if len(vertex_joints) else []
+    influences = len(first) if hasattr(first, "__len__") else 0
+    if influences == 0:
+        raise CoverageAxisError(CA_ERROR_INVALID_INPUT, "vertex_joints: expected shape (n, influences), 1 to 8 influences")
+    vj = _arrays.indices(vertex_joints, "vertex_joints", influences)
+    vw = _arrays.points(vertex_weights, "vertex_weights", influences, packed=True)
+    if vj.count != vw.count:
+        raise CoverageAxisError(CA_ERROR_INVALID_INPUT, "vertex_weights: %d rows, vertex_joints has %d" % (vw.count, vj.count))
+    keep = [par_arr, vj, vw]
+    view = fill_defaults("ca_skin_view_defaults", _SkinView)
+    view.joint_count, view.parents = len(par), ctypes.cast(par_arr, ctypes.c_void_p)
+    view.vertex_count, view.influences = vj.count, influences
+    view.vertex_joints, view.vertex_weights = vj.address, vw.address
+    if inverse_bind is not None:
+        ib = _arrays.points(inverse_bind, "inverse_bind", 16, packed=True)
+        if ib.count != len(par):
+            raise CoverageAxisError(CA_ERROR_INVALID_INPUT, "inverse_bind: %d matrices for %d joints" % (ib.count, len(par)))
+        view.inverse_bind = ib.address
+        keep.append(ib)
+    if skip_joints is not None and len(skip_joints):
+        skip = _arrays.indices(skip_joints, "skip_joints", 1)
+        opts.skip_joints, opts.skip_count = skip.address, skip.count
+        keep.append(skip)
+    out = ctypes.c_void_p()
+    _run(context, lib().ca_bone_colliders_build, candidate_set._handle._ptr, None, ctypes.byref(view),
+         ctypes.byref(opts), ctypes.byref(out))
+    del keep
+    h = _Handle(out, "ca_bone_colliders_destroy")
+    n = h.get("ca_bone_colliders_count")
+    joints = ctypes.cast(h.get("ca_bone_colliders_joints"), ctypes.POINTER(ctypes.c_uint32))
+    contained = ctypes.cast(h.get("ca_bone_colliders_contained"), ctypes.POINTER(ctypes.c_double))
+    overlap = ctypes.cast(h.get("ca_bone_colliders_overlap"), ctypes.POINTER(ctypes.c_double))
+    colliders = []
+    for i in range(n):
+        pl = output_struct(_ProxyPlacement)
+        status = h._lib.ca_bone_colliders_placement(h._ptr, i, ctypes.byref(pl))
+        if status:
+            raise CoverageAxisError(status, "ca_bone_colliders_placement failed")
+        colliders.append({"joint": joints[i], "kind": "capsule" if pl.kind == 1 else "sphere",
+                          "center": tuple(pl.center), "rotation": tuple(pl.rotation), "axis": tuple(pl.axis),
+                          "radius_top": pl.radius_top, "radius_bottom": pl.radius_bottom, "height": pl.height,
+                          "contained": contained[i], "overlap": overlap[i]})
+    stats = output_struct(_BoneColliderStats)
+    status = h._lib.ca_bone_colliders_stats(h._ptr, ctypes.byref(stats))
+    if status:
+        raise CoverageAxisError(status, "ca_bone_colliders_stats failed")
+    return BoneColliders(colliders, struct_dict(stats))
 
 
 def _column(values):

@@ -104,3 +104,21 @@ class _ProxyPlacement(Structure):
     _fields_ = [("struct_size", c_uint32), ("kind", c_int32), ("center", c_double * 3), ("rotation", c_double * 4),
                 ("axis", c_double * 3), ("radius_top", c_double), ("radius_bottom", c_double), ("height", c_double),
                 ("half_extents", c_double * 3)]
+
+
+class _SkinView(Structure):
+    _fields_ = [("struct_size", c_uint32), ("joint_count", c_size_t), ("parents", c_void_p), ("inverse_bind", c_void_p),
+                ("vertex_count", c_size_t), ("influences", c_uint32), ("vertex_joints", c_void_p),
+                ("vertex_weights", c_void_p)]
+
+
+class _BoneColliderOptions(Structure):
+    _fields_ = [("struct_size", c_uint32), ("mode", c_int32), ("shapes", c_int32), ("min_share", c_double),
+                ("min_size", c_double), ("skip_joints", c_void_p), ("skip_count", c_size_t),
+                ("surface_samples", c_uint32), ("evaluate_samples", c_uint32), ("seed", c_uint64)]
+
+
+class _BoneColliderStats(Structure):
+    _fields_ = [("struct_size", c_uint32), ("contained_fraction", c_double), ("union_volume", c_double),
+                ("outside_volume", c_double), ("neighbour_overlap", c_double), ("joints_with_collider", c_uint64),
+                ("joints_skipped", c_uint64), ("time_s", c_double)]

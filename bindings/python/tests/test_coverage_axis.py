@@ -435,6 +435,50 @@ class CommonTest(unittest.TestCase):
             ca.proxies(cset, sk, count=0)
         self.assertEqual(e.exception.status, ca.CA_ERROR_INVALID_ARGUMENT)
 
+    def test_bone_colliders(self):
+        # a 2 x 1 x 1 box: its x = 0 end weighted to joint 0, its x = 2 end to joint 1 (a child whose
+        # inverse bind turns the frame about z and moves it), so each joint dominates one half
+        v = [(0, 0, 0), (2, 0, 0), (2, 1, 0), (0, 1, 0), (0, 0, 1), (2, 0, 1), (2, 1, 1), (0, 1, 1)]
+        f = [(0, 2, 1), (0, 3, 2), (4, 5, 6), (4, 6, 7), (0, 1, 5), (0, 5, 4), (1, 2, 6), (1, 6, 5), (2, 3, 7),
+             (2, 7, 6), (3, 0, 4), (3, 4, 7)]
+        joints = [(0, 1) if x == 0 else (1, 0) for x, _, _ in v]
+        weights = [(1.0, 0.0)] * 8
+        ib = [(1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1), (0, -1, 0, 0, 1, 0, 0, 0, 0, 0, 1, 0, -1, 2, 0.5, 1)]
+        cset = ca.candidates(v, f, cover_samples=300, voronoi_samples=800)
+        bc = ca.bone_colliders(cset, [-1, 0], joints, weights, ib)
+        self.assertEqual([c["joint"] for c in bc.colliders], [0, 1])
+        self.assertEqual(bc.stats["contained_fraction"], 1.0)
+        self.assertEqual(bc.stats["joints_with_collider"], 2)
+        self.assertEqual(ca.defaults("bone_colliders")["mode"], "conservative")
+
+        def distance(c, x):  # to the capsule as placed, by ternary search along its axis
+            top = [c["center"][k] + 0.5 * c["height"] * c["axis"][k] for k in range(3)]
+            bottom = [c["center"][k] - 0.5 * c["height"] * c["axis"][k] for k in range(3)]
+            g = lambda t: math.dist(x, [bottom[k] + t * (top[k] - bottom[k]) for k in range(3)]) - \
+                (c["radius_bottom"] + t * (c["radius_top"] - c["radius_bottom"]))
+            lo, hi = 0.0, 1.0
+            for _ in range(100):
+                m1, m2 = lo + (hi - lo) / 3, hi - (hi - lo) / 3
+                lo, hi = (lo, m2) if g(m1) <= g(m2) else (m1, hi)
+            return min(g(0), g(1), g(0.5 * (lo + hi)))
+
+        for c in bc.colliders:
+            m = ib[c["joint"]]
+            x0 = 0 if c["joint"] == 0 else 1
+            for x in [(x0 + a, b, d) for a in (0, 1) for b in (0, 1) for d in (0, 1)]:
+                y = [m[r] * x[0] + m[4 + r] * x[1] + m[8 + r] * x[2] + m[12 + r] for r in range(3)]
+                self.assertLessEqual(distance(c, y), 1e-9)
+        self.assertEqual([c["joint"] for c in ca.bone_colliders(cset, [-1, 0], joints, weights, ib,
+                                                                 skip_joints=[0]).colliders], [1])
+        for bad in (dict(parents=[1, 0]), dict(weights=[(float("nan"), 0.0)] * 8), dict(mode="outside"),
+                    dict(ib=[ib[0], [2.0] + list(ib[1][1:])])):
+            with self.assertRaises(ca.CoverageAxisError) as e:
+                opts = {"mode": bad["mode"]} if "mode" in bad else {}
+                ca.bone_colliders(cset, bad.get("parents", [-1, 0]), joints, bad.get("weights", weights),
+                                  bad.get("ib", ib), **opts)
+            self.assertIn(e.exception.status, (ca.CA_ERROR_INVALID_INPUT, ca.CA_ERROR_INVALID_ARGUMENT))
+
+
 class NumpyTest(unittest.TestCase):
     """numpy in and out; runs where numpy is installed, which this run requires."""
 

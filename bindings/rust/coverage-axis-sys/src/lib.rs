@@ -81,6 +81,10 @@ pub const CA_NEAREST_FACE: i32 = 2;
 pub struct ca_proxy_set {
     _opaque: [u8; 0],
 }
+#[repr(C)]
+pub struct ca_bone_colliders {
+    _opaque: [u8; 0],
+}
 
 pub type ca_log_fn = Option<unsafe extern "C" fn(user: *mut c_void, level: i32, message: *const c_char)>;
 pub type ca_progress_fn =
@@ -357,6 +361,41 @@ ca_struct!(#[derive(Debug, Default)] ca_proxy_placement {
     half_extents: [f64; 3],
 });
 
+ca_struct!(ca_skin_view {
+    struct_size: u32,
+    joint_count: usize,
+    parents: *const i32,
+    inverse_bind: *const f64,
+    vertex_count: usize,
+    influences: u32,
+    vertex_joints: *const u32,
+    vertex_weights: *const f64,
+});
+
+ca_struct!(ca_bone_collider_options {
+    struct_size: u32,
+    mode: i32,
+    shapes: i32,
+    min_share: f64,
+    min_size: f64,
+    skip_joints: *const u32,
+    skip_count: usize,
+    surface_samples: u32,
+    evaluate_samples: u32,
+    seed: u64,
+});
+
+ca_struct!(#[derive(Debug, Default)] ca_bone_collider_stats {
+    struct_size: u32,
+    contained_fraction: f64,
+    union_volume: f64,
+    outside_volume: f64,
+    neighbour_overlap: f64,
+    joints_with_collider: u64,
+    joints_skipped: u64,
+    time_s: f64,
+});
+
 /// Every struct this crate declares, in header order.
 pub fn layouts() -> Vec<StructLayout> {
     vec![
@@ -375,6 +414,9 @@ pub fn layouts() -> Vec<StructLayout> {
         ca_proxy_options::layout(),
         ca_proxy_stats::layout(),
         ca_proxy_placement::layout(),
+        ca_skin_view::layout(),
+        ca_bone_collider_options::layout(),
+        ca_bone_collider_stats::layout(),
     ]
 }
 
@@ -524,4 +566,25 @@ extern "C" {
     pub fn ca_proxy_set_radii(proxies: *const ca_proxy_set) -> *const f64;
     pub fn ca_proxy_set_stats(proxies: *const ca_proxy_set, stats: *mut ca_proxy_stats) -> ca_status;
     pub fn ca_proxy_set_placement(proxies: *const ca_proxy_set, index: usize, placement: *mut ca_proxy_placement) -> ca_status;
+    pub fn ca_skin_view_defaults(view: *mut ca_skin_view, struct_size: u32) -> ca_status;
+    pub fn ca_bone_collider_options_defaults(options: *mut ca_bone_collider_options, struct_size: u32) -> ca_status;
+    pub fn ca_bone_colliders_build(
+        ctx: *mut ca_context,
+        set: *const ca_candidate_set,
+        skeleton: *const ca_skeleton_view,
+        skin: *const ca_skin_view,
+        options: *const ca_bone_collider_options,
+        out: *mut *mut ca_bone_colliders,
+    ) -> ca_status;
+    pub fn ca_bone_colliders_destroy(colliders: *mut ca_bone_colliders);
+    pub fn ca_bone_colliders_count(colliders: *const ca_bone_colliders) -> usize;
+    pub fn ca_bone_colliders_joints(colliders: *const ca_bone_colliders) -> *const u32;
+    pub fn ca_bone_colliders_placement(
+        colliders: *const ca_bone_colliders,
+        index: usize,
+        placement: *mut ca_proxy_placement,
+    ) -> ca_status;
+    pub fn ca_bone_colliders_stats(colliders: *const ca_bone_colliders, stats: *mut ca_bone_collider_stats) -> ca_status;
+    pub fn ca_bone_colliders_contained(colliders: *const ca_bone_colliders) -> *const f64;
+    pub fn ca_bone_colliders_overlap(colliders: *const ca_bone_colliders) -> *const f64;
 }

@@ -29,8 +29,8 @@ use std::os::raw::{c_char, c_void};
 use std::ptr;
 use std::sync::Arc;
 
-pub use sys::{ca_evaluation as Evaluation, ca_proxy_stats as ProxyStats, ca_select_stats as SelectStats,
-              ca_skeleton_stats as SkeletonStats};
+pub use sys::{ca_bone_collider_stats as BoneColliderStats, ca_evaluation as Evaluation, ca_proxy_stats as ProxyStats,
+              ca_select_stats as SelectStats, ca_skeleton_stats as SkeletonStats};
 
 /// Why a call failed: the library's `ca_status` codes (`CA_ERROR_*`, pinned values) as an enum.
 /// `Unknown` keeps a code this crate does not name (a newer library's).
@@ -521,6 +521,76 @@ impl EvaluateOptions {
     }
 }
 
+/// A skin over the candidate set's mesh (its bind pose): per joint its parent (-1 for a root) and
+/// optionally its inverse bind matrix (16 doubles, column-major, the surface's frame to the
+/// joint's); per vertex `influences` joints and weights (`vertex_joints`, `vertex_weights`, flat).
+#[derive(Clone, Copy)]
+pub struct Skin<'a> {
+    pub parents: &'a [i32],
+    pub inverse_bind: Option<&'a [[f64; 16]]>,
+    pub influences: u32,
+    pub vertex_joints: &'a [u32],
+    pub vertex_weights: &'a [f64],
+}
+
+/// Options of [`Context::bone_colliders`]; `default()` is the library's defaults.
+#[derive(Clone)]
+pub struct BoneColliderOptions {
+    raw: sys::ca_bone_collider_options,
+    skip: Vec<u32>,
+}
+
+impl Default for BoneColliderOptions {
+    fn default() -> Self {
+        BoneColliderOptions {
+            raw: defaults!(sys::ca_bone_collider_options, sys::ca_bone_collider_options_defaults),
+            skip: Vec::new(),
+        }
+    }
+}
+
+impl BoneColliderOptions {
+    pub fn new() -> Self {
+        Self::default()
+    }
+    /// Conservative (default): each holds its whole part; inscribed: each stays inside the shape.
+    pub fn mode(mut self, mode: ProxyMode) -> Self {
+        self.raw.mode = mode as i32;
+        self
+    }
+    pub fn shapes(mut self, shapes: ProxyShapes) -> Self {
+        self.raw.shapes = shapes as i32;
+        self
+    }
+    /// A joint dominating less than this fraction of the surface's area gets no collider.
+    pub fn min_share(mut self, fraction: f64) -> Self {
+        self.raw.min_share = fraction;
+        self
+    }
+    /// A collider whose larger radius is below this percent of the bbox diagonal is dropped.
+    pub fn min_size(mut self, percent: f64) -> Self {
+        self.raw.min_size = percent;
+        self
+    }
+    /// Joints to give no collider.
+    pub fn skip_joints(mut self, joints: &[u32]) -> Self {
+        self.skip = joints.to_vec();
+        self
+    }
+    pub fn surface_samples(mut self, n: u32) -> Self {
+        self.raw.surface_samples = n;
+        self
+    }
+    pub fn evaluate_samples(mut self, n: u32) -> Self {
+        self.raw.evaluate_samples = n;
+        self
+    }
+    pub fn seed(mut self, seed: u64) -> Self {
+        self.raw.seed = seed;
+        self
+    }
+}
+
 /// What engine proxies may be: spheres only, or tapered capsules and spheres.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum ProxyShapes {
@@ -865,6 +935,114 @@ impl Context {
         let mut out = ptr::null_mut();
         self.check(unsafe { sys::ca_proxies(self.ptr(), set.raw, &view, &options.raw, &mut out) })?;
         Ok(Proxies { raw: out })
+    }
+
+    /// A tapered capsule or sphere per joint of the skin, fitted to the part of the set's mesh the
+    /// joint dominates, in the joint's frame (docs/bone_colliders.md). Array lengths are checked
+    /// here (`InvalidInput`); values by the library.
+    pub fn bone_colliders(&self, set: &CandidateSet, skin: &Skin, options: &BoneColliderOptions) -> Result<BoneColliders> {
+        let k = skin.influences as usize;
+        if k == 0 || skin.vertex_joints.len() % k != 0 || skin.vertex_weights.len() != skin.vertex_joints.len() {
+            return Err(Error {
+                status: Status::InvalidInput,
+                message: "skin: vertex_joints and vertex_weights need `influences` (>= 1) entries per vertex".into(),
+            });
+        }
+        if let Some(ib) = skin.inverse_bind {
+            if ib.len() != skin.parents.len() {
+                return Err(Error { status: Status::InvalidInput, message: "skin: one inverse bind matrix per joint".into() });
+            }
+        }
+        let mut view: sys::ca_skin_view = defaults!(sys::ca_skin_view, sys::ca_skin_view_defaults);
+        view.joint_count = skin.parents.len();
+        view.parents = skin.parents.as_ptr();
+        view.inverse_bind = skin.inverse_bind.map_or(ptr::null(), |m| m.as_ptr() as *const f64);
+        view.vertex_count = skin.vertex_joints.len() / k;
+        view.influences = skin.influences;
+        view.vertex_joints = skin.vertex_joints.as_ptr();
+        view.vertex_weights = skin.vertex_weights.as_ptr();
+        let mut raw = options.raw;
+        raw.skip_joints = if options.skip.is_empty() { ptr::null() } else { options.skip.as_ptr() };
+        raw.skip_count = options.skip.len();
+        let mut out = ptr::null_mut();
+        self.check(unsafe { sys::ca_bone_colliders_build(self.ptr(), set.raw, ptr::null(), &view, &raw, &mut out) })?;
+        Ok(BoneColliders { raw: out })
+    }
+}
+
+/// One bone collider as an engine places it under its joint (the joint's frame): a node at
+/// `center` turned by `rotation` (x y z w) holding a sphere of `radius_top`, or a capsule along
+/// its +Y axis (`axis` in the joint's frame) with the ball of `radius_top` at +`height`/2 and the
+/// ball of `radius_bottom` at -`height`/2; `contained` is the fraction of its part's fresh samples
+/// it holds, `overlap` its overlap volume with its parent joint's collider.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BoneCollider {
+    pub joint: u32,
+    pub capsule: bool,
+    pub center: [f64; 3],
+    pub rotation: [f64; 4],
+    pub axis: [f64; 3],
+    pub radius_top: f64,
+    pub radius_bottom: f64,
+    pub height: f64,
+    pub contained: f64,
+    pub overlap: f64,
+}
+
+/// Bone colliders ([`Context::bone_colliders`]); they hold nothing of the other objects.
+pub struct BoneColliders {
+    raw: *mut sys::ca_bone_colliders,
+}
+
+// SAFETY: results are immutable and may be read from several threads at once (docs/abi.md).
+unsafe impl Send for BoneColliders {}
+unsafe impl Sync for BoneColliders {}
+
+impl Drop for BoneColliders {
+    fn drop(&mut self) {
+        unsafe { sys::ca_bone_colliders_destroy(self.raw) }
+    }
+}
+
+impl BoneColliders {
+    pub fn len(&self) -> usize {
+        unsafe { sys::ca_bone_colliders_count(self.raw) }
+    }
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+    pub fn colliders(&self) -> Vec<BoneCollider> {
+        let n = self.len();
+        let joints = unsafe { values(sys::ca_bone_colliders_joints(self.raw), n) };
+        let contained = unsafe { values(sys::ca_bone_colliders_contained(self.raw), n) };
+        let overlap = unsafe { values(sys::ca_bone_colliders_overlap(self.raw), n) };
+        (0..n)
+            .map(|i| {
+                let mut p = sys::ca_proxy_placement {
+                    struct_size: std::mem::size_of::<sys::ca_proxy_placement>() as u32,
+                    ..Default::default()
+                };
+                check(unsafe { sys::ca_bone_colliders_placement(self.raw, i, &mut p) }).expect("placement of a live collider");
+                BoneCollider {
+                    joint: joints[i],
+                    capsule: p.kind == sys::CA_PROXY_CAPSULE,
+                    center: p.center,
+                    rotation: p.rotation,
+                    axis: p.axis,
+                    radius_top: p.radius_top,
+                    radius_bottom: p.radius_bottom,
+                    height: p.height,
+                    contained: contained[i],
+                    overlap: overlap[i],
+                }
+            })
+            .collect()
+    }
+    pub fn stats(&self) -> BoneColliderStats {
+        let mut stats =
+            BoneColliderStats { struct_size: std::mem::size_of::<BoneColliderStats>() as u32, ..Default::default() };
+        check(unsafe { sys::ca_bone_colliders_stats(self.raw, &mut stats) }).expect("stats of live colliders");
+        stats
     }
 }
 
