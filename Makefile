@@ -67,7 +67,7 @@ package: build
 # its structured format, tests/fuzz/make_seeds.py) and every file reader (fuzz_read_<format>, seeded
 # with the test models of that format), FUZZ_SECONDS each, one after the other
 FUZZ_SECONDS ?= 60
-FUZZ_READERS ?= obj off ply xyz pts stl gltf glb dae
+FUZZ_READERS ?= obj off ply xyz pts stl gltf glb dae fbx
 FUZZ_SEEDS = tests/data/hourglass.obj tests/data/wall.obj tests/data/desk_table.obj tests/data/fox.obj \
   tests/data/chair_soup.obj
 fuzz-build:

@@ -3,8 +3,8 @@
 // by primitive type) trust the scene an importer built: a null mesh, a face without indices, an
 // index past the vertex array, a node naming a mesh that does not exist or a non-finite value
 // make them crash, abort on an assertion or loop. So every pointer they follow is checked for
-// null, every count against the array it sizes, every index against its range, positions and
-// node transforms for finite values, and the node tree for cycles, depth and size. The meshes
+// null, every count against the array it sizes, every index against its range, positions, node
+// transforms and bone offset matrices for finite values, and the node tree for cycles, depth and size. The meshes
 // pre-transformed vertices will copy once per node that instances them are counted per instance,
 // so a small file cannot make post-processing build more than the readers' size limit allows.
 #include <assimp/scene.h>
@@ -68,6 +68,8 @@ bool check_mesh(const std::string& name, const aiScene& scene, unsigned m, std::
         const aiBone* bone = mesh->mBones[b];
         if (!bone || (bone->mNumWeights > 0 && !bone->mWeights))
             return fail(error, name, 0, mesh_label(m) + " bone " + std::to_string(b) + " is missing or has no weights");
+        if (!finite(bone->mOffsetMatrix))
+            return fail(error, name, 0, mesh_label(m) + " bone " + std::to_string(b) + ": offset matrix holds NaN or infinity");
         for (unsigned w = 0; w < bone->mNumWeights; ++w)
             if (bone->mWeights[w].mVertexId >= nv)
                 return fail(error, name, 0, mesh_label(m) + " bone " + std::to_string(b) + " weighs a vertex out of range");

@@ -58,19 +58,29 @@ std::string skin_problem(const MeshData& mesh);
 //        lines (3, 4, 6 or 7 values); only x y z are kept.
 //  stl   binary or ASCII (binary when the size is 84 + 50 * count); equal positions are merged.
 //  gltf, glb  glTF 2.0: triangle primitives of the default scene (all scenes' roots if none) in
-//        world coordinates. External buffer URIs resolve only inside the asset's own folder (no
+//        world coordinates; when drawn meshes are skinned, in the (first) skinned mesh's own
+//        space instead, with the skin: its JOINTS_0/WEIGHTS_0 and JOINTS_1/WEIGHTS_1 (8
+//        influences), inverse binds (identity if absent), joints named by their nodes
+//        ("node_N" if unnamed). A mesh of another skin is posed at rest into that space; an
+//        unskinned mesh is placed there by its node, weighted 1 to the nearest joint node at or
+//        above it, or 0 (no joint) when there is none. External buffer URIs resolve only inside the asset's own folder (no
 //        absolute paths, no '..', no symbolic links out of it; from standard input none at
 //        all); a data: URI may not declare more bytes than the file has. Images are not read.
 //  anything assimp imports (fbx, dae, 3ds, ...; see readable_formats()): from memory only
-//        (referenced files are not opened), node transforms applied. Animations, cameras,
+//        (referenced files are not opened), node transforms applied, vertices at one position
+//        joined. Bones become the skin: joints by bone name (their nodes give the hierarchy and
+//        rest matrices), inverse bind = offset matrix * the mesh node's world matrix^-1 (the
+//        vertices are in world coordinates), the 8 heaviest weights per vertex, renormalised;
+//        unskinned meshes follow the joint node above them as for glTF. Animations, cameras,
 //        lights and embedded textures that fail assimp's validation, and meshes without faces,
 //        are dropped (named in `dropped`) rather than refusing the file; a fault anywhere else
 //        (geometry, materials, bones, nodes) refuses it.
 // Limits, so memory stays proportional to the input: at most one vertex and one triangle per
 // input byte (glTF: bytes of the file plus its external buffers) and at most 65536 vertices in
 // one polygon; beyond either the reader refuses with a message naming the limit.
-// Indices are checked against the vertex count. On failure `out` is empty and `error` says
-// "file[:line]: what".
+// Indices are checked against the vertex count; a skin must pass skin_problem (bad joint indices,
+// NaN weights, mismatched counts, cyclic joints refuse the file). On failure `out` is empty and
+// `error` says "file[:line]: what".
 // `loaded`, if given, is called with the input's size in bytes once it is in memory, before any
 // reader parses it (the tool's reader process sets its memory limit there).
 bool read_mesh(const std::string& path, const std::string& format, MeshData& out, std::string& error,

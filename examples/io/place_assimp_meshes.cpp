@@ -11,7 +11,8 @@
 // its node's in the file's node tree (its rest pose); its parent is the nearest node above it that
 // is a joint. Each vertex keeps its 8 heaviest weights (summed per joint, ties to the lower
 // joint), renormalised. A mesh without bones in a skinned scene follows the nearest joint node at
-// or above its node (weight 1), or no joint (zero weights).
+// or above its node (weight 1), or no joint (zero weights). The scene passed check_assimp_scene
+// (finite offset matrices, weights naming vertices in range) before post-processing.
 #include <assimp/scene.h>
 
 #include <algorithm>
@@ -35,13 +36,6 @@ Mat4 to_mat4(const aiMatrix4x4& a) {
     for (unsigned r = 0; r < 4; ++r)
         for (unsigned c = 0; c < 4; ++c) m[c * 4 + r] = a[r][c];
     return m;
-}
-
-bool finite(const aiMatrix4x4& m) {
-    for (unsigned r = 0; r < 4; ++r)
-        for (unsigned c = 0; c < 4; ++c)
-            if (!std::isfinite(m[r][c])) return false;
-    return true;
 }
 
 bool same_matrix(const Mat4& a, const Mat4& b) {
@@ -125,8 +119,6 @@ bool place_assimp_meshes(const std::string& name, const aiScene& scene, size_t i
             for (unsigned b = 0; b < mesh.mNumBones; ++b) {
                 const aiBone& bone = *mesh.mBones[b];
                 const std::string bname = bone_name(bone.mName);
-                if (!finite(bone.mOffsetMatrix))
-                    return fail(error, name, 0, "bone '" + printable(bname, 60) + "': offset matrix holds NaN or infinity");
                 if (joints.by_name.count(bname)) continue;
                 joints.by_name.emplace(bname, uint32_t(joints.names.size()));
                 joints.names.push_back(bname);
@@ -143,8 +135,11 @@ bool place_assimp_meshes(const std::string& name, const aiScene& scene, size_t i
     ca::reserve_large(out.positions, 3 * nv);
     ca::reserve_large(out.triangles, 3 * nt);
     SkinData& skin = out.skin;
-    std::vector<std::pair<double, uint32_t>> rows;  // kMaxInfluences per vertex while reading
-    if (nj > 0) rows.reserve(nv * kMaxInfluences);
+    // kMaxInfluences slots per vertex while reading, cut to the influences used at the end
+    if (nj > 0) {
+        ca::reserve_large(skin.vertex_joints, kMaxInfluences * nv);
+        ca::reserve_large(skin.vertex_weights, kMaxInfluences * nv);
+    }
     size_t widest = 1;
     for (const Instance& in : instances) {
         const aiMesh& mesh = *scene.mMeshes[in.mesh];
@@ -220,19 +215,24 @@ bool place_assimp_meshes(const std::string& name, const aiScene& scene, size_t i
                 const double p[3] = {q[0], q[1], q[2]};
                 transform_point(blend, p, q);
             }
-            for (size_t k = 0; k < kMaxInfluences; ++k)
-                rows.push_back(k < row.size() ? std::make_pair(sum > 0 ? row[k].first / sum : 0.0, row[k].second)
-                                              : std::make_pair(0.0, 0u));
+            for (size_t k = 0; k < kMaxInfluences; ++k) {
+                skin.vertex_weights.push_back(k < row.size() && sum > 0 ? row[k].first / sum : 0.0);
+                skin.vertex_joints.push_back(k < row.size() ? row[k].second : 0u);
+            }
         }
     }
     if (nj == 0) return true;
 
     skin.influences = widest > 4 ? kMaxInfluences : 4;
-    for (size_t v = 0; v < nv; ++v)
-        for (size_t k = 0; k < skin.influences; ++k) {
-            skin.vertex_weights.push_back(rows[v * kMaxInfluences + k].first);
-            skin.vertex_joints.push_back(rows[v * kMaxInfluences + k].second);
-        }
+    if (skin.influences < kMaxInfluences) {  // in place: row v moves to v * influences
+        for (size_t v = 0; v < nv; ++v)
+            for (size_t k = 0; k < skin.influences; ++k) {
+                skin.vertex_weights[v * skin.influences + k] = skin.vertex_weights[v * kMaxInfluences + k];
+                skin.vertex_joints[v * skin.influences + k] = skin.vertex_joints[v * kMaxInfluences + k];
+            }
+        skin.vertex_weights.resize(nv * skin.influences);
+        skin.vertex_joints.resize(nv * skin.influences);
+    }
     for (size_t j = 0; j < nj; ++j) {
         skin.joint_names.push_back(joints.names[j]);
         const aiNode* node = joints.nodes[j];

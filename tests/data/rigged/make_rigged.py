@@ -4,14 +4,14 @@ Three characters, each from simple meshes (cylinders, spheres, boxes) joined, re
 closed surface and decimated to a couple of thousand triangles, bound to an armature with
 automatic weights (parent with ARMATURE_AUTO, Blender's bone heat), with an action of a few
 keyframes; each is exported as <name>.glb (glTF 2.0 binary, +Y up) and <name>.fbx (FBX binary,
-no leaf bones). The mesh is bound at the armature's rest pose, the objects carry identity
+no leaf bones), the snake also as snake.dae (Collada 1.4). The mesh is bound at the armature's rest pose, the objects carry identity
 transforms, and the action's first frame is the rest pose (the scene is left on it for export).
     humanoid   a figure with a head, arms and legs (15 joints)
     quadruped  a four-legged animal with a neck, head and a three-joint tail (18 joints)
     snake      a tapering tentacle along +Y driven by a chain of 8 joints
 The joints each character gets are listed in RIGS below; tests/unit/io/test_skin.cpp checks the
 files against them. Regenerate (Blender 3.4, Debian's `blender` package) from the repository root:
-    blender -b --factory-startup --python tests/data/rigged/make_rigged.py
+    blender -b --factory-startup --python tests/data/rigged/make_rigged.py [-- NAME...]
 FBX files hold a creation time, so a regenerated file differs in bytes but not in content.
 """
 import math
@@ -109,6 +109,8 @@ RIGS = {
 }
 
 TARGET_TRIANGLES = 2400
+# characters also exported as Collada (text, so only the smallest, to keep the files small)
+COLLADA = {"snake"}
 
 
 def clear_scene():
@@ -232,6 +234,10 @@ def export(name, body, arm):
                              object_types={"ARMATURE", "MESH"}, add_leaf_bones=False, bake_anim=True,
                              bake_anim_use_all_actions=False, bake_anim_use_nla_strips=False,
                              use_mesh_modifiers=False, mesh_smooth_type="OFF", use_armature_deform_only=True)
+    if name in COLLADA:
+        bpy.ops.wm.collada_export(filepath=os.path.join(HERE, name + ".dae"), selected=True, include_armatures=True,
+                                  include_children=True, include_animations=True, deform_bones_only=True,
+                                  use_texture_copies=False)
 
 
 def main():
