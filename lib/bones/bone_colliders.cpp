@@ -105,7 +105,7 @@ Status make_bone_colliders(const Mesh& mesh, const ShapeQueries& shape, const No
                                       if (neighbours[i].empty()) continue;
                                       std::vector<Proxy> near;
                                       for (uint32_t n : neighbours[i]) near.push_back(previous[n]);
-                                      fits[i] = fit_apart(parts[fitted[i]], part_points[i], previous[i], near, kOverlapWeight,
+                                      fits[i] = fit_apart(parts[fitted[i]], part_points[i], previous[i], near, kOverlapWeight, shape,
                                                           opt.seed ^ (0xA54FF53A5F1D36F1ull * (fitted[i] + 1)));
                                   }
                               }))

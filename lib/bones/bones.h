@@ -108,11 +108,13 @@ double proxy_volume(const Proxy& p);
 // inscribed: the pair of medial balls whose hull, shrunk by its outside bound, is largest.
 Proxy fit_bone(const SurfacePart& part, const std::vector<Ball>& balls, const std::vector<Vec3>& points,
                const ShapeQueries& shape, const BoneColliderOptions& opt);
-// Conservative: `start` refitted (Nelder-Mead on its balls) to the least volume plus `weight` times
-// its overlap with `neighbours` (measured on seeded points inside each, softly), still holding
-// `points`; then grown to hold every corner of the part.
+// Conservative: `start` refitted (Nelder-Mead on its balls) to the least volume outside the body
+// (shape.winding; measured on seeded points, softly) plus a fraction of its own volume plus
+// `weight` times its overlap with `neighbours` (measured on seeded points inside each, softly),
+// still holding `points`; then grown to hold every corner of the part. Without a winding number:
+// its own volume in full plus the overlap.
 Proxy fit_apart(const SurfacePart& part, const std::vector<Vec3>& points, const Proxy& start,
-                const std::vector<Proxy>& neighbours, double weight, uint64_t seed);
+                const std::vector<Proxy>& neighbours, double weight, const ShapeQueries& shape, uint64_t seed);
 // p grown (or shrunk) uniformly until it holds every point of `points` with no slack (plus `margin`).
 Proxy hold_points(const Proxy& p, const std::vector<Vec3>& points, double margin);
 

@@ -12,6 +12,7 @@
 #include "bones.h"
 
 #include "rng.h"
+#include "winding.h"
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
@@ -29,9 +30,23 @@ constexpr double kHoldMargin = 1e-9;
 // for the centres, of the start's larger radius for the radii).
 constexpr int kSearchEvaluations = 400;
 constexpr double kCentreStep = 0.1, kRadiusStep = 0.2;
+// The search holds a spread subset of the part's samples (the cost of each trial is linear in
+// it), then the part's corners the found shape misses most are added and the search resumed, a
+// few rounds, so the last growth to every corner adds little: at most this many samples, this
+// many corners added per round, and rounds.
+constexpr size_t kSearchPoints = 256;
+constexpr size_t kAddedCorners = 32;
+constexpr int kRefineRounds = 3;
+constexpr double kRefineTolerance = 1e-3;   // of the part's extent
 // Apart from the neighbours: points inside each neighbour the overlap is measured on, and the
 // softness of their inside test (a fraction of the part's extent; it keeps the objective smooth).
-constexpr size_t kApartPoints = 800;
+constexpr size_t kApartPoints = 200;
+// Apart from the neighbours, the volume outside the body counts in full and the collider's own
+// volume (mostly inside the body, where it costs nothing unless it reaches a neighbour, which the
+// overlap term counts) only lightly: the outside volume is measured on fixed seeded points of the
+// start's box, grown by a quarter each side, that lie outside the body (winding number).
+constexpr size_t kOutsidePoints = 3000;
+constexpr double kOwnVolumeWeight = 0.25, kOutsideBoxGrowth = 0.25;
 constexpr double kApartSoftness = 0.01;
 // Inscribed: the medial balls paired (the largest, and those at the ends of their line).
 constexpr size_t kInscribedLargest = 12, kInscribedEnds = 4;
@@ -131,6 +146,40 @@ Params nelder_mead(F&& f, const Params& x0, const Params& step, int evaluations)
     return s[best];
 }
 
+// At most kSearchPoints of the samples, evenly strided (they are seeded and area-uniform, so any
+// stride of them is spread over the part).
+std::vector<Vec3> search_points(const std::vector<Vec3>& points) {
+    if (points.size() <= kSearchPoints) return points;
+    std::vector<Vec3> out;
+    out.reserve(kSearchPoints);
+    for (size_t i = 0; i < kSearchPoints; ++i) out.push_back(points[i * points.size() / kSearchPoints]);
+    return out;
+}
+
+// Nelder-Mead on cost (which holds `pts`) from x, then rounds of adding the part's corners the
+// result misses most (by more than `tolerance`) to `pts` and resuming with smaller steps.
+// Deterministic: ties between corners go to the lower index.
+template <class F>
+Params search_held(F&& cost, Params x, const Params& step, std::vector<Vec3>& pts, const SurfacePart& part,
+                   double tolerance) {
+    std::vector<std::pair<double, uint32_t>> miss;
+    for (int round = 0;; ++round) {
+        x = nelder_mead(cost, x, round == 0 ? step : Params(0.25 * step), round == 0 ? kSearchEvaluations : kSearchEvaluations / 2);
+        if (round == kRefineRounds) break;
+        const Proxy p = hold_points(from_params(x), pts, 0);
+        miss.clear();
+        for (size_t i = 0; i < part.corners.size(); ++i) {
+            const double d = proxy_distance(p, part.corners[i]);
+            if (d > tolerance) miss.emplace_back(-d, uint32_t(i));
+        }
+        if (miss.empty()) break;
+        const size_t k = std::min(miss.size(), kAddedCorners);
+        std::partial_sort(miss.begin(), miss.begin() + long(k), miss.end());
+        for (size_t i = 0; i < k; ++i) pts.push_back(part.corners[miss[i].second]);
+    }
+    return x;
+}
+
 Proxy fit_conservative(const SurfacePart& part, const std::vector<Ball>& balls, const std::vector<Vec3>& points,
                        bool spheres_only) {
     std::vector<uint32_t> all(points.size());
@@ -142,26 +191,27 @@ Proxy fit_conservative(const SurfacePart& part, const std::vector<Ball>& balls, 
     for (const Vec3& x : points) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
     const double extent = (hi - lo).norm();
     starts.push_back(Proxy{ProxyKind::sphere, Ball{0.5 * (lo + hi), 0.0}, Ball{0.5 * (lo + hi), 0.0}});
-    const auto cost = [&](const Params& x) { return proxy_volume(hold_points(from_params(x), points, 0)); };
+    std::vector<Vec3> pts;
+    const auto cost = [&](const Params& x) { return proxy_volume(hold_points(from_params(x), pts, 0)); };
     Proxy best;
     double best_volume = std::numeric_limits<double>::infinity();
     for (const Proxy& start : starts) {
         const bool sphere = spheres_only || start.kind == ProxyKind::sphere;
         Proxy s = start;
         if (sphere) s.b = s.a;
-        s = hold_points(s, points, 0);
+        pts = search_points(points);
+        s = hold_points(s, pts, 0);
         Params step(sphere ? 3 : 8);
         step.setConstant(kCentreStep * extent);
         if (!sphere) step[6] = step[7] = kRadiusStep * std::max({s.a.radius, s.b.radius, 1e-3 * extent});
-        Params x = nelder_mead(cost, to_params(s, sphere), step, kSearchEvaluations);
-        x = nelder_mead(cost, x, 0.25 * step, kSearchEvaluations / 2);   // a restart from the best
-        const Proxy p = hold_points(from_params(x), points, 0);
+        const Params x = search_held(cost, to_params(s, sphere), step, pts, part, kRefineTolerance * extent);
+        const Proxy p = hold_points(hold_points(from_params(x), pts, 0), part.corners, kHoldMargin);
         const double v = proxy_volume(p);
         if (v < best_volume) best_volume = v, best = p;
         if (spheres_only) break;   // every start gives the same sphere search
     }
     if (spheres_only) best.b = best.a, best.kind = ProxyKind::sphere;
-    return hold_points(best, part.corners, kHoldMargin);
+    return best;
 }
 
 Proxy fit_inscribed(const std::vector<Ball>& balls, const ShapeQueries& shape, bool spheres_only) {
@@ -233,9 +283,9 @@ Proxy hold_points(const Proxy& p, const std::vector<Vec3>& points, double margin
 }
 
 Proxy fit_apart(const SurfacePart& part, const std::vector<Vec3>& points, const Proxy& start,
-                const std::vector<Proxy>& neighbours, double weight, uint64_t seed) {
+                const std::vector<Proxy>& neighbours, double weight, const ShapeQueries& shape, uint64_t seed) {
     const bool sphere = start.kind == ProxyKind::sphere;
-    const std::vector<Vec3>& pts = points.empty() ? part.corners : points;
+    std::vector<Vec3> pts = search_points(points.empty() ? part.corners : points);
     // fixed points inside each neighbour (common to every trial, so the objective is a function of
     // the shape alone), and the softness of the inside test: a hundredth of the part's extent
     std::vector<std::vector<Vec3>> inside(neighbours.size());
@@ -250,11 +300,27 @@ Proxy fit_apart(const SurfacePart& part, const std::vector<Vec3>& points, const 
             if (proxy_distance(neighbours[n], x) <= 0) inside[n].push_back(x);
         }
     }
+    std::vector<Vec3> outside;
+    double cell = 0;
+    if (shape.winding) {
+        auto box = proxy_box(start);
+        const Vec3 grow = kOutsideBoxGrowth * (box.second - box.first);
+        box.first -= grow, box.second += grow;
+        const Vec3 e = box.second - box.first;
+        cell = e.x() * e.y() * e.z() / double(kOutsidePoints);
+        for (size_t i = 0; i < kOutsidePoints; ++i) {
+            Vec3 x;
+            for (int k = 0; k < 3; ++k) x[k] = box.first[k] + e[k] * rng.uniform();
+            if (!shape.winding->inside(x)) outside.push_back(x);
+        }
+    }
     Vec3 lo = pts.front(), hi = lo;
     for (const Vec3& x : pts) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
     const double extent = (hi - lo).norm(), soft = kApartSoftness * extent;
     const auto cost = [&](const Params& x) {
         const Proxy p = hold_points(from_params(x), pts, 0);
+        double out = 0;
+        for (const Vec3& y : outside) out += 1 / (1 + std::exp(std::min(proxy_distance(p, y) / soft, 50.0)));
         double lap = 0;
         for (size_t n = 0; n < inside.size(); ++n) {
             if (inside[n].empty()) continue;
@@ -262,13 +328,12 @@ Proxy fit_apart(const SurfacePart& part, const std::vector<Vec3>& points, const 
             for (const Vec3& y : inside[n]) in += 1 / (1 + std::exp(std::min(proxy_distance(p, y) / soft, 50.0)));
             lap += volume[n] * in / double(inside[n].size());
         }
-        return proxy_volume(p) + weight * lap;
+        return (shape.winding ? kOwnVolumeWeight : 1.0) * proxy_volume(p) + cell * out + weight * lap;
     };
     Params step(sphere ? 3 : 8);
     step.setConstant(0.5 * kCentreStep * extent);
     if (!sphere) step[6] = step[7] = kRadiusStep * std::max({start.a.radius, start.b.radius, 1e-3 * extent});
-    Params x = nelder_mead(cost, to_params(start, sphere), step, kSearchEvaluations);
-    x = nelder_mead(cost, x, 0.25 * step, kSearchEvaluations / 2);
+    const Params x = search_held(cost, to_params(start, sphere), step, pts, part, kRefineTolerance * extent);
     Proxy p = hold_points(from_params(x), pts, 0);
     if (sphere) p.b = p.a, p.kind = ProxyKind::sphere;
     return hold_points(p, part.corners, kHoldMargin);
