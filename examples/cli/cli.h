@@ -33,6 +33,9 @@ struct RunOptions {
     ca_evaluate_options evaluation;
     ca_rig_options rig;                      // --rig and --correspondence (its smoothing too)
     ca_proxy_options proxy;                  // --proxies: engine proxies of the skeleton
+    ca_bone_collider_options bone;           // --bone-colliders: a collider per bone of the skin
+    std::string bone_mode;                   // inscribed | conservative
+    std::string skip_bones;                  // --skip-bones: joint names, comma-separated
     std::string format;                      // input format name; "" = by extension
     std::string candidate_kind = "voronoi";  // voronoi | random | a ball file
     std::string normals = "given";           // a point cloud's normals: given | unoriented | estimate
@@ -56,6 +59,8 @@ struct Outputs {
     std::string correspondence, rig;   // --correspondence FILE.json, --rig OUT.glb
     std::string proxies_json;   // the engine proxies (--proxies) and their stats
     std::string colliders;      // --colliders OUT.glb: the input mesh with the proxies as glTF physics
+    std::string bone_colliders;       // --bone-colliders OUT.glb: the skinned input with a collider per bone
+    std::string bone_colliders_json;  // --bone-colliders-json FILE.json: those colliders and their stats
 };
 
 // A failed run: a library status (CA_ERROR_*, exit 1) or a tool error (FILE_ERROR exit 3,
@@ -125,6 +130,15 @@ int parse_command_line(CLI::App& app, int argc, char** argv, std::string& error)
 // The rig file carries the engine proxies (if any) as colliders.
 bool write_rig_outputs(ca_context* ctx, const caio::MeshData& mesh, const ca_skeleton* sk, const RunOptions& o,
                        const Outputs& out, const std::vector<caio::ProxyData>& proxies, Json& report, Failure& failure);
+
+// --bone-colliders and --bone-colliders-json (bone_outputs.cpp): nothing when neither is asked
+// for; a collider per joint of the input's skin (or, for an input without one, of the rig that
+// --rig writes), written and reported as "bone_colliders". An input with no skin and no --rig is a
+// usage error (exit 2).
+// The usage error of --bone-colliders on an input without a skin and without --rig.
+Failure bone_skin_missing(const std::string& input);
+bool write_bone_outputs(ca_context* ctx, const std::string& input, const caio::MeshData& mesh, const ca_candidate_set* set,
+                        const ca_skeleton* sk, const RunOptions& o, const Outputs& out, Json& report, Failure& failure);
 
 int evaluate_command(int argc, char** argv);
 int batch_command(int argc, char** argv);

@@ -128,6 +128,15 @@ void print_summary(const cli::Json& j, const cli::RunOptions& o) {
                     p["hd_two_sided"].get<double>(),
                     p["union_volume"].get<double>() > 0 ? p["outside_volume"].get<double>() / p["union_volume"].get<double>() : 0.0);
     }
+    if (j.contains("bone_colliders")) {
+        const cli::Json& b = j["bone_colliders"];
+        std::printf("bones       %llu colliders (%s) on the %llu joints of the %s's skin, %llu skipped: %.2f %% of the parts' "
+                    "samples held, %.3g of the union's volume outside the shape\n",
+                    b["count"].get<unsigned long long>(), b["mode"].get<std::string>().c_str(), b["joints"].get<unsigned long long>(),
+                    b["skin"].get<std::string>().c_str(), b["joints_skipped"].get<unsigned long long>(),
+                    100 * b["contained_fraction"].get<double>(),
+                    b["union_volume"].get<double>() > 0 ? b["outside_volume"].get<double>() / b["union_volume"].get<double>() : 0.0);
+    }
     const cli::Json& t = j["time_s"];
     std::printf("time        read %.3f s, candidates %.3f s, select %.3f s, connect %.3f s, total %.3f s\n", t["read"].get<double>(),
                 t["candidates"].get<double>(), t["select"].get<double>(), t["connect"].get<double>(), t["total"].get<double>());
@@ -170,6 +179,14 @@ int single_run(int argc, char** argv) {
     app.add_option("--colliders", out.colliders,
                    "write the input mesh with the engine proxies (--proxies) as glTF physics colliders: OUT.glb or OUT.gltf")
         ->group(files);
+    app.add_option("--bone-colliders", out.bone_colliders,
+                   "write the skinned input (a glTF written back, else a new .glb; an unskinned input with --rig: the rig) "
+                   "with one collider per bone on its joint node as glTF physics (VRM: spring-bone colliders too): "
+                   "OUT.glb or OUT.gltf")
+        ->group(files);
+    app.add_option("--bone-colliders-json", out.bone_colliders_json,
+                   "write the bone colliders (placed in their joints' frames) and their stats as JSON")
+        ->group(files);
     app.add_option("--preview", out.preview, "also draw the mesh and the skeleton: OUT.png or OUT.svg")->group(files);
     app.add_option("--export-samples", out.export_samples, "write the covered surface samples (v x y z)")->group(files);
     app.add_option("--export-candidates", out.export_candidates, "write the candidate balls (v x y z r)")->group(files);
@@ -200,6 +217,11 @@ int single_run(int argc, char** argv) {
         return report_failure({"USAGE_ERROR", -1, "--proxies-json needs --proxies spheres|capsules (see coverage-axis --help)", 2}, json, input);
     if (!out.colliders.empty() && o.proxies.empty())
         return report_failure({"USAGE_ERROR", -1, "--colliders needs --proxies spheres|capsules (see coverage-axis --help)", 2}, json, input);
+    if (out.bone_colliders.empty() && out.bone_colliders_json.empty())
+        for (const char* flag : {"--bone-mode", "--skip-bones", "--bone-min-size", "--bone-min-share"})
+            if (app.count(flag))
+                return report_failure({"USAGE_ERROR", -1, std::string(flag) + " needs --bone-colliders or --bone-colliders-json", 2},
+                                      json, input);
     if (out.ma.empty() && input == "-")
         return report_failure({"USAGE_ERROR", -1, "reading standard input needs -o OUT.ma", 2}, json, input);
     if (out.ma.empty()) out.ma = default_ma_path(input);

@@ -1,6 +1,6 @@
 // pipeline.cpp: one run of the tool through the library's C ABI: read the input, candidates
 // (generated or from files), selection, connection, then the outputs (.ma, .obj, .ply, glTF,
-// preview, colliders) and the JSON report. Failures come back as a Failure (never printed here),
+// preview, colliders, bone colliders) and the JSON report. Failures come back as a Failure (never printed here),
 // so the single run and the batch command report them alike.
 #include "cli.h"
 #include "gltf_physics.h"
@@ -319,7 +319,8 @@ Json outputs_json(const Outputs& out) {
     Json j = {{"ma", out.ma}};
     for (const auto& [key, path] : {std::pair<const char*, const std::string&>{"obj", out.obj}, {"ply", out.ply},
                                     {"gltf", out.gltf}, {"preview", out.preview}, {"proxies_json", out.proxies_json},
-                                    {"correspondence", out.correspondence}, {"rig", out.rig}, {"colliders", out.colliders}})
+                                    {"correspondence", out.correspondence}, {"rig", out.rig}, {"colliders", out.colliders},
+                                    {"bone_colliders", out.bone_colliders}, {"bone_colliders_json", out.bone_colliders_json}})
         if (!path.empty()) j[key] = path;
     return j;
 }
@@ -430,6 +431,8 @@ Outcome run_pipeline(const std::string& input, const RunOptions& o, const Output
     caio::MeshData mesh;
     std::string err;
     if (!read_input(input, o.format, o.read, mesh, err)) return r.failure = file_failure(err), r;
+    if (!(out.bone_colliders.empty() && out.bone_colliders_json.empty()) && mesh.skin.empty() && out.rig.empty())
+        return r.failure = bone_skin_missing(input), r;   // before the skeleton is made, not after
     t.read = since(t_start);
 
     Owned owned;
@@ -482,6 +485,10 @@ Outcome run_pipeline(const std::string& input, const RunOptions& o, const Output
     if (!(out.correspondence.empty() && out.rig.empty()) &&
         (!context_for(owned, desc, o.time_limit_s, t_start, "rig", r.failure) ||
          !write_rig_outputs(owned.ctx, mesh, owned.sk, o, out, proxies, rig_report, r.failure)))
+        return r;
+    if (!(out.bone_colliders.empty() && out.bone_colliders_json.empty()) &&
+        (!context_for(owned, desc, o.time_limit_s, t_start, "bone colliders", r.failure) ||
+         !write_bone_outputs(owned.ctx, input, mesh, owned.set, owned.sk, o, out, rig_report, r.failure)))
         return r;
     t.write = since(t0);
 

@@ -89,6 +89,7 @@ RunOptions::RunOptions() {
     ca_evaluate_options_init(&evaluation);
     ca_rig_options_init(&rig);
     ca_proxy_options_init(&proxy);
+    ca_bone_collider_options_defaults(&bone, sizeof bone);
     ca_context_desc desc;
     ca_context_desc_init(&desc);
     threads = desc.threads;
@@ -97,6 +98,7 @@ RunOptions::RunOptions() {
     effort = name_of(kEfforts, select.effort);
     connect_route = name_of(kRoutes, connect.method);
     proxy_mode = name_of(kProxyModes, proxy.mode);
+    bone_mode = name_of(kProxyModes, bone.mode);
     up = std::string(1, preview.up);
     preview_size = std::to_string(preview.width) + "x" + std::to_string(preview.height);
 }
@@ -189,6 +191,16 @@ void add_run_options(CLI::App& app, RunOptions& o) {
     app.add_option("--proxy-count", o.proxy.count, "at most K proxies")->capture_default_str()->check(at_least(1))->group(engine);
     app.add_option("--proxy-mode", o.proxy_mode, "inscribed (inside the shape) | conservative (containing the surface)")
         ->capture_default_str()->check(CLI::IsMember(keys(kProxyModes)))->group(engine);
+    const std::string bones = "Bone colliders (--bone-colliders, --bone-colliders-json; docs/bone_colliders.md)";
+    app.add_option("--bone-mode", o.bone_mode, "conservative (each collider holds its bone's part) | inscribed (inside the body)")
+        ->capture_default_str()->check(CLI::IsMember(keys(kProxyModes)))->group(bones);
+    app.add_option("--skip-bones", o.skip_bones, "joints to give no collider: NAME[,NAME...] (names as the skin gives them)")
+        ->group(bones);
+    app.add_option("--bone-min-size", o.bone.min_size, "drop colliders whose radius is below this % of the bbox diagonal")
+        ->capture_default_str()->check(at_least(0))->group(bones);
+    app.add_option("--bone-min-share", o.bone.min_share,
+                   "no collider for a joint that dominates less than this fraction of the surface area")
+        ->capture_default_str()->check(at_least(0))->group(bones);
     app.add_flag("--evaluate", o.evaluate, "measure the skeleton: Hausdorff distances in % of the bbox diagonal");
     app.add_option("--threads", o.threads, "worker threads (0 = all cores)")->capture_default_str()->check(at_least(0));
 }
@@ -216,6 +228,7 @@ bool finish_run_options(const CLI::App& app, RunOptions& o, std::string& error) 
         return false;
     }
     if (!o.proxies.empty()) o.proxy.shapes = value_of(kProxyShapes, o.proxies);
+    o.bone.mode = value_of(kProxyModes, o.bone_mode);
     if (app.count("--no-fit") && (app.count("--fit") || app.count("--fit-thorough") || app.count("--fit-covered"))) {
         error = "--no-fit cannot be combined with --fit, --fit-thorough or --fit-covered";
         return false;

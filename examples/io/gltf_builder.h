@@ -55,6 +55,64 @@ struct Builder {
                              {"type", components == 3 ? "VEC3" : "SCALAR"}, {"min", lo}, {"max", hi}});
         return int(accessors.size()) - 1;
     }
+    // JOINTS_n / WEIGHTS_n of a skinned primitive, `influences` (a multiple of 4, at most 8) slots
+    // per vertex, added to `attributes`. Weights are written as floats that sum to 1 as floats (the
+    // rounding goes to the vertex's heaviest slot); an unused slot names joint 0 with weight 0, as
+    // the validator expects; a vertex with no weight at all is bound wholly to `fallback_joint`
+    // (glTF has no unskinned vertex in a skinned primitive). Joints as unsigned bytes up to 256
+    // joints, else unsigned shorts.
+    void skin_weights(const std::vector<uint32_t>& vertex_joints, const std::vector<double>& vertex_weights,
+                      size_t influences, size_t joint_count, uint32_t fallback_joint, json& attributes) {
+        const size_t nv = influences ? vertex_weights.size() / influences : 0;
+        std::vector<uint16_t> joints(influences * nv, 0);
+        std::vector<float> weights(influences * nv, 0.0f);
+        for (size_t i = 0; i < nv; ++i) {
+            size_t heaviest = 0;
+            for (size_t k = 0; k < influences; ++k) {
+                const double w = vertex_weights[influences * i + k];
+                if (!(w > 0)) continue;
+                joints[influences * i + k] = uint16_t(vertex_joints[influences * i + k]);
+                weights[influences * i + k] = float(w);
+                if (w > vertex_weights[influences * i + heaviest]) heaviest = k;
+            }
+            if (!(vertex_weights[influences * i + heaviest] > 0)) {
+                joints[influences * i] = uint16_t(fallback_joint);
+                weights[influences * i] = 1.0f;
+                continue;
+            }
+            float rest = 0;
+            for (size_t k = 0; k < influences; ++k)
+                if (k != heaviest) rest += weights[influences * i + k];
+            weights[influences * i + heaviest] = 1.0f - rest;
+        }
+        for (size_t set = 0; set * 4 < influences; ++set) {
+            std::vector<uint16_t> j16(4 * nv);
+            std::vector<float> w4(4 * nv);
+            for (size_t i = 0; i < nv; ++i)
+                for (size_t k = 0; k < 4; ++k) {
+                    j16[4 * i + k] = joints[influences * i + 4 * set + k];
+                    w4[4 * i + k] = weights[influences * i + 4 * set + k];
+                }
+            if (joint_count <= 256) {
+                const std::vector<uint8_t> small(j16.begin(), j16.end());
+                const int v = view(small.data(), small.size(), kArrayBuffer);
+                accessors.push_back({{"bufferView", v}, {"componentType", kUnsignedByte}, {"count", nv}, {"type", "VEC4"}});
+            } else {
+                const int v = view(j16.data(), j16.size() * sizeof(uint16_t), kArrayBuffer);
+                accessors.push_back({{"bufferView", v}, {"componentType", kUnsignedShort}, {"count", nv}, {"type", "VEC4"}});
+            }
+            attributes["JOINTS_" + std::to_string(set)] = int(accessors.size()) - 1;
+            const int wv = view(w4.data(), w4.size() * sizeof(float), kArrayBuffer);
+            accessors.push_back({{"bufferView", wv}, {"componentType", kFloat}, {"count", nv}, {"type", "VEC4"}});
+            attributes["WEIGHTS_" + std::to_string(set)] = int(accessors.size()) - 1;
+        }
+    }
+    // Column-major float MAT4s (inverse bind matrices); no target, as the spec asks of them.
+    int matrices(const std::vector<float>& m) {
+        const int v = view(m.data(), m.size() * sizeof(float), 0);
+        accessors.push_back({{"bufferView", v}, {"componentType", kFloat}, {"count", m.size() / 16}, {"type", "MAT4"}});
+        return int(accessors.size()) - 1;
+    }
     template <class Index>
     int indices(const std::vector<Index>& data, int component_type) {
         const int v = view(data.data(), data.size() * sizeof(Index), kElementArrayBuffer);

@@ -35,40 +35,14 @@ bool check(const MeshData& mesh, const RigData& rig, std::string& what) {
 
 json build(const MeshData& mesh, const RigData& rig, std::string& bin) {
     gltf::Builder b;
-    const size_t nv = mesh.positions.size() / 3, nj = rig.parents.size();
+    const size_t nj = rig.parents.size();
     const std::vector<float> pos(mesh.positions.begin(), mesh.positions.end());
     json attributes = {{"POSITION", b.floats(pos, 3)}};
     json primitive = {{"mode", mesh.triangles.empty() ? kModePoints : kModeTriangles}};
     if (!mesh.triangles.empty()) primitive["indices"] = b.indices(mesh.triangles, gltf::kUnsignedInt);
 
-    // joints and weights: float weights summing to 1 as floats; an unused slot is joint 0, weight 0
-    std::vector<uint16_t> joints(4 * nv, 0);
-    std::vector<float> weights(4 * nv, 0.0f);
-    for (size_t i = 0; i < nv; ++i) {
-        float rest = 0;
-        for (int k = 0; k < 4; ++k) {
-            const double w = rig.vertex_weights[4 * i + k];
-            if (w <= 0) continue;
-            joints[4 * i + k] = uint16_t(rig.vertex_joints[4 * i + k]);
-            weights[4 * i + k] = float(w);
-            if (k > 0) rest += weights[4 * i + k];
-        }
-        weights[4 * i] = 1.0f - rest;   // slot 0 holds the largest weight
-    }
-    int joints_accessor;
-    if (nj <= 256) {
-        const std::vector<uint8_t> small(joints.begin(), joints.end());
-        const int v = b.view(small.data(), small.size(), gltf::kArrayBuffer);
-        b.accessors.push_back({{"bufferView", v}, {"componentType", gltf::kUnsignedByte}, {"count", nv}, {"type", "VEC4"}});
-    } else {
-        const int v = b.view(joints.data(), joints.size() * sizeof(uint16_t), gltf::kArrayBuffer);
-        b.accessors.push_back({{"bufferView", v}, {"componentType", gltf::kUnsignedShort}, {"count", nv}, {"type", "VEC4"}});
-    }
-    joints_accessor = int(b.accessors.size()) - 1;
-    const int wv = b.view(weights.data(), weights.size() * sizeof(float), gltf::kArrayBuffer);
-    b.accessors.push_back({{"bufferView", wv}, {"componentType", gltf::kFloat}, {"count", nv}, {"type", "VEC4"}});
-    attributes["JOINTS_0"] = joints_accessor;
-    attributes["WEIGHTS_0"] = int(b.accessors.size()) - 1;
+    // the rig's weights are normalised, so a vertex always has one (the fallback is never used)
+    b.skin_weights(rig.vertex_joints, rig.vertex_weights, 4, nj, 0, attributes);
     primitive["attributes"] = attributes;
 
     // inverse bind matrices (column-major): a translation by minus the joint's position
@@ -78,9 +52,7 @@ json build(const MeshData& mesh, const RigData& rig, std::string& bin) {
         m[0] = m[5] = m[10] = m[15] = 1.0f;
         for (int c = 0; c < 3; ++c) m[12 + c] = float(-rig.joints[3 * j + c]);
     }
-    const int iv = b.view(ibm.data(), ibm.size() * sizeof(float), 0);
-    b.accessors.push_back({{"bufferView", iv}, {"componentType", gltf::kFloat}, {"count", nj}, {"type", "MAT4"}});
-    const int ibm_accessor = int(b.accessors.size()) - 1;
+    const int ibm_accessor = b.matrices(ibm);
 
     // nodes: 0 the mesh, then joint j as node 1 + j, translated from its parent
     json nodes = json::array();

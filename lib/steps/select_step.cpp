@@ -71,22 +71,29 @@ Status select_step(const CandidateSet& set, const SelectRequest& request, const 
         st = select_target_error(set, so, te, monitor, ter);
         if (!st.ok()) return st;
         bool fitted = te.fit.has_value();
-        // Searching further: unfitted probes that all miss E are searched again fitted (a mesh),
-        // and the selection is marked so that connect's automatic fit fits it as judged. The
-        // better of the two searches is kept: a reached one, else the lower HD.
+        // Searching further (a mesh, probes unfitted): a second search with fitted probes, and the
+        // selection is marked so that connect's automatic fit fits it as judged. Unfitted probes
+        // that all miss E: the better of the two searches is kept, a reached one, else the lower HD.
         ConnectRequest fitted_probe = probe;
         fitted_probe.fit = FitMode::once;
         const std::optional<FitOptions> further = fit_options(fitted_probe, set);
-        if (!ter.reached && !fitted && further) {
+        // When the unfitted probes reached E, the fitted search starts at their best delta and looks
+        // for fewer balls (the fit lowers the HD of most skeletons, so a larger delta may pass
+        // fitted): the fewest balls within E of either search is kept, fitted or not.
+        if (!fitted && further && !(ter.reached && ter.selection.indices.size() <= 1)) {
             TargetErrorOptions tf = te;
             tf.fit = further;
+            SelectOptions from = so;
+            if (ter.reached) from.delta = ter.selection.delta;
             TargetErrorResult second;
-            st = select_target_error(set, so, tf, monitor, second);
+            st = select_target_error(set, from, tf, monitor, second);
             // the first search's result stands when the second cannot run to a probe (time limit)
             if (!st.ok() && st.code != Code::time_limit) return st;
             if (st.ok()) {
                 const uint32_t probes = ter.selection.probes + second.selection.probes;
-                if (second.reached || second.evaluation.hd_two_sided < ter.evaluation.hd_two_sided) {
+                const bool better = ter.reached ? second.reached && second.selection.indices.size() < ter.selection.indices.size()
+                                                : second.reached || second.evaluation.hd_two_sided < ter.evaluation.hd_two_sided;
+                if (better) {
                     ter = std::move(second);
                     fitted = true;
                 }

@@ -98,8 +98,9 @@ struct SelectResult {
     double hd_reached = -1;       // the searches: the HD of the returned selection; -1 not measured
 };
 
-// Checks the request and runs its strategy: target_error's search when set (unfitted probes that
-// all miss are searched again fitted, on a mesh; when no probe reaches it:
+// Checks the request and runs its strategy: target_error's search when set (on a mesh, unfitted
+// probes are searched again fitted: from their best delta when they reach E, the fewer balls within
+// E kept; else the better of the two; when no probe reaches it:
 // Code::target_not_reached with `out` holding the probe of lowest HD); target_count with the
 // offset dilation on a set with a surface: the lowest HD within the count (target_count_hd.h); else
 // select_balls (which handles target_count by bisection alone). Each search probe is connected as

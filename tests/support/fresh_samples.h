@@ -7,7 +7,14 @@
 #include <random>
 #include <vector>
 
-inline std::vector<ca::Vec3> fresh_surface_samples(const ca::Mesh& m, size_t n, uint64_t seed) {
+// `where`, when given, receives each sample's triangle and its barycentric weights of the
+// triangle's corners (to interpolate per-vertex data such as skin weights).
+struct FreshSampleSite {
+    size_t triangle;
+    double corner[3];
+};
+inline std::vector<ca::Vec3> fresh_surface_samples(const ca::Mesh& m, size_t n, uint64_t seed,
+                                                   std::vector<FreshSampleSite>* where = nullptr) {
     std::mt19937_64 rng(seed);
     std::vector<double> cumulative;
     double total = 0;
@@ -23,6 +30,7 @@ inline std::vector<ca::Vec3> fresh_surface_samples(const ca::Mesh& m, size_t n, 
         double a = u(rng), b = u(rng);
         if (a + b > 1) { a = 1 - a; b = 1 - b; }
         out.push_back(m.vertices[t[0]] + a * (m.vertices[t[1]] - m.vertices[t[0]]) + b * (m.vertices[t[2]] - m.vertices[t[0]]));
+        if (where) where->push_back({std::min(k, m.triangles.size() - 1), {1 - a - b, a, b}});
     }
     return out;
 }

@@ -4,7 +4,9 @@
 // (brute force over the same deltas: returning, say, the last probe fails this); for an
 // unreachable E the lowest-HD probe comes back unreached; with the fit, each probe's HD is that of
 // the fitted skeleton (select + connect + fit + evaluate run independently) and differs from the
-// unfitted one; invalid options are refused.
+// unfitted one; invalid options are refused. The selection step (select_step) returns no more
+// balls than the unfitted search alone, within E, and the skeleton connected at the defaults
+// measures the HD it reports.
 #include <doctest/doctest.h>
 
 #include "candidates.h"
@@ -13,6 +15,7 @@
 #include "fit.h"
 #include "mesh_io.h"
 #include "selection.h"
+#include "steps.h"
 #include "support/fox_candidates.h"
 #include "target_error.h"
 
@@ -144,4 +147,32 @@ TEST_CASE("test_target_error: invalid options are refused") {
     arrays.cover_samples = set.cover_samples;
     arrays.balls = set.balls;
     CHECK(ca::select_target_error(arrays, so, options(2), ca::Monitor{}, r).code == ca::Code::invalid_argument);
+}
+
+TEST_CASE("test_target_error: fox: the selection step's fitted search returns no more balls than the unfitted one, within E") {
+    const ca::CandidateSet set = fox_candidate_set();
+    const double target = 2.6;
+    // the unfitted search alone, as the step runs it first (connect and evaluation at the defaults)
+    ca::TargetErrorOptions te;
+    te.target_error = target;
+    ca::TargetErrorResult unfitted;
+    REQUIRE(ca::select_target_error(set, ca::SelectOptions{}, te, ca::Monitor{}, unfitted).ok());
+    REQUIRE(unfitted.reached);
+    ca::SelectRequest request;
+    request.target_error = target;
+    ca::SelectResult r;
+    const ca::Status st = ca::select_step(set, request, ca::Monitor{}, r);
+    REQUIRE_MESSAGE(st.ok(), st.message);
+    CHECK(r.selection.indices.size() <= unfitted.selection.indices.size());
+    CHECK(r.hd_reached <= target);
+    CHECK(r.selection.probes > unfitted.selection.probes);  // the fitted search ran too
+    // fewer balls than the unfitted search can only come from a fitted probe
+    if (r.selection.indices.size() < unfitted.selection.indices.size()) CHECK(r.selection.judged_fitted);
+    // the skeleton the connection step gives at its defaults is the one measured
+    ca::ConnectResult c;
+    REQUIRE(ca::connect_step(set, r.selection, ca::ConnectRequest{}, ca::Monitor{}, c).ok());
+    CHECK(c.fitted == r.selection.judged_fitted);
+    ca::EvaluateResult ev;
+    REQUIRE(ca::evaluate(set.surface.mesh, c.skeleton, ca::EvaluateOptions{}, ca::Monitor{}, ev).ok());
+    CHECK(ev.hd_two_sided == doctest::Approx(r.hd_reached).epsilon(1e-9));
 }
