@@ -9,6 +9,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* The searches' bisection tolerance in these tests: coarser than the default (1e-4), as none of
+   their checks depends on how finely the delta is bisected; fewer probes, each a full solve. */
+#define SEARCH_TOLERANCE 1e-2
+
 static ca_candidate_options small_options(void) {
     ca_candidate_options o;
     ca_candidate_options_init(&o);
@@ -390,6 +394,7 @@ static void test_routes_and_target(void) {
     CHECK(ca_selection_stats(sel, &full_stats) == CA_OK);
     ca_select_options_init(&so);
     so.target_count = (uint32_t)(full_stats.objective > 2 ? full_stats.objective - 2 : 1);
+    so.target_tolerance = SEARCH_TOLERANCE;
     CHECK(ca_select(ctx, set, &so, &small) == CA_OK);
     small_stats.struct_size = sizeof small_stats;
     CHECK(ca_selection_stats(small, &small_stats) == CA_OK);
@@ -505,6 +510,7 @@ static void test_probe_fit(void) {
         ca_select_options_init(&so);
         CHECK(so.probe_fit == 0);
         so.probe_fit = 1;
+        so.target_tolerance = SEARCH_TOLERANCE;
         if (search == 0) so.target_error = 8;
         else so.target_count = 12;
         sel = NULL;
@@ -549,6 +555,7 @@ static void test_target_not_reached(void) {
     CHECK(ca_context_create(NULL, &ctx) == CA_OK);
     CHECK(ca_candidates(ctx, &v, &o, &set) == CA_OK);
     ca_select_options_init(&so);
+    so.target_tolerance = SEARCH_TOLERANCE;
     so.target_error = 1e-4; /* a box's skeleton of a few balls is never that close */
     CHECK(ca_select(ctx, set, &so, &sel) == CA_ERROR_TARGET_NOT_REACHED);
     CHECK(strstr(ca_context_last_error(ctx), "not reached") != NULL);

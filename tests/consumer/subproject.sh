@@ -4,14 +4,32 @@
 # the library's dependencies (check_finds.py: the tool, bindings, tests and benchmarks are off by
 # default when the project is not the top level) and define no tool or test target; then the
 # add_subdirectory one is built (the library and examples/minimal.c only) and run.
-# usage: subproject.sh SOURCE_DIR [JOBS]
+# WORK_DIR (ctest gives one in the build folder; default: a temporary folder) is emptied first and
+# kept, at a fixed path: with ccache present the build goes through it, with the paths under the
+# common folder of the source and WORK_DIR relative, so a rerun (or another checkout of the same
+# tree) compiles only what changed. The build is still the parent project's own, from source.
+# usage: subproject.sh SOURCE_DIR [JOBS] [WORK_DIR]
 set -eu
-src=$1
+src=$(cd "$1" && pwd)
 jobs=${2:-2}
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+if [ -n "${3:-}" ]; then
+  tmp=$3
+  rm -rf "$tmp"
+  mkdir -p "$tmp"
+  tmp=$(cd "$tmp" && pwd)
+else
+  tmp=$(mktemp -d)
+  trap 'rm -rf "$tmp"' EXIT
+fi
+launcher=()
+if command -v ccache > /dev/null; then
+  common=$src
+  while [ "$common" != / ] && [ "${tmp#"$common"/}" = "$tmp" ]; do common=$(dirname "$common"); done
+  [ "$common" != / ] && export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$common}
+  launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+fi
 configure() {  # BUILD_DIR USE_FETCHCONTENT
-  cmake -S "$src/tests/consumer/subproject" -B "$tmp/$1" -DCA_SOURCE_DIR="$src" -DUSE_FETCHCONTENT="$2" \
+  cmake -S "$src/tests/consumer/subproject" -B "$tmp/$1" -DCA_SOURCE_DIR="$src" -DUSE_FETCHCONTENT="$2" ${launcher[@]+"${launcher[@]}"} \
     --trace-expand --trace-format=json-v1 --trace-redirect="$tmp/$1.trace" > "$tmp/$1.log" 2>&1 \
     || { cat "$tmp/$1.log" >&2; exit 1; }
   python3 "$src/tests/consumer/check_finds.py" "$tmp/$1.trace" "$tmp/$1"

@@ -108,7 +108,8 @@ fn target_error_not_reached_keeps_the_best_selection() {
     let (v, f) = read_obj(&data("fox.obj"));
     let ctx = Context::new().unwrap();
     let set = ctx.candidates(&Surface::mesh(&v, &f), &CandidateOptions::new().cover_samples(300)).unwrap();
-    let unreachable = SelectOptions::new().target_error(1e-4);
+    // a coarse bisection (default 1e-4): fewer probes, and no check depends on it
+    let unreachable = SelectOptions::new().target_error(1e-4).target_tolerance(1e-2);
     let e = ctx.select(&set, &unreachable).err().unwrap();
     assert_eq!(e.status, Status::TargetNotReached);
     assert!(e.message.contains("not reached"), "{}", e);
