@@ -24,15 +24,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 driver="$(dirname "$tool")/collider_check"
 py() { python3 -c "import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if ($1) else 1)" "$2"; }
 
-npm_dir="$(cd "$(dirname "$tool")" && pwd)/npm"
-modules="$npm_dir/node_modules"
-packages=(gltf-validator@2.0.0-dev.3.10 @gltf-transform/core@4.5.1 three@0.169.0 @pixiv/three-vrm@3.5.5)
-if [ ! -f "$modules/gltf-validator/package.json" ] || [ ! -f "$modules/@gltf-transform/core/package.json" ] ||
-   [ ! -f "$modules/three/package.json" ] || [ ! -f "$modules/@pixiv/three-vrm/package.json" ]; then
-  command -v npm > /dev/null || { echo "bone_colliders: npm is missing (scripts/install-deps.sh installs it)"; exit 1; }
-  npm install --no-audit --no-fund --silent --prefix "$npm_dir" "${packages[@]}" > /dev/null ||
-    { echo "bone_colliders: npm could not install ${packages[*]}"; exit 1; }
-fi
+npm_packages bone_colliders gltf-validator@2.0.0-dev.3.10 @gltf-transform/core@4.5.1 three@0.169.0 @pixiv/three-vrm@3.5.5
 [ -x "$driver" ] || { echo "bone_colliders: $driver is missing (built with the tests)"; exit 1; }
 min_share=0.005   # passed to the tool, so the read-back knows the rule
 

@@ -16,3 +16,16 @@ finish() {  # finish NAME: the closing line and the exit status
   echo "$1: $pass passed, $fail failed"
   test "$fail" -eq 0
 }
+# npm_packages NAME PACKAGE@VERSION...: the e2e's npm packages under the build folder's npm/,
+# installed on first use (one folder for every test); without npm, or when the install fails, the
+# test fails saying so. Sets npm_dir and modules (its node_modules, for NODE_PATH).
+npm_packages() {
+  local name=$1 p missing=0; shift
+  npm_dir="$(cd "$(dirname "$tool")" && pwd)/npm"
+  modules="$npm_dir/node_modules"
+  for p in "$@"; do [ -f "$modules/${p%@*}/package.json" ] || missing=1; done
+  [ "$missing" -eq 0 ] && return 0
+  command -v npm > /dev/null || { echo "$name: npm is missing (scripts/install-deps.sh installs it)"; exit 1; }
+  npm install --no-audit --no-fund --silent --prefix "$npm_dir" "$@" > /dev/null ||
+    { echo "$name: npm could not install $*"; exit 1; }
+}

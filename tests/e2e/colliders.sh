@@ -19,15 +19,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 driver="$(dirname "$tool")/collider_check"
 py() { python3 -c "import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if ($1) else 1)" "$2"; }
 
-npm_dir="$(cd "$(dirname "$tool")" && pwd)/npm"
-modules="$npm_dir/node_modules"
-packages=(gltf-validator@2.0.0-dev.3.10 @gltf-transform/core@4.5.1 jolt-physics@1.1.0)
-if [ ! -f "$modules/gltf-validator/package.json" ] || [ ! -f "$modules/@gltf-transform/core/package.json" ] ||
-   [ ! -f "$modules/jolt-physics/package.json" ]; then
-  command -v npm > /dev/null || { echo "colliders: npm is missing (scripts/install-deps.sh installs it)"; exit 1; }
-  npm install --no-audit --no-fund --silent --prefix "$npm_dir" "${packages[@]}" > /dev/null ||
-    { echo "colliders: npm could not install ${packages[*]}"; exit 1; }
-fi
+npm_packages colliders gltf-validator@2.0.0-dev.3.10 @gltf-transform/core@4.5.1 jolt-physics@1.1.0
 [ -x "$driver" ] || { echo "colliders: $driver is missing (built with the tests)"; exit 1; }
 
 # a sphere (radius 5) and a tapered capsule (balls of radius 4 at y = 0 and 2 at y = 10) as closed

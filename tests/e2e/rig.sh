@@ -9,12 +9,7 @@ set -u
 source "$(dirname "$0")/check.bash" "$@"
 py() { python3 -c "import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if ($1) else 1)" "$2"; }
 
-npm_dir="$(cd "$(dirname "$tool")" && pwd)/npm"
-if [ ! -f "$npm_dir/node_modules/gltf-validator/package.json" ]; then
-  command -v npm > /dev/null || { echo "rig: npm is missing (scripts/install-deps.sh installs it)"; exit 1; }
-  npm install --no-audit --no-fund --silent --prefix "$npm_dir" gltf-validator@2.0.0-dev.3.10 > /dev/null ||
-    { echo "rig: npm could not install gltf-validator"; exit 1; }
-fi
+npm_packages rig gltf-validator@2.0.0-dev.3.10
 validate() { NODE_PATH="$npm_dir/node_modules" node "$(dirname "$0")/validate_gltf.js" "$@"; }
 
 "$tool" "$data/fox.obj" -o "$tmp/fox.ma" --rig "$tmp/fox.glb" --correspondence "$tmp/fox.json" --json > "$tmp/report.json"
