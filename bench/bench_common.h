@@ -196,6 +196,33 @@ inline ca_status measure_skeleton(ca_context* ctx, const ca_surface_view& v, con
     return ca_evaluate(ctx, &v, &view, &eo, &eval);
 }
 
+// A selection by `so` (e.g. its target_count), connected at ca_connect's defaults and evaluated at
+// ca_evaluate's. balls and hd (the two-sided Hausdorff distance, %) are set when status is CA_OK.
+struct SelectionRun {
+    ca_status status = CA_OK;
+    size_t balls = 0;
+    double hd = -1;
+};
+inline SelectionRun select_connect_evaluate(ca_context* ctx, const ca_surface_view& v, const ca_candidate_set* set,
+                                       const ca_select_options& so) {
+    ca_selection* sel = nullptr;
+    ca_skeleton* sk = nullptr;
+    ca_evaluation ev{};
+    size_t edges = 0, faces = 0, components = 0;
+    long betti1 = 0;
+    SelectionRun r;
+    r.status = ca_select(ctx, set, &so, &sel);
+    if (r.status == CA_OK) r.status = ca_connect(ctx, set, sel, nullptr, &sk);
+    if (r.status == CA_OK) r.status = measure_skeleton(ctx, v, sk, true, edges, faces, components, betti1, ev);
+    if (r.status == CA_OK) {
+        r.balls = ca_skeleton_vertex_count(sk);
+        r.hd = ev.hd_two_sided;
+    }
+    ca_skeleton_destroy(sk);
+    ca_selection_destroy(sel);
+    return r;
+}
+
 // A view of packed positions, triangles (empty: a point cloud) and normals (empty: none); borrowed.
 inline ca_surface_view view_of(const std::vector<double>& xyz, const std::vector<uint32_t>& tri, const std::vector<double>& nrm) {
     ca_surface_view v;

@@ -103,17 +103,9 @@ void monotone_table(const std::string& dir, const Model* models) {
             ca_select_options_init(&so);
             so.time_limit_s = 20;
             so.target_count = K;
-            ca_selection* sel = nullptr;
-            ca_skeleton* sk = nullptr;
-            ca_evaluation ev{};
-            size_t edges = 0, faces = 0, components = 0;
-            long betti1 = 0;
-            ca_status st = ca_select(ctx, set, &so, &sel);
-            if (st == CA_OK) st = ca_connect(ctx, set, sel, nullptr, &sk);
-            if (st == CA_OK) st = bench::measure_skeleton(ctx, v, sk, true, edges, faces, components, betti1, ev);
-            const size_t nb = st == CA_OK ? ca_skeleton_vertex_count(sk) : 0;
-            ca_skeleton_destroy(sk);
-            ca_selection_destroy(sel);
+            const bench::SelectionRun run = bench::select_connect_evaluate(ctx, v, set, so);
+            const ca_status st = run.status;
+            const size_t nb = run.balls;
             char buf[64];
             std::snprintf(buf, sizeof buf, "%s%u", i ? " " : "", K);
             counts += buf;
@@ -124,10 +116,10 @@ void monotone_table(const std::string& dir, const Model* models) {
                 hds += i ? " failed" : "failed";
                 continue;
             }
-            std::snprintf(buf, sizeof buf, "%s%.3f", i ? " " : "", ev.hd_two_sided);
+            std::snprintf(buf, sizeof buf, "%s%.3f", i ? " " : "", run.hd);
             hds += buf;
-            if (i > 0) rise = std::max(rise, ev.hd_two_sided - lowest);
-            lowest = std::min(lowest, ev.hd_two_sided);
+            if (i > 0) rise = std::max(rise, run.hd - lowest);
+            lowest = std::min(lowest, run.hd);
         }
         ca_candidate_set_destroy(set);
         ca_context_destroy(ctx);

@@ -65,35 +65,19 @@ struct CountRun {
     double hd = -1;   // -1: failed
 };
 
-// --target-count K: selected, connected at ca_connect's defaults, evaluated at ca_evaluate's.
+// --target-count K, the defaults otherwise: its balls and HD.
 CountRun count_run(ca_context* ctx, const ca_surface_view& v, const ca_candidate_set* set, uint32_t K) {
-    CountRun r;
-    r.K = K;
     ca_select_options so;
     ca_select_options_init(&so);
     so.target_count = K;
-    ca_selection* sel = nullptr;
-    ca_skeleton* sk = nullptr;
-    ca_evaluation ev{};
-    size_t edges = 0, faces = 0, components = 0;
-    long betti1 = 0;
-    ca_status st = ca_select(ctx, set, &so, &sel);
-    if (st == CA_OK) st = ca_connect(ctx, set, sel, nullptr, &sk);
-    if (st == CA_OK) st = bench::measure_skeleton(ctx, v, sk, true, edges, faces, components, betti1, ev);
-    if (st == CA_OK) {
-        r.balls = ca_skeleton_vertex_count(sk);
-        r.hd = ev.hd_two_sided;
+    const bench::SelectionRun t = bench::select_connect_evaluate(ctx, v, set, so);
+    CountRun r;
+    r.K = K;
+    if (t.status == CA_OK) {
+        r.balls = t.balls;
+        r.hd = t.hd;
     }
-    ca_skeleton_destroy(sk);
-    ca_selection_destroy(sel);
     return r;
-}
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0;
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 }  // namespace
@@ -196,6 +180,6 @@ int main(int argc, char** argv) {
                     "Target-error used no more balls than the target-count runs within E on %d of %d reached models. "
                     "Median wall time of ca_select %.2f s.\n",
                     kTargets[e], reached[e], closed_models, not_reached[e], failed[e], no_more[e], compared[e],
-                    median(times[e]));
+                    bench::median(times[e]));
     return 0;
 }
