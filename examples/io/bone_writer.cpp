@@ -223,14 +223,6 @@ json skinned_document(const MeshData& mesh, std::string& bin, std::vector<int>& 
             {"buffers", {{{"byteLength", bin.size()}}}}};
 }
 
-void use_extension(json& doc, const char* name) {
-    json& used = doc["extensionsUsed"];
-    if (!used.is_array()) used = json::array();
-    for (const auto& u : used)
-        if (u == name) return;
-    used.push_back(name);
-}
-
 // VRMC_springBone colliders on the joints' nodes, one group per joint (see bone_writer.h).
 void add_spring_bone_colliders(json& doc, const std::vector<BoneCollider>& colliders, const std::vector<int>& joint_node,
                                bool conservative) {
@@ -267,7 +259,7 @@ void add_spring_bone_colliders(json& doc, const std::vector<BoneCollider>& colli
         }
         groups[size_t(g)]["colliders"].push_back(index);
     }
-    use_extension(doc, "VRMC_springBone");
+    gltf::use_extension(doc, "VRMC_springBone");
 }
 
 }  // namespace

@@ -46,14 +46,6 @@ json omi_shape(const ColliderShape& c) {
     return implicit_shape(c);
 }
 
-void use_extension(json& doc, const char* name) {
-    json& used = doc["extensionsUsed"];
-    if (!used.is_array()) used = json::array();
-    for (const auto& u : used)
-        if (u == name) return;
-    used.push_back(name);
-}
-
 // doc.extensions[extension].shapes, created if absent.
 json& shapes_of(json& doc, const char* extension) {
     json& list = doc["extensions"][extension]["shapes"];
@@ -62,6 +54,14 @@ json& shapes_of(json& doc, const char* extension) {
 }
 
 }  // namespace
+
+void use_extension(json& doc, const char* name) {
+    json& used = doc["extensionsUsed"];
+    if (!used.is_array()) used = json::array();
+    for (const auto& u : used)
+        if (u == name) return;
+    used.push_back(name);
+}
 
 bool collider_has_volume(const ColliderShape& c) {
     switch (c.kind) {

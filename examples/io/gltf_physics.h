@@ -30,6 +30,9 @@ struct ColliderOptions {
     std::string name = "collider";   // nodes are named name_0, name_1, ...
 };
 
+// Adds `name` to doc["extensionsUsed"] (made an array if it is not one) unless it is there.
+void use_extension(json& doc, const char* name);
+
 // Whether a shape has volume: the glTF physics extensions forbid a zero radius, a zero box side
 // and a capsule whose radii are both zero (and non-finite numbers are refused before writing).
 bool collider_has_volume(const ColliderShape& c);
