@@ -16,33 +16,12 @@
 import fs from 'node:fs';
 import path from 'node:path';
 import { pathToFileURL } from 'node:url';
+import { physicsExtensions } from './physics_extensions.mjs';
 
 const [modules, file, bonesJson, mode, skippedList, minShareArg] = process.argv.slice(2);
 const { NodeIO, Extension } = await import(pathToFileURL(path.join(modules, '@gltf-transform/core/dist/index.js')).href);
 
-class ImplicitShapes extends Extension {
-  static EXTENSION_NAME = 'KHR_implicit_shapes';
-  extensionName = 'KHR_implicit_shapes';
-  shapes = [];
-  read(context) {
-    this.shapes = context.jsonDoc.json.extensions?.[this.extensionName]?.shapes || [];
-    return this;
-  }
-  write() { return this; }
-}
-class RigidBodies extends Extension {
-  static EXTENSION_NAME = 'KHR_physics_rigid_bodies';
-  extensionName = 'KHR_physics_rigid_bodies';
-  bodies = new Map();   // gltf-transform Node -> its KHR_physics_rigid_bodies object
-  read(context) {
-    (context.jsonDoc.json.nodes || []).forEach((n, i) => {
-      const body = n.extensions?.[this.extensionName];
-      if (body) this.bodies.set(context.nodes[i], body);
-    });
-    return this;
-  }
-  write() { return this; }
-}
+const { ImplicitShapes, RigidBodies } = physicsExtensions(Extension);
 
 const io = new NodeIO().registerExtensions([ImplicitShapes, RigidBodies]);
 const document = await io.readBinary(new Uint8Array(fs.readFileSync(file)));

@@ -9,33 +9,12 @@
 import fs from 'node:fs';
 import path from 'node:path';
 import { pathToFileURL } from 'node:url';
+import { physicsExtensions } from './physics_extensions.mjs';
 
 const [modules, file, proxiesJson] = process.argv.slice(2);
 const { NodeIO, Extension } = await import(pathToFileURL(path.join(modules, '@gltf-transform/core/dist/index.js')).href);
 
-class ImplicitShapes extends Extension {
-  static EXTENSION_NAME = 'KHR_implicit_shapes';
-  extensionName = 'KHR_implicit_shapes';
-  shapes = [];
-  read(context) {
-    this.shapes = context.jsonDoc.json.extensions?.[this.extensionName]?.shapes || [];
-    return this;
-  }
-  write() { return this; }
-}
-class RigidBodies extends Extension {
-  static EXTENSION_NAME = 'KHR_physics_rigid_bodies';
-  extensionName = 'KHR_physics_rigid_bodies';
-  colliders = new Map();   // gltf-transform Node -> shape index
-  read(context) {
-    (context.jsonDoc.json.nodes || []).forEach((n, i) => {
-      const collider = n.extensions?.[this.extensionName]?.collider;
-      if (collider) this.colliders.set(context.nodes[i], collider.geometry.shape);
-    });
-    return this;
-  }
-  write() { return this; }
-}
+const { ImplicitShapes, RigidBodies } = physicsExtensions(Extension);
 
 const io = new NodeIO().registerExtensions([ImplicitShapes, RigidBodies]);
 const document = await io.readBinary(new Uint8Array(fs.readFileSync(file)));
@@ -44,7 +23,8 @@ const used = Object.fromEntries(root.listExtensionsUsed().map((e) => [e.extensio
 const failures = [];
 if (!used.KHR_implicit_shapes || !used.KHR_physics_rigid_bodies) failures.push('the physics extensions were not read');
 const shapes = used.KHR_implicit_shapes?.shapes || [];
-const colliders = used.KHR_physics_rigid_bodies?.colliders || new Map();
+const bodies = used.KHR_physics_rigid_bodies?.bodies || new Map();
+const colliders = new Map([...bodies].filter(([, b]) => b.collider).map(([n, b]) => [n, b.collider.geometry.shape]));
 const nodes = root.listNodes().filter((n) => colliders.has(n));
 const proxies = JSON.parse(fs.readFileSync(proxiesJson, 'utf8')).proxies;
 if (nodes.length !== proxies.length) failures.push(`${nodes.length} collider nodes, ${proxies.length} proxies`);
