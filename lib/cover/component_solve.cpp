@@ -77,9 +77,10 @@ constexpr int kVolumeSteps = 1000;
 class ComponentSolve {
 public:
     ComponentSolve(const Problem& P, const Deadline& deadline, int threads, bool row_gen, Effort effort,
-                   int search_threads, const Monitor& monitor)
+                   int search_threads, const Monitor& monitor, double give_up_above)
         : P_(P), deadline_(deadline), threads_(threads), row_gen_(row_gen), effort_(effort),
-          search_threads_(search_threads), monitor_(monitor), large_(P.R > kWholeCbcMaxRows) {}
+          search_threads_(search_threads), monitor_(monitor), large_(P.R > kWholeCbcMaxRows),
+          give_up_above_(give_up_above) {}
 
     ComponentResult run() {
         if (bounds() && heuristics() && core_search()) exact();
@@ -108,7 +109,8 @@ private:
         }
         return out_.proven;
     }
-    bool stop() { return done() || monitor_.cancelled(); }
+    // Solved, cancelled, or shown to need more columns than the caller can use (give_up_above_).
+    bool stop() { return done() || monitor_.cancelled() || out_.lb > give_up_above_; }
     void prove_incumbent() {
         out_.lb = double(out_.sel.size());
         out_.proven = true;
@@ -120,7 +122,7 @@ private:
         out_.sel = greedy_cover(P_);
         remove_redundant(P_.cptr, P_.crow, P_.R, nullptr, nullptr, out_.sel);
         out_.lb = double(disjoint_bound(P_));
-        if (done()) return false;
+        if (stop()) return false;
         // The subgradient phase gets at most a quarter of what is left of the budget.
         const Deadline lag_deadline = deadline_.share(0.25);
         // Before the LP only a warm-up: its covers and reduced costs seed the core LP and the
@@ -302,6 +304,7 @@ private:
     const int search_threads_;
     const Monitor& monitor_;
     const bool large_;    // more than kWholeCbcMaxRows rows
+    const double give_up_above_;  // kNoGiveUp: off
     ComponentResult out_;
     Lagrange L_;          // the best Lagrangian bound so far, its multipliers, costs and cover
     bool lp_ok_ = false;  // the LP relaxation was solved
@@ -310,8 +313,9 @@ private:
 }  // namespace
 
 ComponentResult solve_component(const Problem& P, const Deadline& deadline, int threads,
-                                bool row_gen, Effort effort, int search_threads, const Monitor& monitor) {
-    return ComponentSolve(P, deadline, threads, row_gen, effort, search_threads, monitor).run();
+                                bool row_gen, Effort effort, int search_threads, const Monitor& monitor,
+                                double give_up_above) {
+    return ComponentSolve(P, deadline, threads, row_gen, effort, search_threads, monitor, give_up_above).run();
 }
 
 }  // namespace sc

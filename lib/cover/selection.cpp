@@ -282,6 +282,10 @@ Status select_target_count(Selecting& s, Selection& out) {
     uint32_t best_parts = 0;
     double best_value = -1;
     std::vector<double> best_radii;
+    // each probe only decides whether K balls suffice: a solve whose bounds show that they do not
+    // stops there (the decision, and every solve that is not stopped, as without it)
+    CoverOptions decide = s.cover;
+    decide.give_up_above = K;
     auto probe = [&](double value, bool rebuild, bool& fits) -> Status {
         if (monitor.stopped()) return monitor.stop_status("selection");
         s.make_radii(value);
@@ -297,7 +301,7 @@ Status select_target_count(Selecting& s, Selection& out) {
         CoverResult res;
         uint32_t parts = 0;
         ++out.probes;
-        Status st = solve_coverage(rebuild ? big : cov, s.set, opt, s.cover, monitor, res, parts);
+        Status st = solve_coverage(rebuild ? big : cov, s.set, opt, decide, monitor, res, parts);
         if (st.code == Code::uncoverable) { fits = false; return Status::success(); }
         if (!st.ok()) return st;
         fits = res.objective <= double(K);

@@ -29,7 +29,10 @@ struct SelectOptions {
     //   optimum(d) <= target_count  and  optimum(d - target_tolerance) > target_count
     // (or d is the lower end: 0 for offset, 1 for scale). A probe that is not proven optimal
     // (time limit, heuristic solver) may overestimate its optimum, and d may then be larger
-    // than the true smallest one. Selection::probes counts the solves.
+    // than the true smallest one. Each probe only decides whether K balls suffice
+    // (CoverOptions::give_up_above = K: a solve stops once its bound exceeds K), so a probe far
+    // below the threshold costs little; the decisions and d are those of full solves.
+    // Selection::probes counts the solves.
     uint32_t target_count = 0;
     double target_tolerance = 1e-4;  // absolute, in delta (internal units) or sigma
 

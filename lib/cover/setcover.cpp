@@ -102,11 +102,24 @@ Status solve_impl(const Coverage& cov, const CoverOptions& opt, bool skip_uncove
             const Deadline deadline = Deadline::after(opt.time_limit_s, t0).earliest(monitor.deadline);
             proven = true;
             klb = 0;
-            for (const Problem& Q : split_components(P)) {
+            const std::vector<Problem> components = split_components(P);
+            // give_up_above: what a component's cover may have for the whole to stay within it,
+            // the other components at their disjoint-rows bounds (a larger cover of this one
+            // makes the whole larger than give_up_above whatever the others need)
+            std::vector<double> others(components.size(), 0.0);
+            if (opt.give_up_above > 0) {
+                std::vector<double> own(components.size());
+                double all = double(forced.size());
+                for (size_t c = 0; c < components.size(); ++c) all += own[c] = double(disjoint_bound(components[c]));
+                for (size_t c = 0; c < components.size(); ++c) others[c] = all - own[c];
+            }
+            for (size_t c = 0; c < components.size(); ++c) {
+                const Problem& Q = components[c];
                 if (monitor.cancelled()) return fail(Code::cancelled, "set cover: cancelled");
+                const double give_up = opt.give_up_above > 0 ? double(opt.give_up_above) - others[c] : kNoGiveUp;
                 const ComponentResult cr =
                     solve_component(Q, deadline, opt.threads, opt.row_generation, opt.effort,
-                                    opt.search_threads, monitor);
+                                    opt.search_threads, monitor, give_up);
                 for (uint32_t c : cr.sel) ksel.push_back(Q.col_id[c]);
                 klb += cr.lb;
                 proven = proven && cr.proven;

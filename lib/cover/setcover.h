@@ -51,6 +51,12 @@ struct CoverOptions {
     // default: on the paper kernels it only delayed CBC (it still runs on components too large
     // for one CBC solve).
     bool row_generation = false;
+    // 0 = off. n > 0: the caller only needs to know whether a cover of at most n balls exists
+    // (the target size's bisection, selection.h): the exact solver stops a component once the
+    // lower bounds show that every cover has more than n balls, and returns the best cover found
+    // so far (more than n balls, not proven) with a valid lower bound above n. Any solve it does
+    // not stop is the same as without it.
+    uint32_t give_up_above = 0;
     // Optional per-sample / per-ball masks (empty = none). Non-zero = set.
     std::vector<uint8_t> ignorable_samples;   // need not be covered
     std::vector<uint8_t> forced_in;           // must be selected

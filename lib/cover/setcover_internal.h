@@ -13,6 +13,7 @@
 #include <atomic>
 #include <chrono>
 #include <functional>
+#include <limits>
 
 namespace ca {
 namespace sc {
@@ -276,7 +277,10 @@ Status prepare(const Coverage& cov, const CoverOptions& opt, bool skip_uncoverab
 // ---- component_solve.cpp ----
 // Exact solve of one connected component: greedy -> Lagrangian bound and heuristic ->
 // reduced-cost fixing (drop every column that no cover smaller than the incumbent can use) ->
-// reduction of what is left -> CBC on that, with the incumbent as cutoff.
+// reduction of what is left -> CBC on that, with the incumbent as cutoff. `give_up_above` (off:
+// kNoGiveUp): the caller only needs to know whether the component has a cover of at most that many
+// columns; the solve ends as soon as its lower bound exceeds it (the best cover so far, not proven).
+constexpr double kNoGiveUp = std::numeric_limits<double>::infinity();
 struct ComponentResult {
     std::vector<uint32_t> sel;  // P-local columns, ascending
     double lb = 0;
@@ -285,7 +289,8 @@ struct ComponentResult {
     size_t rowgen_rounds = 0;
 };
 ComponentResult solve_component(const Problem& P, const Deadline& deadline, int threads,
-                                bool row_gen, Effort effort, int search_threads, const Monitor& monitor);
+                                bool row_gen, Effort effort, int search_threads, const Monitor& monitor,
+                                double give_up_above = kNoGiveUp);
 
 }  // namespace sc
 }  // namespace ca

@@ -187,6 +187,40 @@ TEST_CASE("set cover: exact equals the brute-force minimum and is proven optimal
     CHECK(nontrivial > 20);  // the kernel (and so CBC) is exercised, not only the reduction
 }
 
+TEST_CASE("set cover: give_up_above decides as the full solve does, and stops early only above it") {
+    const auto insts = small_instances(4321, 160);
+    int gave_up = 0;
+    for (size_t t = 0; t < insts.size(); ++t) {
+        const Coverage& c = insts[t].cov;
+        const int best = brute_min(c);
+        REQUIRE(best >= 0);
+        CoverOptions opt;
+        opt.effort = Effort::prove;
+        CoverResult full;
+        REQUIRE(solve_set_cover(c, opt, false, Monitor{}, full).ok());
+        for (int n = 1; n <= best + 1; ++n) {
+            INFO("instance " << t << " minimum " << best << " give_up_above " << n);
+            CoverOptions o = opt;
+            o.give_up_above = uint32_t(n);
+            CoverResult res;
+            REQUIRE(solve_set_cover(c, o, false, Monitor{}, res).ok());
+            CHECK(valid_cover(c, res.selected));
+            CHECK(res.lower_bound <= double(best));  // a valid bound, stopped or not
+            if (best <= n) {
+                // nothing to give up: the same solve as without the option
+                CHECK(res.selected == full.selected);
+                CHECK(res.proven_optimal == 1);
+            } else {
+                // the decision: more than n balls, shown by the bound
+                CHECK(res.objective > double(n));
+                CHECK(res.lower_bound > double(n));
+                gave_up += res.proven_optimal == 0;
+            }
+        }
+    }
+    CHECK(gave_up > 20);  // the solve does stop before its proof
+}
+
 TEST_CASE("set cover: row generation equals the brute-force minimum and the one-ILP path") {
     // 32 x 30 at density 0.3: about a fifth of these keep a kernel that neither the LP bound nor
     // the branching step closes, so the row-generation loop runs (several rounds each).
