@@ -13,14 +13,6 @@
    their checks depends on how finely the delta is bisected; fewer probes, each a full solve. */
 #define SEARCH_TOLERANCE 1e-2
 
-static ca_candidate_options small_options(void) {
-    ca_candidate_options o;
-    ca_candidate_options_init(&o);
-    o.cover_samples = 400;
-    o.voronoi_samples = 800;
-    return o;
-}
-
 static void test_versions(void) {
     CHECK(ca_version() == CA_VERSION_NUMBER);
     {
@@ -39,7 +31,7 @@ static void test_null_and_sizes(void) {
     ca_context* ctx = NULL;
     ca_candidate_set* set = (ca_candidate_set*)1;
     ca_surface_view v = box_view();
-    ca_candidate_options o = small_options();
+    ca_candidate_options o = box_options(400);
     ca_context_desc d;
 
     CHECK(ca_context_create(NULL, NULL) == CA_ERROR_NULL_POINTER);
@@ -62,11 +54,11 @@ static void test_null_and_sizes(void) {
     o.struct_size = sizeof(o) + 8;
     CHECK(ca_candidates(ctx, &v, &o, &set) == CA_ERROR_STRUCT_SIZE && set == NULL);
     CHECK(strstr(ca_context_last_error(ctx), "struct_size") != NULL);
-    o = small_options();
+    o = box_options(400);
     o.generator = 7;
     CHECK(ca_candidates(ctx, &v, &o, &set) == CA_ERROR_INVALID_ARGUMENT && set == NULL);
     v.position_stride = 8; /* smaller than a vertex */
-    o = small_options();
+    o = box_options(400);
     CHECK(ca_candidates(ctx, &v, &o, &set) == CA_ERROR_INVALID_ARGUMENT && set == NULL);
 
     CHECK(ca_select(ctx, NULL, NULL, (ca_selection**)&set) == CA_ERROR_NULL_POINTER);
@@ -82,7 +74,7 @@ static void test_null_and_sizes(void) {
 static ca_status run_candidates(ca_context* ctx, const double* pos, size_t nv, const uint32_t* tri, size_t nt,
                                 const double* normals, ca_candidate_set** out) {
     ca_surface_view v;
-    ca_candidate_options o = small_options();
+    ca_candidate_options o = box_options(400);
     ca_surface_view_init(&v);
     v.positions = pos;
     v.vertex_count = nv;
@@ -144,7 +136,7 @@ static void test_bad_input(void) {
     /* point_normals outside CA_POINT_NORMALS_*: refused before anything is read */
     {
     ca_surface_view sv;
-    ca_candidate_options o = small_options();
+    ca_candidate_options o = box_options(400);
     ca_surface_view_init(&sv);
     CHECK(sv.point_normals == CA_POINT_NORMALS_TRUSTED);
     sv.positions = box_v;
@@ -248,7 +240,7 @@ static void test_cancel(void) {
     ca_context* ctx = NULL;
     ca_candidate_set* set = NULL;
     ca_surface_view v = box_view();
-    ca_candidate_options o = small_options();
+    ca_candidate_options o = box_options(400);
     ca_context_desc d;
     int calls = 0;
 
@@ -290,7 +282,7 @@ static void test_box_pipeline(void) {
     ca_selection* sel = NULL;
     ca_skeleton* sk = NULL;
     ca_surface_view v = box_view();
-    ca_candidate_options o = small_options();
+    ca_candidate_options o = box_options(400);
     ca_skeleton_stats ks;
     ca_context_desc d;
     size_t i, n;
@@ -364,7 +356,7 @@ static void test_routes_and_target(void) {
     ca_selection* small = NULL;
     ca_skeleton* sk = NULL;
     ca_surface_view v = box_view();
-    ca_candidate_options o = small_options();
+    ca_candidate_options o = box_options(400);
     ca_connect_options cop;
     ca_select_options so;
     ca_select_stats full_stats, small_stats;
@@ -499,7 +491,7 @@ static void test_probe_fit(void) {
     ca_candidate_set* set = NULL;
     ca_selection* sel = NULL;
     ca_surface_view v = box_view();
-    ca_candidate_options o = small_options();
+    ca_candidate_options o = box_options(400);
     ca_select_options so;
     ca_select_stats ss;
     int search;
@@ -549,7 +541,7 @@ static void test_target_not_reached(void) {
     ca_selection* sel = NULL;
     ca_skeleton* sk = NULL;
     ca_surface_view v = box_view();
-    ca_candidate_options o = small_options();
+    ca_candidate_options o = box_options(400);
     ca_select_options so;
     ca_select_stats ss;
     CHECK(ca_context_create(NULL, &ctx) == CA_OK);
