@@ -2,7 +2,7 @@
  * input (NaN, out-of-range index, empty, flat, too few distinct points), uncoverable samples,
  * copy-out capacity, cancellation and progress, the custom allocator, determinism, and a
  * known answer (the balls of a box lie on its medial axis). */
-#include "capi_check.h"
+#include "box_skeleton.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -278,9 +278,7 @@ static void counting_free(void* user, void* p) {
 /* The whole pipeline on the box: known answer and determinism. */
 static void test_box_pipeline(void) {
     ca_context* ctx = NULL;
-    ca_candidate_set* set = NULL;
-    ca_selection* sel = NULL;
-    ca_skeleton* sk = NULL;
+    BoxSkeleton b;
     ca_surface_view v = box_view();
     ca_candidate_options o = box_options(400);
     ca_skeleton_stats ks;
@@ -295,14 +293,12 @@ static void test_box_pipeline(void) {
     d.alloc = counting_alloc;
     d.free = counting_free;
     CHECK(ca_context_create(&d, &ctx) == CA_OK);
-    CHECK(ca_candidates(ctx, &v, &o, &set) == CA_OK);
-    CHECK(ca_candidate_set_count(set) > 10);
-    CHECK(ca_select(ctx, set, NULL, &sel) == CA_OK);
-    CHECK(ca_connect(ctx, set, sel, NULL, &sk) == CA_OK);
-    n = ca_skeleton_vertex_count(sk);
+    CHECK(box_skeleton(ctx, &o, &b) == CA_OK);
+    CHECK(ca_candidate_set_count(b.set) > 10);
+    n = ca_skeleton_vertex_count(b.sk);
     CHECK(n >= 2 && n <= 64);
-    c = ca_skeleton_centers(sk);
-    r = ca_skeleton_radii(sk);
+    c = ca_skeleton_centers(b.sk);
+    r = ca_skeleton_radii(b.sk);
     for (i = 0; i < n; ++i) {
         /* inside the box and a medial ball: its radius is its distance to the nearest face
            (up to the sampling: Voronoi radii are distances to the nearest sample) */
@@ -317,7 +313,7 @@ static void test_box_pipeline(void) {
         CHECK(r[i] >= dmin - 1e-9 && r[i] <= dmin + 0.1);
     }
     ks.struct_size = sizeof ks;
-    CHECK(ca_skeleton_stats_get(sk, &ks) == CA_OK && ks.vertices == n && ks.components >= 1);
+    CHECK(ca_skeleton_stats_get(b.sk, &ks) == CA_OK && ks.vertices == n && ks.components >= 1);
     first_n = n;
     memcpy(first, c, 3 * n * sizeof(double));
 
@@ -326,24 +322,18 @@ static void test_box_pipeline(void) {
         ca_candidate_set* other = NULL;
         ca_skeleton* bad = NULL;
         CHECK(ca_candidates(ctx, &v, &o, &other) == CA_OK);
-        CHECK(ca_connect(ctx, other, sel, NULL, &bad) == CA_ERROR_INVALID_ARGUMENT && bad == NULL);
+        CHECK(ca_connect(ctx, other, b.sel, NULL, &bad) == CA_ERROR_INVALID_ARGUMENT && bad == NULL);
         ca_candidate_set_destroy(other);
     }
-    ca_skeleton_destroy(sk);
-    ca_selection_destroy(sel);
-    ca_candidate_set_destroy(set);
+    box_skeleton_destroy(&b);
     CHECK(total_blocks > 0 && live_blocks == 0);
 
     /* the same seed gives the same skeleton */
-    set = NULL; sel = NULL; sk = NULL;
-    CHECK(ca_candidates(ctx, &v, &o, &set) == CA_OK && ca_select(ctx, set, NULL, &sel) == CA_OK &&
-          ca_connect(ctx, set, sel, NULL, &sk) == CA_OK);
-    CHECK(ca_skeleton_vertex_count(sk) == first_n);
-    if (ca_skeleton_vertex_count(sk) == first_n)
-        CHECK(memcmp(first, ca_skeleton_centers(sk), 3 * first_n * sizeof(double)) == 0);
-    ca_skeleton_destroy(sk);
-    ca_selection_destroy(sel);
-    ca_candidate_set_destroy(set);
+    CHECK(box_skeleton(ctx, &o, &b) == CA_OK);
+    CHECK(ca_skeleton_vertex_count(b.sk) == first_n);
+    if (ca_skeleton_vertex_count(b.sk) == first_n)
+        CHECK(memcmp(first, ca_skeleton_centers(b.sk), 3 * first_n * sizeof(double)) == 0);
+    box_skeleton_destroy(&b);
     CHECK(live_blocks == 0);
     ca_context_destroy(ctx);
 }
