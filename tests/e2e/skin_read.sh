@@ -8,7 +8,6 @@
 # usage: skin_read.sh PATH/TO/coverage-axis PATH/TO/tests/data
 set -u
 source "$(dirname "$0")/check.bash" "$@"
-py() { python3 -c "import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if ($1) else 1)" "$2"; }
 fast=(--samples 400 --voronoi-samples 1000)
 r=$data/rigged
 
