@@ -83,14 +83,16 @@ Status select_target_count_hd(const CandidateSet& set, const SelectOptions& opt,
         p.summary.exact = false;
         probes.push_back(std::move(p));
     }
-    // Coarse to fine: the probes with at most K balls in the order of their coarse HD (ties: fewer
-    // balls, then the smaller delta); each is measured exactly while its coarse HD is below the
-    // best exact HD so far (a coarse HD is the maximum over fewer samples of E's boundary, so it
-    // is about a lower bound of the exact one). Most searches measure one probe exactly.
+    // Coarse to fine: the probes with at most K balls in the order of their coarse HD; each is
+    // measured exactly while its coarse HD is below the best exact HD so far (a coarse HD is the
+    // maximum over fewer samples of E's boundary, so it is about a lower bound of the exact one).
+    // The target size (the first probe) is always measured, so the result is never above it.
     std::vector<size_t> order(probes.size());
     std::iota(order.begin(), order.end(), size_t(0));
-    std::stable_sort(order.begin(), order.end(),
-                     [&](size_t a, size_t b) { return better(probes[a].summary, probes[b].summary); });
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+        if (a == 0 || b == 0) return a == 0 && b != 0;
+        return probes[a].summary.hd < probes[b].summary.hd;
+    });
     size_t best = 0;
     bool have_exact = false;
     for (size_t k : order) {

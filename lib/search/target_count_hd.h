@@ -9,16 +9,16 @@
 // better), so the next probes are at d0 * (1 + step * i), i = 1 .. max_probes - 1 (when d0 is 0,
 // the lower end, at opt.delta * step * i). A probe with more than K balls (a solver that did not
 // reach the optimum) is never returned. Each probe is measured coarsely (coarse_envelope_samples
-// samples of E's boundary instead of evaluate's envelope_samples); those with at most K balls,
-// lowest coarse HD first, are measured exactly (evaluate's hd_only on the surface prepared once)
-// while their coarse HD is below the best exact HD so far. The result is the exactly measured
-// probe of lowest HD among those with at most K balls, ties to fewer balls, then to the smaller
-// delta.
+// samples of E's boundary instead of evaluate's envelope_samples); the target size's probe, then
+// those with at most K balls whose coarse HD is below the best exact HD so far (lowest coarse HD
+// first) are measured exactly (evaluate's hd_only on the surface prepared once). The result is
+// the exactly measured probe of lowest HD among those with at most K balls, ties to fewer balls,
+// then to the smaller delta.
 //
-// What this guarantees: at most K balls; the HD reported is exact (not re-sampled); the result
-// is the probe of lowest coarse HD unless the exact measurement shows another probe's coarse HD
-// below it; deterministic for given options. A probe whose coarse HD misjudged it, or an untried
-// delta, may do better.
+// What this guarantees: at most K balls; an HD (the one reported, exact, not re-sampled) no
+// higher than that of the plain target size's result, which is the first probe; deterministic
+// for given options. It is the best of the exactly measured probes only: a probe whose coarse HD
+// misjudged it, or an untried delta, may do better.
 #pragma once
 #include "delta_probe.h"
 
