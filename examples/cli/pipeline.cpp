@@ -413,7 +413,11 @@ Json run_report(const std::string& input, const caio::MeshData& mesh, const Owne
     if (o.select.target_count > 0) j["hd_reached"] = ev->hd_two_sided;
     else if (ss.hd_reached >= 0) j["hd_reached"] = ss.hd_reached;
     else j["hd_reached"] = nullptr;
-    if (o.select.target_error > 0) j["target_reached"] = !r.target_missed;
+    if (o.select.target_error > 0) {
+        j["target_reached"] = !r.target_missed;
+        // no lower bound on the count is known (docs/fidelity.md): null, never a guess
+        j["balls_lower_bound"] = nullptr;
+    }
     if (r.target_missed) j["error"] = error_json(r.failure);
     j["time_s"] = {{"read", round4(t.read)},       {"candidates", round4(t.candidates)}, {"select", round4(t.select)},
                    {"connect", round4(t.connect)}, {"write", round4(t.write)},           {"evaluate", round4(t.evaluate)},
@@ -424,7 +428,7 @@ Json run_report(const std::string& input, const caio::MeshData& mesh, const Owne
 }  // namespace
 
 Outcome run_pipeline(const std::string& input, const RunOptions& o, const Outputs& out, ca_progress_fn progress,
-                     void* progress_user) {
+                     void* progress_user, ca_log_fn log) {
     Outcome r;
     StageTimes t;
     const auto t_start = Clock::now();
@@ -441,6 +445,8 @@ Outcome run_pipeline(const std::string& input, const RunOptions& o, const Output
     desc.threads = o.threads;
     desc.progress = progress;
     desc.progress_user = progress_user;
+    desc.log = log;
+    desc.log_user = progress_user;
     ca_status st;
     if (!context_for(owned, desc, o.time_limit_s, t_start, "candidates", r.failure)) return r;
 
