@@ -86,8 +86,15 @@ struct Searcher {
             for (const TargetErrorProbe& p : out.probes)
                 if (!p.passed && p.delta > lo && (hi == 0 || p.delta < hi)) hi = p.delta;
             if (hi > 0) {
-                if (hi - lo > opt.tolerance) c.push_back(0.5 * (lo + hi));
-                for (double f : {1.1, 1.25, 1.5}) c.push_back(f * hi);
+                // with count_down the caller probes the count just below lo's itself
+                size_t hi_balls = 0;
+                for (const TargetErrorProbe& p : out.probes)
+                    if (p.delta == hi) hi_balls = p.balls;
+                const bool adjacent = opt.count_down && best().balls <= hi_balls + 1;
+                if (hi - lo > opt.tolerance && !adjacent) c.push_back(0.5 * (lo + hi));
+                // upwards, far: the HD is not monotone (a feature caught or missed), so a much
+                // larger delta can pass with far fewer balls
+                for (double f : {1.1, 1.25, 1.5, 2.0, 3.0}) c.push_back(f * hi);
             } else {
                 for (double f : {1.25, 1.5, 2.0}) c.push_back(f * lo);  // nothing above has failed yet
             }
@@ -165,7 +172,6 @@ struct Searcher {
         // Phase 2: the neighbourhood, while probes are left.
         while (budget() && have_best()) {
             if (best().passed && best().balls <= 1) break;
-            if (best().passed && opt.count_down) break;  // the caller's count-down looks further
             double next = 0;
             for (double c : candidates())
                 if (c >= floor_delta && c <= kLargestDelta && !probed(c)) {

@@ -12,8 +12,9 @@
 // down) for phase 2. This assumes HD(delta) is monotone, which it is not (the fit, the
 // connection): a delta above the bracket, or between two failing probes, can pass.
 // Phase 2 (neighbourhood), with the probes left: when a probe passes, the gap between the best
-// passing delta L and the nearest failing delta H above it is bisected, then 1.1 H, 1.25 H, 1.5 H
-// (1.25 L, 1.5 L, 2 L when no probe above L failed) and 0.9 L are probed; when none passes, 1.25 and 1.5 times the start, then the midpoints of
+// passing delta L and the nearest failing delta H above it is bisected (not with count_down when
+// their counts differ by at most one), then 1.1 H, 1.25 H, 1.5 H, 2 H, 3 H (1.25 L, 1.5 L, 2 L when
+// no probe above L failed) and 0.9 L are probed; when none passes, 1.25 and 1.5 times the start, then the midpoints of
 // adjacent probed deltas (the widest gap by ratio first, of equal ones the larger). The candidate list is recomputed after every probe
 // (a new best moves L and H), deltas already probed (or out of [floor, kLargestDelta]) are
 // skipped, and the phase ends when no candidate is left or max_probes probes have run.
@@ -36,9 +37,8 @@ struct DeltaSearchOptions {
     double tolerance = 1e-3;      // bisection stops when the bracket is narrower
     double target_error = 2;      // E: a probe passes when its HD <= E
     uint32_t max_probes = 14;     // probes run, those without a cover included
-    bool count_down = false;      // the caller then probes fewer balls itself: the bracket is not
-                                  // refined past adjacent counts, and phase 2 runs only when
-                                  // nothing passed
+    bool count_down = false;      // the caller then probes the count below the best itself: a
+                                  // bracket whose ends' counts differ by one is not refined
 };
 
 struct DeltaSearchResult {

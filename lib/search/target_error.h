@@ -6,14 +6,12 @@
 // The search (delta_search.h): bracket the largest passing delta (HD <= E) from the given delta,
 // each step scaled by E / HD (the skeleton's HD grows about in proportion to delta), refine the
 // bracket, then probe the neighbourhood of the best probe (the HD is not monotone in delta), at
-// most max_probes probes in all; a bracket whose ends' counts differ by one is not refined, and the
-// neighbourhood is left to the count-down when a probe passes. The count-down: while the best
-// passing probe has n > 1 balls, the probes target_count's search (target_count_hd.h) makes for
-// n - 1 balls: the target size d0 (the smallest delta with at most n - 1 balls, selection.h), then
+// most max_probes probes in all; a bracket whose ends' counts differ by one is not refined (the
+// count-down probes that count). The count-down: while the best passing probe has n > 1 balls,
+// the first of the probes target_count's search (target_count_hd.h) makes for n - 1 balls: the
+// target size d0 (the smallest delta with at most n - 1 balls, selection.h), then
 // d0 (1 + count_down_step i), i = 1 .. count_down_sweep - 1, until one passes with fewer balls,
-// which becomes the best; the first count none passes for ends it (at most max_count_down probes).
-// So a count for which target_count's probes find a skeleton within E is found (up to the fit:
-// target_count's result is fitted thoroughly, these probes once). The result is the best passing
+// which becomes the best; the first count none passes for ends it (at most max_count_down probes). The result is the best passing
 // probe (fewest balls, then lowest HD, then larger delta), or, when none passes, the probe of
 // lowest HD with `reached` false.
 //
@@ -43,9 +41,9 @@ struct TargetErrorOptions {
     EvaluateOptions evaluate;     // how each probe is measured (ca_evaluate's defaults)
     std::optional<FitOptions> also_fitted;  // set, with fit unset: each probe judged unfitted and
                                             // fitted with these, the lower HD of the two
-    uint32_t max_probes = 8;      // select + connect + evaluate runs of the delta search, at most
-    uint32_t max_count_down = 12;   // the count-down's probes after it, at most
-    uint32_t count_down_sweep = 9;  // probes per count, its target size included (target_count's 9)
+    uint32_t max_probes = 12;     // select + connect + evaluate runs of the delta search, at most
+    uint32_t max_count_down = 6;    // the count-down's probes after it, at most
+    uint32_t count_down_sweep = 3;  // probes per count, its target size included
     double count_down_step = 0.02;  // their relative delta step (target_count's)
     uint32_t coarse_envelope_samples = 10000;  // the coarse measurement's samples of E's boundary
 };
