@@ -59,6 +59,13 @@ inline void root_and_only(int argc, char** argv, std::string& root, std::string&
     }
 }
 
+// The paper meshes, <root>/meshes/paper/*.obj; when there are none, says that `program` skipped them.
+inline std::vector<std::string> paper_models(const char* program, const std::string& root) {
+    std::vector<std::string> models = list_files(root + "/meshes/paper", ".obj");
+    if (models.empty()) std::printf("%s: no models under %s/meshes/paper, skipped\n", program, root.c_str());
+    return models;
+}
+
 inline std::string stem(const std::string& path) {
     std::string n = path.substr(path.find_last_of('/') + 1);
     return n.substr(0, n.find_last_of('.'));
@@ -140,7 +147,7 @@ inline double peak_rss_mb() {
     return double(u.ru_maxrss) / 1024.0;
 }
 
-// The three options structs of a pipeline run, at the library's defaults.
+// The three options structs of a pipeline run, starting at the library's defaults.
 struct DefaultOptions {
     ca_candidate_options candidates;
     ca_select_options select;
@@ -317,6 +324,52 @@ inline PipelineRun run_pipeline(const caio::MeshData& mesh, const ca_candidate_o
     ca_candidate_set_destroy(set);
     ca_context_destroy(ctx);
     return r;
+}
+
+// The set-cover instances of the reference code (<root>/reference/coverage_axis/): its mesh, its
+// samples and candidates, a delta and the known optimum at it, and a row name.
+struct ReferenceInstance {
+    const char* mesh;
+    const char* samples;
+    const char* candidates;
+    double delta;
+    int known;
+    const char* name;
+};
+inline const std::vector<ReferenceInstance>& reference_instances() {
+    static const std::vector<ReferenceInstance> refs = {
+        {"01Ants-12_mesh.off", "01Ants-12_mesh_samples_2000.obj", "01Ants-12_mesh_VD.txt", 0.02, 58, "Ant-12 d.02 (opt 58)"},
+        {"01Ants-12_mesh.off", "01Ants-12_mesh_samples_2000.obj", "01Ants-12_mesh_VD.txt", 0.025, 50, "Ant-12 d.025 (opt 50)"},
+        {"01Ants-27.off", "01Ants-27_samples_1500.obj", "01Ants-27_VD.txt", 0.03, 41, "Ant-27 d.03 (opt 41)"},
+    };
+    return refs;
+}
+
+// A reference instance as read: packed samples, candidate centres and radii, and its mesh's
+// bounding box (min corner, longest side). read_reference prints the table row of an instance
+// whose files are missing.
+struct ReferenceData {
+    std::vector<double> samples, centers, radii;
+    double lo[3] = {1e300, 1e300, 1e300};
+    double longest = 0;
+};
+inline bool read_reference(const std::string& root, const ReferenceInstance& ref, ReferenceData& out) {
+    const std::string dir = root + "/reference/coverage_axis/";
+    caio::MeshData mesh;
+    std::vector<double> unused;
+    std::string err;
+    if (!caio::read_mesh(dir + ref.mesh, mesh, err) || !caio::read_points(dir + ref.samples, out.samples, unused, err) ||
+        !caio::read_points(dir + ref.candidates, out.centers, out.radii, err)) {
+        std::printf("| %s | missing: %s |\n", ref.name, err.c_str());
+        return false;
+    }
+    double hi[3] = {-1e300, -1e300, -1e300};
+    for (size_t i = 0; i < mesh.positions.size(); ++i) {
+        out.lo[i % 3] = std::min(out.lo[i % 3], mesh.positions[i]);
+        hi[i % 3] = std::max(hi[i % 3], mesh.positions[i]);
+    }
+    out.longest = std::max({hi[0] - out.lo[0], hi[1] - out.lo[1], hi[2] - out.lo[2]});
+    return true;
 }
 
 // What run_isolated saw (plain data: it crosses a pipe).

@@ -32,38 +32,10 @@ struct JobResult {
 
 // The pipeline once on `mesh` with its own context of `threads` worker threads.
 JobResult run_once(const caio::MeshData& mesh, int threads) {
-    JobResult r;
-    ca_context_desc desc;
-    ca_context_desc_init(&desc);
-    desc.threads = threads;
-    ca_context* ctx = nullptr;
-    if (ca_context_create(&desc, &ctx) != CA_OK) {
-        r.status = CA_ERROR_OUT_OF_MEMORY;
-        return r;
-    }
     const bench::DefaultOptions o;
-    const ca_surface_view v = bench::surface_view(mesh);
-    ca_candidate_set* set = nullptr;
-    ca_selection* sel = nullptr;
-    ca_skeleton* sk = nullptr;
-    r.status = ca_candidates(ctx, &v, &o.candidates, &set);
-    if (r.status == CA_OK) r.status = ca_select(ctx, set, &o.select, &sel);
-    if (r.status == CA_OK) {
-        r.balls = ca_selection_count(sel);
-        r.status = ca_connect(ctx, set, sel, &o.connect, &sk);
-    }
-    if (r.status == CA_OK) {
-        ca_skeleton_stats ks;
-        ks.struct_size = sizeof ks;
-        ca_skeleton_stats_get(sk, &ks);
-        r.edges = ks.edges;
-        r.faces = ks.faces;
-    }
-    ca_skeleton_destroy(sk);
-    ca_selection_destroy(sel);
-    ca_candidate_set_destroy(set);
-    ca_context_destroy(ctx);
-    return r;
+    const bench::PipelineRun p = bench::run_pipeline(mesh, o.candidates, o.select, o.connect, false, nullptr, nullptr,
+                                                     CA_POINT_NORMALS_TRUSTED, threads);
+    return JobResult{p.status, p.balls, p.edges, p.faces};
 }
 
 // `reps` runs; the result of the last, or the first that differs from `want` (a changed skeleton

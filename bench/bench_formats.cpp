@@ -19,12 +19,7 @@ int main() {
         "../fox.obj", "fox.off", "fox.ply", "fox.stl", "fox_ascii.stl", "fox.gltf", "fox_embedded.gltf",
         "fox_nodes.gltf", "fox.glb", "fox.dae", "fish500.xyz", "fish500_nonormals.xyz", "fish500.ply",
         "fish500_nonormals.ply", "fish500.obj", "fish500_nonormals.obj", "fish500.pts", "fish500_plain.pts"};
-    ca_candidate_options co;
-    ca_candidate_options_init(&co);
-    ca_select_options so;
-    ca_select_options_init(&so);
-    ca_connect_options cop;
-    ca_connect_options_init(&cop);
+    const bench::DefaultOptions d;
     std::printf("\n## Readers: one model per format (tests/data/formats), then the pipeline at the defaults\n\n");
     std::printf("| format | file | read ok? | input vertices | triangles | normals | read ms | pipeline | |V| | pipeline s |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
@@ -47,7 +42,7 @@ int main() {
         }
         std::sort(ms.begin(), ms.end());
         const auto t = std::chrono::steady_clock::now();
-        const bench::PipelineRun r = bench::run_pipeline(mesh, co, so, cop);
+        const bench::PipelineRun r = bench::run_pipeline(mesh, d.candidates, d.select, d.connect);
         const double total = bench::seconds_since(t);
         std::printf("| %s | %s | yes | %zu | %zu | %s | %.2f | %s | %s | %.3f |\n", format.c_str(), name.c_str(),
                     mesh.positions.size() / 3, mesh.triangles.size() / 3, mesh.normals.empty() ? "no" : "yes",

@@ -57,17 +57,9 @@ int main(int argc, char** argv) {
         else if (std::string(argv[i]) == "--covered-fit") covered_fit = true;
         else root = argv[i];
     }
-    const auto models = bench::list_files(root + "/meshes/paper", ".obj");
-    if (models.empty()) {
-        std::printf("bench_pipeline: no models under %s/meshes/paper, skipped\n", root.c_str());
-        return 0;
-    }
-    ca_candidate_options co;
-    ca_candidate_options_init(&co);
-    ca_select_options so;
-    ca_select_options_init(&so);
-    ca_connect_options cop;
-    ca_connect_options_init(&cop);
+    const auto models = bench::paper_models("bench_pipeline", root);
+    if (models.empty()) return 0;
+    const bench::DefaultOptions d;
     ca_connect_options power;
     ca_connect_options_init(&power);
     power.method = CA_CONNECT_POWER;
@@ -75,7 +67,7 @@ int main(int argc, char** argv) {
     ca_connect_options_init(&fit);
     fit.fit = covered_fit ? CA_FIT_COVERED : CA_FIT_ONCE;
     if (threads_only) {
-        threads_table(models, co, so, cop);
+        threads_table(models, d.candidates, d.select, d.connect);
         return 0;
     }
 
@@ -93,7 +85,7 @@ int main(int argc, char** argv) {
         caio::MeshData mesh;
         std::string err;
         if (!caio::read_mesh(path, mesh, err)) { std::printf("| %s | read failed: %s |\n", bench::stem(path).c_str(), err.c_str()); continue; }
-        bench::PipelineRun r = bench::run_pipeline(mesh, co, so, cop, true, fit_only ? nullptr : &power, &fit);
+        bench::PipelineRun r = bench::run_pipeline(mesh, d.candidates, d.select, d.connect, true, fit_only ? nullptr : &power, &fit);
         if (r.status != CA_OK) {
             std::printf("| %s | %zu | failed: %s |\n", bench::stem(path).c_str(), mesh.triangles.size() / 3, r.message.c_str());
             continue;
@@ -104,7 +96,7 @@ int main(int argc, char** argv) {
         double t_delaunay = 0;
         ca::Surface surf;
         if (!fit_only && bench::load_surface(path, surf)) {
-            const std::vector<ca::Vec3> pts = ca::sample_surface(surf.mesh, co.voronoi_samples, 2);
+            const std::vector<ca::Vec3> pts = ca::sample_surface(surf.mesh, d.candidates.voronoi_samples, 2);
             std::vector<ca::Tet> tets;
             const auto t = std::chrono::steady_clock::now();
             ca::delaunay_tetrahedra(pts, tets, ca::Monitor{}, "delaunay");
@@ -156,38 +148,20 @@ int main(int argc, char** argv) {
                 median(fitted_totals));
 
     if (fit_only) return 0;
-    threads_table(models, co, so, cop);
+    threads_table(models, d.candidates, d.select, d.connect);
 
     // Reference instances: the reference implementation's samples and candidates.
-    struct Ref { const char* mesh; const char* samples; const char* candidates; double delta; int known; };
-    const Ref refs[] = {
-        {"01Ants-12_mesh.off", "01Ants-12_mesh_samples_2000.obj", "01Ants-12_mesh_VD.txt", 0.02, 58},
-        {"01Ants-12_mesh.off", "01Ants-12_mesh_samples_2000.obj", "01Ants-12_mesh_VD.txt", 0.025, 50},
-        {"01Ants-27.off", "01Ants-27_samples_1500.obj", "01Ants-27_VD.txt", 0.03, 41},
-    };
-    const std::string dir = root + "/reference/coverage_axis/";
     std::printf("\n## Reference instances (samples and candidates of the reference code)\n\n");
     std::printf("| instance | delta | |S| x |P| | known optimum | ours | proven optimal | select s (median of 5) |\n|---|---|---|---|---|---|---|\n");
-    for (const Ref& ref : refs) {
-        caio::MeshData mesh;
-        std::vector<double> s, r_unused, c, r;
-        std::string err;
-        if (!caio::read_mesh(dir + ref.mesh, mesh, err) || !caio::read_points(dir + ref.samples, s, r_unused, err) ||
-            !caio::read_points(dir + ref.candidates, c, r, err)) {
-            std::printf("| %s | missing: %s |\n", ref.mesh, err.c_str());
-            continue;
-        }
-        double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-        for (size_t i = 0; i < mesh.positions.size(); ++i) {
-            lo[i % 3] = std::min(lo[i % 3], mesh.positions[i]);
-            hi[i % 3] = std::max(hi[i % 3], mesh.positions[i]);
-        }
-        const double longest = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+    for (const bench::ReferenceInstance& ref : bench::reference_instances()) {
+        bench::ReferenceData in;
+        if (!bench::read_reference(root, ref, in)) continue;
         ca_context* ctx = nullptr;
         ca_context_create(nullptr, &ctx);
         ca_candidate_set* set = nullptr;
         ca_selection* sel = nullptr;
-        ca_candidates_from_arrays(ctx, s.data(), s.size() / 3, 0, c.data(), 0, r.data(), 0, r.size(), longest, &set);
+        ca_candidates_from_arrays(ctx, in.samples.data(), in.samples.size() / 3, 0, in.centers.data(), 0, in.radii.data(), 0,
+                                  in.radii.size(), in.longest, &set);
         ca_select_options o;
         ca_select_options_init(&o);
         o.delta = ref.delta;
@@ -207,7 +181,7 @@ int main(int argc, char** argv) {
         ca_select_stats ss;
         ss.struct_size = sizeof ss;
         if (st == CA_OK) ca_selection_stats(sel, &ss);
-        std::printf("| %s | %.3f | %zu x %zu | %d | %zu | %s | %.3f |\n", ref.candidates, ref.delta, s.size() / 3, r.size(),
+        std::printf("| %s | %.3f | %zu x %zu | %d | %zu | %s | %.3f |\n", ref.candidates, ref.delta, in.samples.size() / 3, in.radii.size(),
                     ref.known, st == CA_OK ? ca_selection_count(sel) : 0, st == CA_OK && ss.proven_optimal ? "yes" : "no", secs);
         ca_selection_destroy(sel);
         ca_candidate_set_destroy(set);

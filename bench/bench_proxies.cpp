@@ -502,11 +502,8 @@ void peer_summary(const std::vector<PeerRow>& rows) {
 int main(int argc, char** argv) {
     std::string root, only;
     bench::root_and_only(argc, argv, root, only);
-    const auto models = bench::list_files(root + "/meshes/paper", ".obj");
-    if (models.empty()) {
-        std::printf("bench_proxies: no models under %s/meshes/paper, skipped\n", root.c_str());
-        return 0;
-    }
+    const auto models = bench::paper_models("bench_proxies", root);
+    if (models.empty()) return 0;
     std::vector<std::string> real;
     // the game files: every kRealEvery-th of each folder in name order (all of them with --only)
     for (const auto& [folder, ext] : {std::pair<const char*, const char*>{"0ad", ".obj"}, {"flightgear", ".ac"}, {"openarena", ".md3"}}) {

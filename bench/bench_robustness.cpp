@@ -90,13 +90,8 @@ int main(int argc, char** argv) {
         std::printf("bench_robustness: no models under %s/meshes, skipped\n", root.c_str());
         return 0;
     }
-    ca_candidate_options co;
-    ca_candidate_options_init(&co);
-    ca_select_options so;
-    ca_select_options_init(&so);
-    so.time_limit_s = 10;
-    ca_connect_options cop;
-    ca_connect_options_init(&cop);
+    bench::DefaultOptions d;
+    d.select.time_limit_s = 10;
     std::printf("\n## Every mesh under meshes/ (defaults, exact cover with a 10 s budget)\n\n");
     std::printf("| model | result | |V| | |E| | |F| | components | b1 | optimal | total s |\n|---|---|---|---|---|---|---|---|---|\n");
     int ok = 0, refused = 0;
@@ -106,7 +101,7 @@ int main(int argc, char** argv) {
         std::string err;
         if (!caio::read_mesh(path, mesh, err)) { std::printf("| %s | read error: %s |\n", name.c_str(), err.c_str()); ++refused; continue; }
         const auto t = std::chrono::steady_clock::now();
-        bench::PipelineRun r = bench::run_pipeline(mesh, co, so, cop);
+        bench::PipelineRun r = bench::run_pipeline(mesh, d.candidates, d.select, d.connect);
         const double secs = bench::seconds_since(t);
         if (r.status == CA_OK) {
             ++ok;
@@ -119,6 +114,6 @@ int main(int argc, char** argv) {
     }
     std::printf("\n%zu meshes: %d skeletons, %d clear refusals, 0 crashes\n", models.size(), ok, refused);
     std::fflush(stdout);
-    generated_inputs(root, co, so, cop);
+    generated_inputs(root, d.candidates, d.select, d.connect);
     return 0;
 }

@@ -39,12 +39,7 @@ int main() {
     const std::string path = std::string(dir) + "/torus.ply";
     if (!bench::write_binary_ply(path, bench::torus(2000, 500))) { std::printf("bench_scale: cannot write %s\n", path.c_str()); return 0; }
 
-    ca_candidate_options co;
-    ca_candidate_options_init(&co);
-    ca_select_options so;
-    ca_select_options_init(&so);
-    ca_connect_options cop;
-    ca_connect_options_init(&cop);
+    const bench::DefaultOptions d;
     // the whole run at 1 and 2 worker threads and at the defaults (all cores), each in its own process
     const int cores = ca::resolve_threads(0);
     std::vector<int> counts = {1, 2};
@@ -53,7 +48,7 @@ int main() {
     std::vector<double> peaks;
     for (int t : counts) {
         double peak = 0;
-        runs.push_back(bench::run_isolated(path, co, so, cop, peak, t == cores ? 0 : t));
+        runs.push_back(bench::run_isolated(path, d.candidates, d.select, d.connect, peak, t == cores ? 0 : t));
         peaks.push_back(peak);
     }
     const bench::Outcome& o = runs.back();
@@ -114,9 +109,9 @@ int main() {
                 timed([&] { winding = std::make_unique<ca::WindingNumber>(tree, 2.0, threads); }));
     std::vector<ca::Vec3> samples;
     std::printf("| surface sampling (1 500 + 4 000 + 4 000) | %.3f |\n", timed([&] {
-        ca::sample_surface(mesh, co.cover_samples, 1);
-        ca::sample_surface(mesh, co.connect_samples, 4);
-        samples = ca::sample_surface(mesh, co.voronoi_samples, 2);
+        ca::sample_surface(mesh, d.candidates.cover_samples, 1);
+        ca::sample_surface(mesh, d.candidates.connect_samples, 4);
+        samples = ca::sample_surface(mesh, d.candidates.voronoi_samples, 2);
     }));
     std::vector<ca::Tet> tets;
     std::printf("| Delaunay of the 4 000 samples (Qhull) | %.3f |\n", timed([&] { ca::delaunay_tetrahedra(samples, tets, ca::Monitor{}, "delaunay"); }));

@@ -97,41 +97,21 @@ void model_instance(const std::string& path, ca::Generator gen, uint32_t samples
 int main(int argc, char** argv) {
     const std::string root = argc > 1 ? argv[1] : "../shared/data";
     if (argc > 2) g_time_limit = std::atof(argv[2]);
-    const auto models = bench::list_files(root + "/meshes/paper", ".obj");
-    const std::string dir = root + "/reference/coverage_axis/";
-    if (models.empty()) {
-        std::printf("bench_select: no models under %s/meshes/paper, skipped\n", root.c_str());
-        return 0;
-    }
+    const auto models = bench::paper_models("bench_select", root);
+    if (models.empty()) return 0;
     std::printf("\n## Selection engine (exact time limit %.1f s; times in s; peak MB per instance incl. candidates)\n\n%s\n\n", g_time_limit, bench::kCpuClock);
     std::printf("| instance | rows x cols | kernel | comps/parts | fast | optimal | gap %% | wall s | prove | optimal | "
                 "greedy | capp | bound | gap %% | how | coverage | reduce | solve | wall / cpu | fast peak MB | peak MB |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
 
-    struct Ref { const char* mesh; const char* samples; const char* candidates; double delta; const char* name; };
-    const Ref refs[] = {
-        {"01Ants-12_mesh.off", "01Ants-12_mesh_samples_2000.obj", "01Ants-12_mesh_VD.txt", 0.02, "Ant-12 d.02 (opt 58)"},
-        {"01Ants-12_mesh.off", "01Ants-12_mesh_samples_2000.obj", "01Ants-12_mesh_VD.txt", 0.025, "Ant-12 d.025 (opt 50)"},
-        {"01Ants-27.off", "01Ants-27_samples_1500.obj", "01Ants-27_VD.txt", 0.03, "Ant-27 d.03 (opt 41)"},
-    };
-    for (const Ref& ref : refs) {
+    for (const bench::ReferenceInstance& ref : bench::reference_instances()) {
         in_child([&] {
-            caio::MeshData mesh;
-            std::vector<double> s, r_unused, c, r;
-            std::string err;
-            if (!caio::read_mesh(dir + ref.mesh, mesh, err) || !caio::read_points(dir + ref.samples, s, r_unused, err) ||
-                !caio::read_points(dir + ref.candidates, c, r, err)) {
-                std::printf("| %s | missing: %s |\n", ref.name, err.c_str());
-                return;
-            }
+            bench::ReferenceData in;
+            if (!bench::read_reference(root, ref, in)) return;
             // the normalisation of bench_pipeline: min corner at 0, longest side 1
-            double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-            for (size_t i = 0; i < mesh.positions.size(); ++i) {
-                lo[i % 3] = std::min(lo[i % 3], mesh.positions[i]);
-                hi[i % 3] = std::max(hi[i % 3], mesh.positions[i]);
-            }
-            const double L = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
-            const ca::Vec3 o(lo[0], lo[1], lo[2]);
+            const std::vector<double>&s = in.samples, &c = in.centers, &r = in.radii;
+            const double L = in.longest;
+            const ca::Vec3 o(in.lo[0], in.lo[1], in.lo[2]);
             ca::CandidateSet set;
             for (size_t i = 0; i + 2 < s.size(); i += 3) set.cover_samples.push_back((ca::Vec3(s[i], s[i + 1], s[i + 2]) - o) / L);
             for (size_t i = 0; i + 2 < c.size(); i += 3)

@@ -85,11 +85,8 @@ CountRun count_run(ca_context* ctx, const ca_surface_view& v, const ca_candidate
 int main(int argc, char** argv) {
     std::string root, only;
     bench::root_and_only(argc, argv, root, only);
-    const auto models = bench::list_files(root + "/meshes/paper", ".obj");
-    if (models.empty()) {
-        std::printf("bench_target_error: no models under %s/meshes/paper, skipped\n", root.c_str());
-        return 0;
-    }
+    const auto models = bench::paper_models("bench_target_error", root);
+    if (models.empty()) return 0;
     std::printf("\n## Error-bounded selection: --target-error 2, 1.5 and 1 against --target-count runs\n\n");
     std::printf("Closed paper meshes, defaults otherwise (|S| 1500, Voronoi candidates, exact cover, fast effort, probe_fit 0: "
                 "each probe's cover judged unfitted and fitted once). Per E: the balls target-error returned, its HD (hd_reached: the "

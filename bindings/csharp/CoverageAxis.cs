@@ -788,9 +788,7 @@ namespace CoverageAxis
                                           CancellationToken token = default(CancellationToken))
         {
             var o = (options ?? new EvaluateOptions()).Raw;
-            var view = new Native.SkeletonView();
-            Native.CheckDefaults(Native.ca_skeleton_view_defaults(ref view, Native.SizeOf<Native.SkeletonView>()), "ca_skeleton_view");
-            Native.CheckDefaults(Native.ca_skeleton_get_view(skeleton.Handle, ref view), "ca_skeleton_view");
+            var view = ViewOf(skeleton);
             var result = new Native.Evaluation { struct_size = Native.SizeOf<Native.Evaluation>() };
             var done = Run(token, () => surface.With(v => Native.ca_evaluate(handle, ref v, ref view, ref o, ref result)),
                            () => result);
@@ -842,9 +840,7 @@ namespace CoverageAxis
                                CancellationToken token = default(CancellationToken))
         {
             var o = (options ?? new ProxyOptions()).Raw;
-            var view = new Native.SkeletonView();
-            Native.CheckDefaults(Native.ca_skeleton_view_defaults(ref view, Native.SizeOf<Native.SkeletonView>()), "ca_skeleton_view");
-            Native.CheckDefaults(Native.ca_skeleton_get_view(skeleton.Handle, ref view), "ca_skeleton_view");
+            var view = ViewOf(skeleton);
             ProxySetHandle h = null;
             var done = Run(token, () => Native.ca_proxies(handle, set.Handle, ref view, ref o, out h), () => new Proxies(h));
             GC.KeepAlive(skeleton);
@@ -890,6 +886,14 @@ namespace CoverageAxis
         }
     }
 
+    /// <summary>A result owning its C object through a SafeHandle; Dispose frees it (or the GC does).</summary>
+    public abstract class OwnedResult<THandle> : IDisposable where THandle : OwnedHandle
+    {
+        internal readonly THandle Handle;
+        internal OwnedResult(THandle h) { Handle = h; }
+        public void Dispose() { Handle.Dispose(); }
+    }
+
     /// <summary>Copies getter arrays out of the C objects.</summary>
     static class Copy
     {
@@ -911,11 +915,9 @@ namespace CoverageAxis
 
     /// <summary>Samples and candidate balls (step 1). Selections keep the C object alive, so it
     /// may be disposed before them.</summary>
-    public sealed class CandidateSet : IDisposable
+    public sealed class CandidateSet : OwnedResult<CandidateSetHandle>
     {
-        internal readonly CandidateSetHandle Handle;
-        internal CandidateSet(CandidateSetHandle h) { Handle = h; }
-        public void Dispose() { Handle.Dispose(); }
+        internal CandidateSet(CandidateSetHandle h) : base(h) { }
         public int Count { get { return (int)Native.ca_candidate_set_count(Handle); } }
         /// <summary>The surface samples to cover.</summary>
         public int SampleCount { get { return (int)Native.ca_candidate_set_sample_count(Handle); } }
@@ -934,11 +936,9 @@ namespace CoverageAxis
     }
 
     /// <summary>Balls chosen by step 2; outlives its candidate set and context.</summary>
-    public sealed class Selection : IDisposable
+    public sealed class Selection : OwnedResult<SelectionHandle>
     {
-        internal readonly SelectionHandle Handle;
-        internal Selection(SelectionHandle h) { Handle = h; }
-        public void Dispose() { Handle.Dispose(); }
+        internal Selection(SelectionHandle h) : base(h) { }
         public int Count { get { return (int)Native.ca_selection_count(Handle); } }
         /// <summary>Indices into the candidate set.</summary>
         public uint[] Indices { get { return Copy.UInts(Native.ca_selection_indices(Handle), (ulong)Count); } }
@@ -961,11 +961,9 @@ namespace CoverageAxis
     }
 
     /// <summary>The medial skeleton (step 3); holds nothing of the other objects.</summary>
-    public sealed class Skeleton : IDisposable
+    public sealed class Skeleton : OwnedResult<SkeletonHandle>
     {
-        internal readonly SkeletonHandle Handle;
-        internal Skeleton(SkeletonHandle h) { Handle = h; }
-        public void Dispose() { Handle.Dispose(); }
+        internal Skeleton(SkeletonHandle h) : base(h) { }
         public int Count { get { return (int)Native.ca_skeleton_vertex_count(Handle); } }
         public double[] Centers { get { return Copy.Doubles(Native.ca_skeleton_centers(Handle), 3 * (ulong)Count); } }
         public double[] Radii { get { return Copy.Doubles(Native.ca_skeleton_radii(Handle), (ulong)Count); } }
@@ -987,11 +985,9 @@ namespace CoverageAxis
     /// <summary>Per surface vertex: 4 balls and weights (decreasing, sum 1; an unused slot has weight 0
     /// and repeats the first ball) and the nearest primitive (0 ball, 1 edge, 2 face; an index into the
     /// skeleton's balls, edges or faces).</summary>
-    public sealed class Correspondence : IDisposable
+    public sealed class Correspondence : OwnedResult<CorrespondenceHandle>
     {
-        internal readonly CorrespondenceHandle Handle;
-        internal Correspondence(CorrespondenceHandle h) { Handle = h; }
-        public void Dispose() { Handle.Dispose(); }
+        internal Correspondence(CorrespondenceHandle h) : base(h) { }
         public int Count { get { return (int)Native.ca_correspondence_vertex_count(Handle); } }
         public uint[] Balls { get { return Copy.UInts(Native.ca_correspondence_balls(Handle), 4 * (ulong)Count); } }
         public double[] Weights { get { return Copy.Doubles(Native.ca_correspondence_weights(Handle), 4 * (ulong)Count); } }
@@ -1001,11 +997,9 @@ namespace CoverageAxis
 
     /// <summary>A tree of joints (parents before children; joint 0 the root, parent -1) and per
     /// surface vertex 4 joints and weights (decreasing, sum 1).</summary>
-    public sealed class Rig : IDisposable
+    public sealed class Rig : OwnedResult<RigHandle>
     {
-        internal readonly RigHandle Handle;
-        internal Rig(RigHandle h) { Handle = h; }
-        public void Dispose() { Handle.Dispose(); }
+        internal Rig(RigHandle h) : base(h) { }
         public int Count { get { return (int)Native.ca_rig_joint_count(Handle); } }
         public int BranchCount { get { return (int)Native.ca_rig_branch_count(Handle); } }
         public int VertexCount { get { return (int)Native.ca_rig_vertex_count(Handle); } }
@@ -1026,11 +1020,9 @@ namespace CoverageAxis
     }
 
     /// <summary>Engine proxies (Context.Proxies); they hold nothing of the other objects.</summary>
-    public sealed class Proxies : IDisposable
+    public sealed class Proxies : OwnedResult<ProxySetHandle>
     {
-        internal readonly ProxySetHandle Handle;
-        internal Proxies(ProxySetHandle h) { Handle = h; }
-        public void Dispose() { Handle.Dispose(); }
+        internal Proxies(ProxySetHandle h) : base(h) { }
         public int Count { get { return (int)Native.ca_proxy_set_count(Handle); } }
         /// <summary>Per primitive: true for a tapered capsule, false for a sphere.</summary>
         public bool[] IsCapsule
@@ -1071,11 +1063,9 @@ namespace CoverageAxis
 
     /// <summary>Bone colliders (Context.BoneColliders), each in its joint's frame; they hold nothing
     /// of the other objects.</summary>
-    public sealed class BoneColliders : IDisposable
+    public sealed class BoneColliders : OwnedResult<BoneCollidersHandle>
     {
-        internal readonly BoneCollidersHandle Handle;
-        internal BoneColliders(BoneCollidersHandle h) { Handle = h; }
-        public void Dispose() { Handle.Dispose(); }
+        internal BoneColliders(BoneCollidersHandle h) : base(h) { }
         public int Count { get { return (int)Native.ca_bone_colliders_count(Handle); } }
         /// <summary>The joint of each collider, ascending.</summary>
         public uint[] Joints { get { return Copy.UInts(Native.ca_bone_colliders_joints(Handle), (ulong)Count); } }

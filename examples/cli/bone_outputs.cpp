@@ -19,14 +19,8 @@ Failure usage_failure(const std::string& message) { return Failure{"USAGE_ERROR"
 // (inverse bind: a translation by -p_j), 4 weights per vertex.
 bool rig_skin(ca_context* ctx, const caio::MeshData& mesh, const ca_skeleton* sk, const RunOptions& o, caio::SkinData& skin,
               Failure& failure) {
-    const ca_surface_view surface = surface_view(mesh, o.point_normals);
-    ca_skeleton_view view;
-    ca_skeleton_view_init(&view);
-    ca_skeleton_get_view(sk, &view);
-    ca_rig* raw = nullptr;
-    const ca_status st = ca_rig_build(ctx, &surface, &view, &o.rig, &raw);
-    std::unique_ptr<ca_rig, void (*)(ca_rig*)> rig(raw, ca_rig_destroy);
-    if (st != CA_OK) return failure = library_failure(ctx, st, "rig"), false;
+    const RigPtr rig = build_rig(ctx, mesh, sk, o, failure);
+    if (!rig) return false;
     const size_t nj = ca_rig_joint_count(rig.get()), nv = ca_rig_vertex_count(rig.get());
     const double* p = ca_rig_joint_positions(rig.get());
     skin = caio::SkinData{};
@@ -94,9 +88,7 @@ bool write_bone_outputs(ca_context* ctx, const std::string& input, const caio::M
     ca_bone_collider_options bo = o.bone;
     bo.skip_joints = skip.empty() ? nullptr : skip.data();
     bo.skip_count = skip.size();
-    ca_skeleton_view skv;
-    ca_skeleton_view_init(&skv);
-    ca_skeleton_get_view(sk, &skv);
+    const ca_skeleton_view skv = skeleton_view(sk);
     ca_bone_colliders* raw = nullptr;
     const ca_status st = ca_bone_colliders_build(ctx, set, &skv, &view, &bo, &raw);
     std::unique_ptr<ca_bone_colliders, void (*)(ca_bone_colliders*)> bones(raw, ca_bone_colliders_destroy);

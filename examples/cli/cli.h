@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <memory>
 #include <string>
 
 namespace cli {
@@ -125,6 +126,14 @@ bool is_mesh_file(const std::string& path);
 // Parses a command line: -1 to go on; the exit code after --help or --version (printed); or 2
 // for a bad command line, with a one-line `error` (unknown option, a second input, a bad value).
 int parse_command_line(CLI::App& app, int argc, char** argv, std::string& error);
+
+// The skeleton's view (ca_skeleton_get_view), for the calls that take one (skeleton_outputs.cpp).
+ca_skeleton_view skeleton_view(const ca_skeleton* sk);
+
+// The rig of the skeleton over the input's surface (ca_rig_build with --rig's options; rig_outputs.cpp):
+// null, with `failure` set, when the library refuses.
+using RigPtr = std::unique_ptr<ca_rig, void (*)(ca_rig*)>;
+RigPtr build_rig(ca_context* ctx, const caio::MeshData& mesh, const ca_skeleton* sk, const RunOptions& o, Failure& failure);
 
 // --correspondence and --rig (rig_outputs.cpp): nothing when neither is asked for; adds "rig"
 // (joints, branches) to the report.

@@ -1,7 +1,8 @@
 // rig_outputs.cpp: --correspondence FILE.json and --rig OUT.glb: the input's vertices matched to
 // the skeleton (ca_correspond) and the rig (ca_rig_build), written as JSON (per vertex, in input
 // order: balls, weights, nearest primitive, branch) and as a skinned glTF (rig_writer.h) with the
-// engine proxies, if any, as colliders.
+// engine proxies, if any, as colliders. Also the rig itself (build_rig), which the bone colliders
+// of an input without a skin take too.
 #include "cli.h"
 #include "output_file.h"
 #include "rig_writer.h"
@@ -10,17 +11,24 @@
 
 namespace cli {
 
+RigPtr build_rig(ca_context* ctx, const caio::MeshData& mesh, const ca_skeleton* sk, const RunOptions& o, Failure& failure) {
+    const ca_surface_view surface = surface_view(mesh, o.point_normals);
+    const ca_skeleton_view view = skeleton_view(sk);
+    ca_rig* raw = nullptr;
+    const ca_status st = ca_rig_build(ctx, &surface, &view, &o.rig, &raw);
+    RigPtr rig(raw, ca_rig_destroy);
+    if (st != CA_OK) {
+        failure = library_failure(ctx, st, "rig");
+        rig.reset();
+    }
+    return rig;
+}
+
 bool write_rig_outputs(ca_context* ctx, const caio::MeshData& mesh, const ca_skeleton* sk, const RunOptions& o,
                        const Outputs& out, const std::vector<caio::ProxyData>& proxies, Json& report, Failure& failure) {
     if (out.correspondence.empty() && out.rig.empty()) return true;
-    const ca_surface_view surface = surface_view(mesh, o.point_normals);
-    ca_skeleton_view view;
-    ca_skeleton_view_init(&view);
-    ca_skeleton_get_view(sk, &view);
-    ca_rig* rig_raw = nullptr;
-    ca_status st = ca_rig_build(ctx, &surface, &view, &o.rig, &rig_raw);
-    std::unique_ptr<ca_rig, void (*)(ca_rig*)> rig(rig_raw, ca_rig_destroy);
-    if (st != CA_OK) return failure = library_failure(ctx, st, "rig"), false;
+    const RigPtr rig = build_rig(ctx, mesh, sk, o, failure);
+    if (!rig) return false;
     const size_t nv = ca_rig_vertex_count(rig.get()), nj = ca_rig_joint_count(rig.get());
     report["rig"] = {{"joints", nj}, {"branches", ca_rig_branch_count(rig.get())}};
 
@@ -29,8 +37,10 @@ bool write_rig_outputs(ca_context* ctx, const caio::MeshData& mesh, const ca_ske
         ca_correspondence_options copt;
         ca_correspondence_options_init(&copt);
         copt.smoothing = o.rig.smoothing;
+        const ca_surface_view surface = surface_view(mesh, o.point_normals);
+        const ca_skeleton_view view = skeleton_view(sk);
         ca_correspondence* c_raw = nullptr;
-        st = ca_correspond(ctx, &surface, &view, &copt, &c_raw);
+        const ca_status st = ca_correspond(ctx, &surface, &view, &copt, &c_raw);
         std::unique_ptr<ca_correspondence, void (*)(ca_correspondence*)> c(c_raw, ca_correspondence_destroy);
         if (st != CA_OK) return failure = library_failure(ctx, st, "correspondence"), false;
         const uint32_t* balls = ca_correspondence_balls(c.get());

@@ -56,6 +56,13 @@ using AcceptVertices = std::function<Status(const std::vector<uint32_t>& unique,
                                             const std::vector<Tet>& raw_tets, std::vector<uint8_t>& keep)>;
 Status voronoi_vertices(const std::vector<Vec3>& pts, int threads, const Monitor& monitor, const AcceptVertices& accept,
                         std::vector<Ball>& balls, std::vector<Tet>& tets);
+// voronoi.cpp: the Voronoi vertices of pts whose centre `inside` holds, and the inner flag of every
+// tetrahedron left in `tets` (its circumcentre inside; flat or far ones outer), which the medial
+// connection route reuses instead of a second Delaunay. Every circumcentre is tested, on `threads`
+// threads; `ready` runs before the first test (a mesh's waits for its winding number).
+Status inner_voronoi_vertices(const std::vector<Vec3>& pts, int threads, const Monitor& monitor,
+                              const std::function<Status()>& ready, const std::function<bool(const Vec3&)>& inside,
+                              std::vector<Ball>& balls, std::vector<Tet>& tets, std::vector<uint8_t>& inner);
 // voronoi.cpp: the inner Voronoi vertices of dense surface samples of a mesh.
 Status mesh_voronoi_candidates(const CandidateOptions& opt, const Monitor& monitor, Beside& structures,
                                const SurfaceStructures& built, int threads, CandidateSet& out);

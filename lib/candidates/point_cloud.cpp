@@ -113,30 +113,15 @@ void drop_outliers(const std::vector<Vec3>& pts, std::vector<Vec3>& upts, std::v
     unrm.resize(n);
 }
 
-// Also the inner flags of every tetrahedron (circumcentre inside by the winding number; flat or
-// far ones outer), which the medial connection route reuses instead of a second Delaunay.
+// Also the inner flags of every tetrahedron (inner_voronoi_vertices, by the cloud's winding number).
 Status voronoi_cloud_candidates(const std::vector<Vec3>& upts, const PointCloudWinding& winding, int threads,
                                 const Monitor& monitor, std::vector<Ball>& out, std::vector<Tet>& tets,
                                 std::vector<uint8_t>& inner) {
     std::vector<Ball> balls;
-    std::vector<uint8_t> raw_inner;
-    std::vector<Tet> raw_tets_kept;
-    Status st = voronoi_vertices(upts, threads, monitor,
-        [&](const std::vector<uint32_t>& ids, const std::vector<Ball>& raw, const std::vector<Tet>& raw_tets,
-            std::vector<uint8_t>& keep) {
-            raw_inner.assign(raw.size(), 0);
-            const bool done = parallel_for(raw.size(), threads, 8192, monitor, "inside", [&](size_t b, size_t e) {
-                for (size_t k = b; k < e; ++k) raw_inner[k] = winding.inside(raw[k].center);
-            });
-            if (!done) return monitor.stop_status("inside");
-            for (size_t k = 0; k < ids.size(); ++k) keep[k] = raw_inner[ids[k]];
-            raw_tets_kept = raw_tets;
-            return Status::success();
-        }, balls, tets);
+    const Status st = inner_voronoi_vertices(
+        upts, threads, monitor, [] { return Status::success(); },
+        [&](const Vec3& c) { return winding.inside(c); }, balls, tets, inner);
     if (!st.ok()) return st;
-    inner.assign(tets.size(), 0);
-    for (size_t t = 0, r = 0; t < tets.size() && r < raw_tets_kept.size(); ++t)
-        if (tets[t] == raw_tets_kept[r]) inner[t] = raw_inner[r++];
     out = cluster_filter(balls, threads);
     return Status::success();
 }

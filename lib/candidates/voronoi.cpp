@@ -78,31 +78,39 @@ Status mesh_voronoi_candidates(const CandidateOptions& opt, const Monitor& monit
     // Every tetrahedron's circumcentre is tested (not only the de-duplicated candidates) so the
     // connection step gets the inner flags of the whole Voronoi diagram; the candidates keep
     // exactly the flags they had.
+    return inner_voronoi_vertices(
+        unique, threads, monitor,
+        [&] {
+            structures.wait();
+            return structures_status(built, monitor);
+        },
+        [&](const Vec3& c) { return built.queries.winding->inside(c); }, out.balls, out.voronoi_tets,
+        out.voronoi_inner);
+}
+
+Status inner_voronoi_vertices(const std::vector<Vec3>& pts, int threads, const Monitor& monitor,
+                              const std::function<Status()>& ready, const std::function<bool(const Vec3&)>& inside,
+                              std::vector<Ball>& balls, std::vector<Tet>& tets, std::vector<uint8_t>& inner) {
     std::vector<uint8_t> raw_inner;
     std::vector<Tet> raw_tets_kept;
-    Status st = voronoi_vertices(unique, threads, monitor,
+    Status st = voronoi_vertices(pts, threads, monitor,
         [&](const std::vector<uint32_t>& ids, const std::vector<Ball>& raw, const std::vector<Tet>& raw_tets,
             std::vector<uint8_t>& keep) {
             raw_inner.assign(raw.size(), 0);
-            structures.wait();
-            if (const Status ss = structures_status(built, monitor); !ss.ok()) return ss;
-            const WindingNumber& winding = *built.queries.winding;
+            if (const Status rs = ready(); !rs.ok()) return rs;
             const bool done = parallel_for(raw.size(), threads, 8192, monitor, "inside", [&](size_t b, size_t e) {
-                for (size_t k = b; k < e; ++k) raw_inner[k] = winding.inside(raw[k].center);
+                for (size_t k = b; k < e; ++k) raw_inner[k] = inside(raw[k].center);
             });
             if (!done) return monitor.stop_status("inside");
             for (size_t k = 0; k < ids.size(); ++k) keep[k] = raw_inner[ids[k]];
             raw_tets_kept = raw_tets;
             return Status::success();
-        }, out.balls, out.voronoi_tets);
+        }, balls, tets);
     if (!st.ok()) return st;
     // Tetrahedra without a usable circumcentre (flat, or far outside the box) are outer.
-    out.voronoi_inner.assign(out.voronoi_tets.size(), 0);
-    {
-        size_t r = 0;
-        for (size_t t = 0; t < out.voronoi_tets.size() && r < raw_tets_kept.size(); ++t)
-            if (out.voronoi_tets[t] == raw_tets_kept[r]) out.voronoi_inner[t] = raw_inner[r++];
-    }
+    inner.assign(tets.size(), 0);
+    for (size_t t = 0, r = 0; t < tets.size() && r < raw_tets_kept.size(); ++t)
+        if (tets[t] == raw_tets_kept[r]) inner[t] = raw_inner[r++];
     return Status::success();
 }
 

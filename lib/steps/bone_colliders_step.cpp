@@ -8,9 +8,7 @@ namespace ca {
 Status bone_colliders_step(const CandidateSet& set, const Skin& skin, const BoneColliderOptions& opt,
                            const Monitor& monitor, BoneColliderResult& out) {
     out = BoneColliderResult{};
-    if (!set.surface.kind().is_mesh())
-        return fail(Code::invalid_argument,
-                    "bone colliders need a candidate set made from a triangle mesh (not a point cloud or caller arrays)");
+    if (Status st = check_mesh_set(set, "bone colliders"); !st.ok()) return st;
     const size_t inner = set.balls.size() - std::min(set.surface_balls, set.balls.size());
     return make_bone_colliders(set.surface.mesh, set.queries, set.surface.norm, set.balls, inner, skin, opt, monitor, out);
 }

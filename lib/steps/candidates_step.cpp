@@ -21,6 +21,12 @@ Status check_surface_input(const SurfaceInput& surface) {
     return Status::success();
 }
 
+Status check_mesh_set(const CandidateSet& set, const char* what) {
+    if (set.surface.kind().is_mesh()) return Status::success();
+    return fail(Code::invalid_argument, std::string(what) +
+                                            " need a candidate set made from a triangle mesh (not a point cloud or caller arrays)");
+}
+
 Status candidates_step(SurfaceInput surface, const CandidateOptions& opt, const Monitor& monitor, CandidateSet& out) {
     if (opt.generator != Generator::voronoi && opt.generator != Generator::random)
         return fail(Code::invalid_argument, "unknown candidate generator " + std::to_string(int32_t(opt.generator)));

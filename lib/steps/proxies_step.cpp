@@ -8,9 +8,7 @@ namespace ca {
 Status proxies_step(const CandidateSet& set, const Skeleton& skeleton, const ProxyOptions& opt,
                     const Monitor& monitor, ProxyResult& out) {
     out = ProxyResult{};
-    if (!set.surface.kind().is_mesh())
-        return fail(Code::invalid_argument,
-                    "engine proxies need a candidate set made from a triangle mesh (not a point cloud or caller arrays)");
+    if (Status st = check_mesh_set(set, "engine proxies"); !st.ok()) return st;
     const Normalization& n = set.surface.norm;
     Skeleton sk = skeleton;
     for (Ball& b : sk.balls) {

@@ -35,6 +35,10 @@ struct SurfaceInput {
 // one normal per point or none; the arrays' values are checked by prepare_surface.
 Status check_surface_input(const SurfaceInput& surface);
 
+// invalid_argument unless `set` was made from a triangle mesh, which `what` (e.g. "engine
+// proxies") is built on: a point cloud's or the caller's arrays' set has no surface to fit.
+Status check_mesh_set(const CandidateSet& set, const char* what);
+
 // Validates and prepares the surface (prepare_surface on opt.threads), then generates the
 // candidates. Notes what the preparation changed (re-oriented normals, a flipped mesh, dropped or
 // merged triangles) and the sizes reached.

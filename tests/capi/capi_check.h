@@ -1,5 +1,6 @@
-/* capi_check.h: what the C tests of the ABI share: the CHECK macro with its counters, and a
- * 2 x 1 x 1 box mesh (outward-facing) as a surface view. Included once per test program. */
+/* capi_check.h: what the C tests of the ABI share: the CHECK macro with its counters, a
+ * 2 x 1 x 1 box mesh (outward-facing) as a surface view, and small candidate options for it.
+ * Included once per test program. */
 #ifndef CAPI_CHECK_H
 #define CAPI_CHECK_H
 
@@ -29,6 +30,16 @@ static ca_surface_view box_view(void) {
     v.triangles = box_f;
     v.triangle_count = 12;
     return v;
+}
+
+/* Candidate options for a quick run on the box: `cover_samples` samples to cover, 800 Voronoi
+   samples (inline: a program that does not use it is not warned of it). */
+static inline ca_candidate_options box_options(uint32_t cover_samples) {
+    ca_candidate_options o;
+    ca_candidate_options_init(&o);
+    o.cover_samples = cover_samples;
+    o.voronoi_samples = 800;
+    return o;
 }
 
 #endif

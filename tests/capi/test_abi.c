@@ -2,7 +2,7 @@
  * input (NaN, out-of-range index, empty, flat, too few distinct points), uncoverable samples,
  * copy-out capacity, cancellation and progress, the custom allocator, determinism, and a
  * known answer (the balls of a box lie on its medial axis). */
-#include "capi_check.h"
+#include "box_skeleton.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -12,14 +12,6 @@
 /* The searches' bisection tolerance in these tests: coarser than the default (1e-4), as none of
    their checks depends on how finely the delta is bisected; fewer probes, each a full solve. */
 #define SEARCH_TOLERANCE 1e-2
-
-static ca_candidate_options small_options(void) {
-    ca_candidate_options o;
-    ca_candidate_options_init(&o);
-    o.cover_samples = 400;
-    o.voronoi_samples = 800;
-    return o;
-}
 
 static void test_versions(void) {
     CHECK(ca_version() == CA_VERSION_NUMBER);
@@ -39,7 +31,7 @@ static void test_null_and_sizes(void) {
     ca_context* ctx = NULL;
     ca_candidate_set* set = (ca_candidate_set*)1;
     ca_surface_view v = box_view();
-    ca_candidate_options o = small_options();
+    ca_candidate_options o = box_options(400);
     ca_context_desc d;
 
     CHECK(ca_context_create(NULL, NULL) == CA_ERROR_NULL_POINTER);
@@ -62,11 +54,11 @@ static void test_null_and_sizes(void) {
     o.struct_size = sizeof(o) + 8;
     CHECK(ca_candidates(ctx, &v, &o, &set) == CA_ERROR_STRUCT_SIZE && set == NULL);
     CHECK(strstr(ca_context_last_error(ctx), "struct_size") != NULL);
-    o = small_options();
+    o = box_options(400);
     o.generator = 7;
     CHECK(ca_candidates(ctx, &v, &o, &set) == CA_ERROR_INVALID_ARGUMENT && set == NULL);
     v.position_stride = 8; /* smaller than a vertex */
-    o = small_options();
+    o = box_options(400);
     CHECK(ca_candidates(ctx, &v, &o, &set) == CA_ERROR_INVALID_ARGUMENT && set == NULL);
 
     CHECK(ca_select(ctx, NULL, NULL, (ca_selection**)&set) == CA_ERROR_NULL_POINTER);
@@ -82,7 +74,7 @@ static void test_null_and_sizes(void) {
 static ca_status run_candidates(ca_context* ctx, const double* pos, size_t nv, const uint32_t* tri, size_t nt,
                                 const double* normals, ca_candidate_set** out) {
     ca_surface_view v;
-    ca_candidate_options o = small_options();
+    ca_candidate_options o = box_options(400);
     ca_surface_view_init(&v);
     v.positions = pos;
     v.vertex_count = nv;
@@ -144,7 +136,7 @@ static void test_bad_input(void) {
     /* point_normals outside CA_POINT_NORMALS_*: refused before anything is read */
     {
     ca_surface_view sv;
-    ca_candidate_options o = small_options();
+    ca_candidate_options o = box_options(400);
     ca_surface_view_init(&sv);
     CHECK(sv.point_normals == CA_POINT_NORMALS_TRUSTED);
     sv.positions = box_v;
@@ -248,7 +240,7 @@ static void test_cancel(void) {
     ca_context* ctx = NULL;
     ca_candidate_set* set = NULL;
     ca_surface_view v = box_view();
-    ca_candidate_options o = small_options();
+    ca_candidate_options o = box_options(400);
     ca_context_desc d;
     int calls = 0;
 
@@ -286,11 +278,9 @@ static void counting_free(void* user, void* p) {
 /* The whole pipeline on the box: known answer and determinism. */
 static void test_box_pipeline(void) {
     ca_context* ctx = NULL;
-    ca_candidate_set* set = NULL;
-    ca_selection* sel = NULL;
-    ca_skeleton* sk = NULL;
+    BoxSkeleton b;
     ca_surface_view v = box_view();
-    ca_candidate_options o = small_options();
+    ca_candidate_options o = box_options(400);
     ca_skeleton_stats ks;
     ca_context_desc d;
     size_t i, n;
@@ -303,14 +293,12 @@ static void test_box_pipeline(void) {
     d.alloc = counting_alloc;
     d.free = counting_free;
     CHECK(ca_context_create(&d, &ctx) == CA_OK);
-    CHECK(ca_candidates(ctx, &v, &o, &set) == CA_OK);
-    CHECK(ca_candidate_set_count(set) > 10);
-    CHECK(ca_select(ctx, set, NULL, &sel) == CA_OK);
-    CHECK(ca_connect(ctx, set, sel, NULL, &sk) == CA_OK);
-    n = ca_skeleton_vertex_count(sk);
+    CHECK(box_skeleton(ctx, &o, &b) == CA_OK);
+    CHECK(ca_candidate_set_count(b.set) > 10);
+    n = ca_skeleton_vertex_count(b.sk);
     CHECK(n >= 2 && n <= 64);
-    c = ca_skeleton_centers(sk);
-    r = ca_skeleton_radii(sk);
+    c = ca_skeleton_centers(b.sk);
+    r = ca_skeleton_radii(b.sk);
     for (i = 0; i < n; ++i) {
         /* inside the box and a medial ball: its radius is its distance to the nearest face
            (up to the sampling: Voronoi radii are distances to the nearest sample) */
@@ -325,7 +313,7 @@ static void test_box_pipeline(void) {
         CHECK(r[i] >= dmin - 1e-9 && r[i] <= dmin + 0.1);
     }
     ks.struct_size = sizeof ks;
-    CHECK(ca_skeleton_stats_get(sk, &ks) == CA_OK && ks.vertices == n && ks.components >= 1);
+    CHECK(ca_skeleton_stats_get(b.sk, &ks) == CA_OK && ks.vertices == n && ks.components >= 1);
     first_n = n;
     memcpy(first, c, 3 * n * sizeof(double));
 
@@ -334,24 +322,18 @@ static void test_box_pipeline(void) {
         ca_candidate_set* other = NULL;
         ca_skeleton* bad = NULL;
         CHECK(ca_candidates(ctx, &v, &o, &other) == CA_OK);
-        CHECK(ca_connect(ctx, other, sel, NULL, &bad) == CA_ERROR_INVALID_ARGUMENT && bad == NULL);
+        CHECK(ca_connect(ctx, other, b.sel, NULL, &bad) == CA_ERROR_INVALID_ARGUMENT && bad == NULL);
         ca_candidate_set_destroy(other);
     }
-    ca_skeleton_destroy(sk);
-    ca_selection_destroy(sel);
-    ca_candidate_set_destroy(set);
+    box_skeleton_destroy(&b);
     CHECK(total_blocks > 0 && live_blocks == 0);
 
     /* the same seed gives the same skeleton */
-    set = NULL; sel = NULL; sk = NULL;
-    CHECK(ca_candidates(ctx, &v, &o, &set) == CA_OK && ca_select(ctx, set, NULL, &sel) == CA_OK &&
-          ca_connect(ctx, set, sel, NULL, &sk) == CA_OK);
-    CHECK(ca_skeleton_vertex_count(sk) == first_n);
-    if (ca_skeleton_vertex_count(sk) == first_n)
-        CHECK(memcmp(first, ca_skeleton_centers(sk), 3 * first_n * sizeof(double)) == 0);
-    ca_skeleton_destroy(sk);
-    ca_selection_destroy(sel);
-    ca_candidate_set_destroy(set);
+    CHECK(box_skeleton(ctx, &o, &b) == CA_OK);
+    CHECK(ca_skeleton_vertex_count(b.sk) == first_n);
+    if (ca_skeleton_vertex_count(b.sk) == first_n)
+        CHECK(memcmp(first, ca_skeleton_centers(b.sk), 3 * first_n * sizeof(double)) == 0);
+    box_skeleton_destroy(&b);
     CHECK(live_blocks == 0);
     ca_context_destroy(ctx);
 }
@@ -364,7 +346,7 @@ static void test_routes_and_target(void) {
     ca_selection* small = NULL;
     ca_skeleton* sk = NULL;
     ca_surface_view v = box_view();
-    ca_candidate_options o = small_options();
+    ca_candidate_options o = box_options(400);
     ca_connect_options cop;
     ca_select_options so;
     ca_select_stats full_stats, small_stats;
@@ -499,7 +481,7 @@ static void test_probe_fit(void) {
     ca_candidate_set* set = NULL;
     ca_selection* sel = NULL;
     ca_surface_view v = box_view();
-    ca_candidate_options o = small_options();
+    ca_candidate_options o = box_options(400);
     ca_select_options so;
     ca_select_stats ss;
     int search;
@@ -549,7 +531,7 @@ static void test_target_not_reached(void) {
     ca_selection* sel = NULL;
     ca_skeleton* sk = NULL;
     ca_surface_view v = box_view();
-    ca_candidate_options o = small_options();
+    ca_candidate_options o = box_options(400);
     ca_select_options so;
     ca_select_stats ss;
     CHECK(ca_context_create(NULL, &ctx) == CA_OK);

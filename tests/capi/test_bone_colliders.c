@@ -2,38 +2,15 @@
  * left end (x = 0) is weighted to joint 0 and right end (x = 2) to joint 1 (a child turned 90
  * degrees about z and moved), so each joint dominates one half. One collider per joint; placed in
  * its joint's frame, each holds its half's corners and the points of the dividing square (checked
- * with this file's own capsule distance after this file's own inverse bind); the stats and getters
+ * with the tests' own capsule distance, box_skeleton.h, after this file's own inverse bind); the stats and getters
  * agree. Every bad input gets its status and leaves *out NULL: NULL pointers, unknown struct sizes,
  * a zero joint count, NULL arrays, influences 0 and 9, a joint index or parent out of range, a
  * cycle, NaN and negative weights, a NaN or sheared inverse bind, a vertex count that is not the
  * surface's, a skip joint out of range, a skip list without its array, bad mode and shapes, an
  * index out of range for the placement, a point-cloud candidate set. */
-#include "capi_check.h"
+#include "box_skeleton.h"
 
-#include <math.h>
 #include <string.h>
-
-/* min over t in [0,1] of |x - c(t)| - r(t), by ternary search (convex in t) */
-static double capsule_distance(const double* a, double ra, const double* b, double rb, const double* x) {
-    double lo = 0, hi = 1, best = 1e300;
-    int i, k;
-    for (i = 0; i < 200; ++i) {
-        double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3, f1, f2, d[3];
-        for (k = 0; k < 3; ++k) d[k] = x[k] - (a[k] + m1 * (b[k] - a[k]));
-        f1 = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) - (ra + m1 * (rb - ra));
-        for (k = 0; k < 3; ++k) d[k] = x[k] - (a[k] + m2 * (b[k] - a[k]));
-        f2 = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) - (ra + m2 * (rb - ra));
-        if (f1 <= f2) hi = m2;
-        else lo = m1;
-    }
-    for (i = 0; i <= 2; ++i) {
-        double t = i == 0 ? 0 : i == 1 ? 1 : 0.5 * (lo + hi), d[3], f;
-        for (k = 0; k < 3; ++k) d[k] = x[k] - (a[k] + t * (b[k] - a[k]));
-        f = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) - (ra + t * (rb - ra));
-        if (f < best) best = f;
-    }
-    return best;
-}
 
 /* column-major 4x4 applied to a point */
 static void apply(const double* m, const double* x, double* y) {
@@ -87,7 +64,7 @@ int main(void) {
     ca_candidate_set* set = NULL;
     ca_candidate_set* cloud = NULL;
     ca_bone_colliders* bc = NULL;
-    ca_candidate_options co;
+    ca_candidate_options co = box_options(300);
     ca_bone_collider_options bo;
     ca_bone_collider_stats stats;
     ca_proxy_placement pl;
@@ -100,9 +77,6 @@ int main(void) {
     int k, c;
 
     CHECK(ca_context_create(NULL, &ctx) == CA_OK);
-    ca_candidate_options_init(&co);
-    co.cover_samples = 300;
-    co.voronoi_samples = 800;
     CHECK(ca_candidates(ctx, &surface, &co, &set) == CA_OK);
 
     ca_bone_collider_options_init(&bo);

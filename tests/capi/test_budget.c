@@ -3,20 +3,12 @@
  * after it; inside ca_select's searches, after a probe, the best selection so far with that status), a cancel from the first progress call of every stage stops that stage at once,
  * counts past the ABI's range, strides that leave elements misaligned, boxes near the ends of
  * the double range, and indices equal to the vertex count everywhere the ABI takes indices. */
-#include "capi_check.h"
+#include "box_skeleton.h"
 
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
-
-static ca_candidate_options small_options(void) {
-    ca_candidate_options o;
-    ca_candidate_options_init(&o);
-    o.cover_samples = 400;
-    o.voronoi_samples = 800;
-    return o;
-}
 
 static ca_context* context_with_limit(double seconds) {
     ca_context_desc d;
@@ -40,7 +32,7 @@ static void test_time_limit(void) {
     ca_context* tiny = context_with_limit(1e-12);
     ca_context* generous = context_with_limit(1e6);
     ca_surface_view v = box_view();
-    ca_candidate_options o = small_options();
+    ca_candidate_options o = box_options(400);
     ca_candidate_set* set = NULL;
     ca_candidate_set* failed_set = (ca_candidate_set*)1;
     ca_selection* sel = NULL;
@@ -127,12 +119,9 @@ static int32_t record_progress(void* user, const char* stage, double f) {
 static ca_status run_pipeline(Recorder* r) {
     ca_context_desc d;
     ca_context* ctx = NULL;
-    ca_surface_view v = box_view();
-    ca_candidate_options o = small_options();
-    ca_candidate_set* set = NULL;
-    ca_selection* sel = NULL;
-    ca_skeleton* sk = NULL;
-    ca_skeleton_view view;
+    const ca_surface_view v = box_view();
+    const ca_candidate_options o = box_options(400);
+    BoxSkeleton box;
     ca_evaluation e;
     ca_evaluate_options eo;
     ca_status st;
@@ -141,21 +130,15 @@ static ca_status run_pipeline(Recorder* r) {
     d.progress_user = r;
     d.threads = 1;
     if (ca_context_create(&d, &ctx) != CA_OK) return CA_ERROR_INTERNAL;
-    st = ca_candidates(ctx, &v, &o, &set);
-    if (st == CA_OK) st = ca_select(ctx, set, NULL, &sel);
-    if (st == CA_OK) st = ca_connect(ctx, set, sel, NULL, &sk);
+    st = box_skeleton(ctx, &o, &box);
     if (st == CA_OK) {
-        ca_skeleton_view_init(&view);
         ca_evaluate_options_init(&eo);
         eo.surface_samples = 20000; /* several batches */
         eo.envelope_samples = 20000;
-        (void)ca_skeleton_get_view(sk, &view);
         e.struct_size = sizeof e;
-        st = ca_evaluate(ctx, &v, &view, &eo, &e);
+        st = ca_evaluate(ctx, &v, &box.view, &eo, &e);
     }
-    ca_skeleton_destroy(sk);
-    ca_selection_destroy(sel);
-    ca_candidate_set_destroy(set);
+    box_skeleton_destroy(&box);
     ca_context_destroy(ctx);
     return st;
 }
@@ -185,7 +168,7 @@ static void test_cancel_every_stage(void) {
 static void test_counts_and_strides(void) {
     ca_context* ctx = context_with_limit(0);
     ca_surface_view v = box_view();
-    ca_candidate_options o = small_options();
+    ca_candidate_options o = box_options(400);
     ca_candidate_set* set = (ca_candidate_set*)1;
     ca_candidate_set* packed = NULL;
     ca_skeleton_view sk;
@@ -273,7 +256,7 @@ static void test_counts_and_strides(void) {
 static void test_index_equal_to_count(void) {
     ca_context* ctx = context_with_limit(0);
     ca_surface_view v = box_view();
-    ca_candidate_options o = small_options();
+    ca_candidate_options o = box_options(400);
     ca_candidate_set* set = (ca_candidate_set*)1;
     ca_skeleton_view sk;
     ca_evaluation e;
@@ -336,7 +319,7 @@ static int32_t wait_past_limit(void* user, const char* stage, double fraction) {
    selection in *out (its HD and probes in its stats), connected like any selection. */
 static void test_time_limit_in_searches(void) {
     ca_surface_view v = box_view();
-    ca_candidate_options o = small_options();
+    ca_candidate_options o = box_options(400);
     ca_candidate_set* set = NULL;
     ca_context* plain = context_with_limit(0);
     int search;

@@ -1,58 +1,28 @@
 /* test_proxies.c: the engine-proxy step through the C ABI, compiled as C99: a box's skeleton gives
  * conservative proxies that hold the box's corners, edge midpoints and face centres (checked with
- * this file's own distance to a capsule); the getters agree with the count; the stats honour the
+ * the tests' own distance to a capsule, box_skeleton.h); the getters agree with the count; the stats honour the
  * caller's struct_size; NULL pointers, unknown struct sizes, a zero count, bad skeleton indices and
  * a point-cloud set fail with their status and leave *out NULL. */
-#include "capi_check.h"
+#include "box_skeleton.h"
 
-#include <math.h>
 #include <string.h>
-
-/* min over t in [0,1] of |x - c(t)| - r(t), by ternary search (convex in t) */
-static double capsule_distance(const double* a, double ra, const double* b, double rb, const double* x) {
-    double lo = 0, hi = 1;
-    int i;
-    for (i = 0; i < 200; ++i) {
-        double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3, f1, f2, d[3];
-        int k;
-        for (k = 0; k < 3; ++k) d[k] = x[k] - (a[k] + m1 * (b[k] - a[k]));
-        f1 = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) - (ra + m1 * (rb - ra));
-        for (k = 0; k < 3; ++k) d[k] = x[k] - (a[k] + m2 * (b[k] - a[k]));
-        f2 = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) - (ra + m2 * (rb - ra));
-        if (f1 <= f2) hi = m2;
-        else lo = m1;
-    }
-    {
-        double t = 0.5 * (lo + hi), d[3];
-        int k;
-        for (k = 0; k < 3; ++k) d[k] = x[k] - (a[k] + t * (b[k] - a[k]));
-        return sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) - (ra + t * (rb - ra));
-    }
-}
 
 int main(void) {
     ca_context* ctx = NULL;
-    ca_candidate_set* set = NULL;
-    ca_selection* sel = NULL;
-    ca_skeleton* sk = NULL;
     ca_proxy_set* px = NULL;
-    ca_candidate_options co;
-    ca_proxy_options po;
+    const ca_candidate_options co = box_options(300);
+    BoxSkeleton box;
+    ca_candidate_set* set;
     ca_skeleton_view view;
+    ca_proxy_options po;
     ca_proxy_stats stats;
-    ca_surface_view surface = box_view();
     size_t i, n;
     int k;
 
     CHECK(ca_context_create(NULL, &ctx) == CA_OK);
-    ca_candidate_options_init(&co);
-    co.cover_samples = 300;
-    co.voronoi_samples = 800;
-    CHECK(ca_candidates(ctx, &surface, &co, &set) == CA_OK);
-    CHECK(ca_select(ctx, set, NULL, &sel) == CA_OK);
-    CHECK(ca_connect(ctx, set, sel, NULL, &sk) == CA_OK);
-    ca_skeleton_view_init(&view);
-    CHECK(ca_skeleton_get_view(sk, &view) == CA_OK);
+    CHECK(box_skeleton(ctx, &co, &box) == CA_OK);
+    set = box.set;
+    view = box.view;
 
     ca_proxy_options_init(&po);
     CHECK(po.count == 16 && po.mode == CA_PROXY_INSCRIBED && po.shapes == CA_PROXY_SHAPES_CAPSULES && po.seed == 1);
@@ -148,9 +118,7 @@ int main(void) {
     CHECK(ca_proxy_set_count(NULL) == 0 && ca_proxy_set_kinds(NULL) == NULL);
     ca_proxy_set_destroy(NULL);
 
-    ca_skeleton_destroy(sk);
-    ca_selection_destroy(sel);
-    ca_candidate_set_destroy(set);
+    box_skeleton_destroy(&box);
     ca_context_destroy(ctx);
     printf("test_proxies: %d checks, %d failures\n", checks, failures);
     return failures ? 1 : 0;

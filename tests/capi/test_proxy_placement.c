@@ -4,9 +4,7 @@
  * bottom ball on ball a with their radii; a sphere sits at ball a; the quaternion is a unit one with
  * w >= 0 and `axis` is the node's turned +Y. NULL pointers, an index past the count and an unknown
  * struct_size fail with their status. */
-#include "capi_check.h"
-
-#include <math.h>
+#include "box_skeleton.h"
 
 /* q (x y z w) applied to v */
 static void rotate(const double* q, const double* v, double* out) {
@@ -30,33 +28,22 @@ static double gap(const double* a, const double* b) {
 
 int main(void) {
     ca_context* ctx = NULL;
-    ca_candidate_set* set = NULL;
-    ca_selection* sel = NULL;
-    ca_skeleton* sk = NULL;
     ca_proxy_set* px = NULL;
-    ca_candidate_options co;
+    const ca_candidate_options co = box_options(300);
+    BoxSkeleton box;
     ca_proxy_options po;
-    ca_skeleton_view view;
     ca_proxy_placement pl;
-    ca_surface_view surface = box_view();
     size_t i, n;
     int capsules = 0;
 
     CHECK(ca_context_create(NULL, &ctx) == CA_OK);
-    ca_candidate_options_init(&co);
-    co.cover_samples = 300;
-    co.voronoi_samples = 800;
-    CHECK(ca_candidates(ctx, &surface, &co, &set) == CA_OK);
-    CHECK(ca_select(ctx, set, NULL, &sel) == CA_OK);
-    CHECK(ca_connect(ctx, set, sel, NULL, &sk) == CA_OK);
-    ca_skeleton_view_init(&view);
-    CHECK(ca_skeleton_get_view(sk, &view) == CA_OK);
+    CHECK(box_skeleton(ctx, &co, &box) == CA_OK);
     ca_proxy_options_init(&po);
     po.mode = CA_PROXY_CONSERVATIVE;
     po.count = 4;
     po.evaluate_samples = 2000;
     po.volume_samples = 10000;
-    CHECK(ca_proxies(ctx, set, &view, &po, &px) == CA_OK);
+    CHECK(ca_proxies(ctx, box.set, &box.view, &po, &px) == CA_OK);
     n = ca_proxy_set_count(px);
     CHECK(n >= 1);
     for (i = 0; i < n; ++i) {
@@ -110,9 +97,7 @@ int main(void) {
     CHECK(ca_proxy_set_placement(px, 0, &pl) == CA_ERROR_STRUCT_SIZE);
 
     ca_proxy_set_destroy(px);
-    ca_skeleton_destroy(sk);
-    ca_selection_destroy(sel);
-    ca_candidate_set_destroy(set);
+    box_skeleton_destroy(&box);
     ca_context_destroy(ctx);
     printf("test_proxy_placement: %d checks, %d failures\n", checks, failures);
     return failures ? 1 : 0;

@@ -20,9 +20,7 @@
 # usage: bone_colliders.sh PATH/TO/coverage-axis PATH/TO/tests/data
 set -u
 source "$(dirname "$0")/check.bash" "$@"
-here=$(cd "$(dirname "$0")" && pwd)
 driver="$(dirname "$tool")/collider_check"
-py() { python3 -c "import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if ($1) else 1)" "$2"; }
 
 npm_packages bone_colliders gltf-validator@2.0.0-dev.3.10 @gltf-transform/core@4.5.1 three@0.169.0 @pixiv/three-vrm@3.5.5
 [ -x "$driver" ] || { echo "bone_colliders: $driver is missing (built with the tests)"; exit 1; }
@@ -100,7 +98,7 @@ check "... and the skipped joint has no collider" read_back snake_skip conservat
 check "... one collider fewer" python3 -c "import json,sys; a,b=(json.load(open(f)) for f in sys.argv[1:]); sys.exit(len(a['colliders']) != len(b['colliders']) + 1)" \
   "$tmp/snake_glb.json" "$tmp/snake_skip.json"
 
-check "the written files pass the glTF validator with 0 errors" env NODE_PATH="$modules" node "$here/validate_gltf.js" "${files[@]}"
+check "the written files pass the glTF validator with 0 errors" validate_gltf "${files[@]}"
 
 # VRM: the humanoid with a minimal VRMC_vrm (hands added, as VRM requires them) and one spring
 python3 - "$data/rigged/humanoid.glb" "$tmp/humanoid_vrm.glb" <<'EOF'
@@ -148,7 +146,7 @@ for mode in conservative inscribed; do
   check "gltf-transform reads the VRM's physics colliders back" read_back "vrm_$mode" "$mode"
 done
 check "the VRMs pass the glTF validator with 0 errors" \
-  env NODE_PATH="$modules" node "$here/validate_gltf.js" "$tmp/vrm_conservative.glb" "$tmp/vrm_inscribed.glb"
+  validate_gltf "$tmp/vrm_conservative.glb" "$tmp/vrm_inscribed.glb"
 
 # failures
 "$tool" "$data/fox.obj" -o "$tmp/e.ma" --bone-colliders "$tmp/e.glb" --json > "$tmp/e1.json"

@@ -1,9 +1,11 @@
 # check.bash: the harness the e2e scripts source (not a test itself: ctest runs tests/e2e/*.sh):
-# the tool and data paths from the arguments, a temp folder removed at exit, and check(), which
-# runs a command and counts it as passed or failed.
+# the tool and data paths from the arguments, this folder, a temp folder removed at exit, check(),
+# which runs a command and counts it as passed or failed, and the helpers the scripts share: JSON
+# predicates, the npm packages and the glTF validator.
 # usage (in a test): source "$(dirname "$0")/check.bash" "$@"; ...; finish NAME
 tool=$1
 data=$2
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 pass=0
@@ -29,3 +31,10 @@ npm_packages() {
   npm install --no-audit --no-fund --silent --prefix "$npm_dir" "$@" > /dev/null ||
     { echo "$name: npm could not install $*"; exit 1; }
 }
+# py EXPR FILE: true when the Python expression EXPR holds for the JSON document in FILE (as j).
+py() { python3 -c "import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if ($1) else 1)" "$2"; }
+# pylines EXPR FILE: the same for a file of JSON lines (as the list L).
+pylines() { python3 -c "import json,sys; L=[json.loads(l) for l in open(sys.argv[1])]; sys.exit(0 if ($1) else 1)" "$2"; }
+# validate_gltf FILE...: the Khronos glTF validator (validate_gltf.js) with 0 errors on every file;
+# after npm_packages NAME gltf-validator@...
+validate_gltf() { NODE_PATH="$modules" node "$here/validate_gltf.js" "$@"; }

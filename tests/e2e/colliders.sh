@@ -15,9 +15,7 @@
 # usage: colliders.sh PATH/TO/coverage-axis PATH/TO/tests/data
 set -u
 source "$(dirname "$0")/check.bash" "$@"
-here=$(cd "$(dirname "$0")" && pwd)
 driver="$(dirname "$tool")/collider_check"
-py() { python3 -c "import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if ($1) else 1)" "$2"; }
 
 npm_packages colliders gltf-validator@2.0.0-dev.3.10 @gltf-transform/core@4.5.1 jolt-physics@1.1.0
 [ -x "$driver" ] || { echo "colliders: $driver is missing (built with the tests)"; exit 1; }
@@ -111,7 +109,7 @@ check "the tapered capsule's proxies hold a tapered capsule" \
 files=()
 for m in sphere tapered box boxes fox desk; do files+=("$tmp/$m.glb"); done
 check "the colliders files pass the glTF validator with 0 errors" \
-  env NODE_PATH="$modules" node "$here/validate_gltf.js" "${files[@]}"
+  validate_gltf "${files[@]}"
 for m in sphere tapered box boxes fox desk; do
   check "gltf-transform reads the $m's colliders back as its proxies" \
     node "$here/read_colliders.mjs" "$modules" "$tmp/$m.glb" "$tmp/$m.json"
@@ -123,7 +121,7 @@ done
 "$tool" "$data/fox.obj" -o "$tmp/fr.ma" --proxies capsules --gltf "$tmp/skeleton.glb" --rig "$tmp/rig.glb" --quiet
 check "--gltf and --rig with --proxies exit 0" test $? -eq 0
 check "the skeleton's glTF and the rig with colliders pass the validator with 0 errors" \
-  env NODE_PATH="$modules" node "$here/validate_gltf.js" "$tmp/skeleton.glb" "$tmp/rig.glb"
+  validate_gltf "$tmp/skeleton.glb" "$tmp/rig.glb"
 check "the rig carries the proxies as colliders" grep -q KHR_physics_rigid_bodies "$tmp/rig.glb"
 
 # failures

@@ -12,7 +12,6 @@ source "$(dirname "$0")/check.bash" "$@"
 # pyjson 'expression over the object J' FILE: the first line of FILE as JSON
 pyjson() { python3 -c "import json,sys; J=json.loads(open(sys.argv[1]).readline()); sys.exit(0 if ($1) else 1)" "$2"; }
 # pylines 'expression over the list of line objects L' FILE
-pylines() { python3 -c "import json,sys; L=[json.loads(l) for l in open(sys.argv[1])]; sys.exit(0 if ($1) else 1)" "$2"; }
 d=$data/dropped
 fast=(--samples 400 --voronoi-samples 1000)
 mkdir -p "$tmp/twins" "$tmp/broken"

@@ -8,7 +8,6 @@
 set -u
 source "$(dirname "$0")/check.bash" "$@"
 # pylines 'expression over the list of line objects L' FILE
-pylines() { python3 -c "import json,sys; L=[json.loads(l) for l in open(sys.argv[1])]; sys.exit(0 if ($1) else 1)" "$2"; }
 h=$data/hostile
 fast=(--samples 300 --voronoi-samples 800)
 # timed CMD...: runs CMD under a hard outer bound (a hang must not hang the test); sets code and

@@ -7,9 +7,7 @@
 set -u
 source "$(dirname "$0")/check.bash" "$@"
 # py 'python expression over the JSON object j' FILE: exit status of the boolean
-py() { python3 -c "import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if ($1) else 1)" "$2"; }
 # pylines 'expression over the list of line objects L' FILE
-pylines() { python3 -c "import json,sys; L=[json.loads(l) for l in open(sys.argv[1])]; sys.exit(0 if ($1) else 1)" "$2"; }
 
 # 1. versions
 "$tool" --version > "$tmp/v" 2>&1

@@ -1,6 +1,6 @@
 // read_bone_colliders.mjs: reads a --bone-colliders file back with @gltf-transform/core (npm),
-// which knows no physics (two small Extension classes read KHR_implicit_shapes and
-// KHR_physics_rigid_bodies, as read_colliders.mjs does), and checks it against the tool's
+// which knows no physics (the two small Extension classes of physics_extensions.mjs read
+// KHR_implicit_shapes and KHR_physics_rigid_bodies), and checks it against the tool's
 // --bone-colliders-json and against the skin the file itself carries:
 //  - one collider node per collider of the JSON, in the file's node `node`, whose parent is the
 //    skin's joint `joint` (by index in the skin and by name), kinematic, of the JSON's shape with
@@ -15,23 +15,11 @@
 // usage: node read_bone_colliders.mjs NODE_MODULES FILE.glb BONES.json MODE SKIPPED MIN_SHARE
 import fs from 'node:fs';
 import path from 'node:path';
-import { pathToFileURL } from 'node:url';
-import { physicsExtensions } from './physics_extensions.mjs';
+import { readPhysics } from './physics_extensions.mjs';
 
 const [modules, file, bonesJson, mode, skippedList, minShareArg] = process.argv.slice(2);
-const { NodeIO, Extension } = await import(pathToFileURL(path.join(modules, '@gltf-transform/core/dist/index.js')).href);
-
-const { ImplicitShapes, RigidBodies } = physicsExtensions(Extension);
-
-const io = new NodeIO().registerExtensions([ImplicitShapes, RigidBodies]);
-const document = await io.readBinary(new Uint8Array(fs.readFileSync(file)));
-const root = document.getRoot();
-const used = Object.fromEntries(root.listExtensionsUsed().map((e) => [e.extensionName, e]));
-const failures = [];
+const { root, shapes, bodies, failures } = await readPhysics(modules, file);
 const fail = (what) => failures.push(what);
-if (!used.KHR_implicit_shapes || !used.KHR_physics_rigid_bodies) fail('the physics extensions were not read');
-const shapes = used.KHR_implicit_shapes?.shapes || [];
-const bodies = used.KHR_physics_rigid_bodies?.bodies || new Map();
 const bones = JSON.parse(fs.readFileSync(bonesJson, 'utf8'));
 const nodes = root.listNodes();
 const skins = root.listSkins();

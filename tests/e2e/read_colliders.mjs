@@ -1,6 +1,6 @@
 // read_colliders.mjs: reads a colliders file back with @gltf-transform/core (npm), which knows no
-// physics: two small Extension classes registered here read KHR_implicit_shapes (the document's
-// shapes) and KHR_physics_rigid_bodies (each node's collider). Checks, against the tool's
+// physics: the two small Extension classes of physics_extensions.mjs read KHR_implicit_shapes (the
+// document's shapes) and KHR_physics_rigid_bodies (each node's collider). Checks, against the tool's
 // --proxies-json: one collider per proxy, in order, each of the right type with the proxy's
 // parameters at gltf-transform's world placement of its node (a sphere at its centre; a capsule's
 // top ball on ball b and bottom ball on ball a, or, when one ball holds the other, a sphere; a box's
@@ -8,22 +8,10 @@
 // usage: node read_colliders.mjs NODE_MODULES FILE.glb PROXIES.json
 import fs from 'node:fs';
 import path from 'node:path';
-import { pathToFileURL } from 'node:url';
-import { physicsExtensions } from './physics_extensions.mjs';
+import { readPhysics } from './physics_extensions.mjs';
 
 const [modules, file, proxiesJson] = process.argv.slice(2);
-const { NodeIO, Extension } = await import(pathToFileURL(path.join(modules, '@gltf-transform/core/dist/index.js')).href);
-
-const { ImplicitShapes, RigidBodies } = physicsExtensions(Extension);
-
-const io = new NodeIO().registerExtensions([ImplicitShapes, RigidBodies]);
-const document = await io.readBinary(new Uint8Array(fs.readFileSync(file)));
-const root = document.getRoot();
-const used = Object.fromEntries(root.listExtensionsUsed().map((e) => [e.extensionName, e]));
-const failures = [];
-if (!used.KHR_implicit_shapes || !used.KHR_physics_rigid_bodies) failures.push('the physics extensions were not read');
-const shapes = used.KHR_implicit_shapes?.shapes || [];
-const bodies = used.KHR_physics_rigid_bodies?.bodies || new Map();
+const { root, shapes, bodies, failures } = await readPhysics(modules, file);
 const colliders = new Map([...bodies].filter(([, b]) => b.collider).map(([n, b]) => [n, b.collider.geometry.shape]));
 const nodes = root.listNodes().filter((n) => colliders.has(n));
 const proxies = JSON.parse(fs.readFileSync(proxiesJson, 'utf8')).proxies;

@@ -7,10 +7,8 @@
 # usage: rig.sh PATH/TO/coverage-axis PATH/TO/tests/data
 set -u
 source "$(dirname "$0")/check.bash" "$@"
-py() { python3 -c "import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if ($1) else 1)" "$2"; }
 
 npm_packages rig gltf-validator@2.0.0-dev.3.10
-validate() { NODE_PATH="$npm_dir/node_modules" node "$(dirname "$0")/validate_gltf.js" "$@"; }
 
 "$tool" "$data/fox.obj" -o "$tmp/fox.ma" --rig "$tmp/fox.glb" --correspondence "$tmp/fox.json" --json > "$tmp/report.json"
 check "--rig and --correspondence exit 0" test $? -eq 0
@@ -28,7 +26,7 @@ check "the same correspondence on one thread" cmp -s "$tmp/fox.json" "$tmp/fox1.
 "$tool" "$data/torus.obj" -o "$tmp/torus.ma" --rig "$tmp/torus.glb" --max-joints 5 --json > "$tmp/torus.json"
 check "--max-joints caps the joints" py "1 <= j['rig']['joints'] <= 5" "$tmp/torus.json"
 check "the skinned fox, point cloud (fish) and capped torus pass the glTF validator with 0 errors" \
-  validate "$tmp/fox.glb" "$tmp/fish.glb" "$tmp/torus.glb"
+  validate_gltf "$tmp/fox.glb" "$tmp/fish.glb" "$tmp/torus.glb"
 
 # failures
 "$tool" "$data/fox.obj" -o "$tmp/f.ma" --rig "$tmp/f.glb" --max-joints 0 --json > "$tmp/e1.json"

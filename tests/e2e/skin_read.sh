@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
 # skin_read.sh: end-to-end tests of the skin the tool reads. A rigged FBX is read in the tool's
-# reader process (examples/cli/isolated_read.cpp): the frame that process writes carries the skin
-# (its joints by name, parents, matrices and weights, checked here against make_rigged.py's
-# humanoid), and the report names the skin, as for the same character's glTF read in process. The
+# reader process (examples/cli/isolated_read.cpp): the frame that process writes
+# (examples/cli/read_frame.cpp) carries the skin (its joints by name, parents, matrices and
+# weights, checked here against make_rigged.py's humanoid), and the report names the skin, as for
+# the same character's glTF read in process. The
 # tool's own --rig output is a skinned glTF that reads back with its joints; an input without a
 # skin reports none.
 # usage: skin_read.sh PATH/TO/coverage-axis PATH/TO/tests/data
 set -u
 source "$(dirname "$0")/check.bash" "$@"
-py() { python3 -c "import json,sys; j=json.load(open(sys.argv[1])); sys.exit(0 if ($1) else 1)" "$2"; }
 fast=(--samples 400 --voronoi-samples 1000)
 r=$data/rigged
 

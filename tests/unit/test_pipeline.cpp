@@ -3,42 +3,22 @@
 // circle), and unit handling (results in the caller's units, independent of scale).
 #include <doctest/doctest.h>
 
-#include "candidates.h"
-#include "connect.h"
-#include "selection.h"
+#include "support/core_run.h"
 #include "support/shapes.h"
 
 #include <cmath>
 
 namespace {
 
-struct Run {
-    ca::CandidateSet set;
-    ca::Selection sel;
-    ca::Skeleton skeleton;
-};
-
-// Runs the three steps; balls come back in the mesh's own units. The exact cover runs without a
-// time limit and must be proven optimal, so that results do not depend on the machine's load.
-Run run(ca::Mesh mesh, ca::CandidateOptions copt = {}, ca::SelectOptions sopt = {}) {
-    Run r;
-    sopt.cover.time_limit_s = 0;
+// Runs the three steps (support/core_run.h), connected on the power route; with the exact cover,
+// it must be proven optimal.
+CoreRun run(ca::Mesh mesh, ca::CandidateOptions copt = {}, ca::SelectOptions sopt = {}) {
     ca::Surface surface;
     REQUIRE(ca::prepare_surface(std::move(mesh), {}, surface).ok());
-    ca::Monitor monitor;
-    ca::Status st = ca::generate_candidates(std::move(surface), copt, monitor, r.set);
-    REQUIRE_MESSAGE(st.ok(), st.message);
-    st = ca::select_balls(r.set, sopt, monitor, r.sel);
-    REQUIRE_MESSAGE(st.ok(), st.message);
-    if (sopt.cover.solver == ca::Solver::exact) REQUIRE(r.sel.cover.proven_optimal == 1);
     ca::ConnectOptions power;   // the route these checks measure (the medial one: connect/test_connect.cpp)
     power.method = ca::ConnectMethod::power;
-    st = ca::connect_balls(r.set, r.sel, power, monitor, r.skeleton);
-    REQUIRE_MESSAGE(st.ok(), st.message);
-    for (ca::Ball& b : r.skeleton.balls) {
-        b.center = r.set.surface.norm.to_user(b.center);
-        b.radius *= r.set.surface.norm.scale;
-    }
+    CoreRun r = core_run(std::move(surface), copt, sopt, power);
+    if (sopt.cover.solver == ca::Solver::exact) REQUIRE(r.sel.cover.proven_optimal == 1);
     return r;
 }
 
@@ -46,7 +26,7 @@ Run run(ca::Mesh mesh, ca::CandidateOptions copt = {}, ca::SelectOptions sopt = 
 
 TEST_CASE("sphere: one ball at the centre with the sphere's radius") {
     const double R = 3.0;
-    Run r = run(shapes::sphere(R));
+    CoreRun r = run(shapes::sphere(R));
     CHECK(r.sel.cover.proven_optimal == 1);
     REQUIRE(r.skeleton.balls.size() == 1);
     CHECK(r.skeleton.balls[0].center.norm() < 0.03 * R);
@@ -56,7 +36,7 @@ TEST_CASE("sphere: one ball at the centre with the sphere's radius") {
 
 TEST_CASE("capsule: every ball lies on the axis segment with the capsule's radius") {
     const double L = 2.0, R = 0.5;
-    Run r = run(shapes::capsule(L, R));
+    CoreRun r = run(shapes::capsule(L, R));
     CHECK(r.sel.cover.proven_optimal == 1);
     REQUIRE(r.skeleton.balls.size() >= 2);
     double min_x = 1e9, max_x = -1e9;
@@ -74,7 +54,7 @@ TEST_CASE("capsule: every ball lies on the axis segment with the capsule's radiu
 
 TEST_CASE("torus: a ring of balls on the core circle") {
     const double R = 1.0, r = 0.3;
-    Run run_ = run(shapes::torus(R, r));
+    CoreRun run_ = run(shapes::torus(R, r));
     const auto& balls = run_.skeleton.balls;
     REQUIRE(balls.size() >= 4);
     double angle_gap = 0;
@@ -99,7 +79,7 @@ TEST_CASE("results are in the caller's units and do not depend on them") {
     ca::Mesh big = small;
     const ca::Vec3 shift(1000, -50, 7);
     for (ca::Vec3& v : big.vertices) v = v * 250.0 + shift;
-    Run a = run(small), b = run(big);
+    CoreRun a = run(small), b = run(big);
     REQUIRE(a.skeleton.balls.size() == b.skeleton.balls.size());
     for (size_t i = 0; i < a.skeleton.balls.size(); ++i) {
         CHECK((a.skeleton.balls[i].center * 250.0 + shift - b.skeleton.balls[i].center).norm() < 1e-6 * 250);
@@ -114,7 +94,7 @@ TEST_CASE("an inward-facing mesh is detected and gives the same skeleton") {
     ca::Surface s;
     REQUIRE(ca::prepare_surface(flipped, {}, s).ok());
     CHECK(s.flipped);
-    Run a = run(m), b = run(flipped);
+    CoreRun a = run(m), b = run(flipped);
     // flipping back restores the very triangles of m, so every step computes the same values:
     // the same balls to the bit, the same edges and faces
     REQUIRE(a.skeleton.balls.size() == b.skeleton.balls.size());
@@ -131,7 +111,7 @@ TEST_CASE("random interior candidates: radius is the exact distance to the surfa
     ca::CandidateOptions opt;
     opt.generator = ca::Generator::random;
     opt.random_candidates = 3000;
-    Run r = run(shapes::sphere(2.0, 32, 64), opt);
+    CoreRun r = run(shapes::sphere(2.0, 32, 64), opt);
     for (const ca::Ball& b : r.set.balls) {
         // internal units: sphere of radius 0.5 centred at (0.5, 0.5, 0.5); the mesh is a polyhedron
         // inscribed in it, so the distance is at most 0.5 - |c - centre| and not much less

@@ -23,6 +23,7 @@
 #include "rng.h"
 #include "selection.h"
 #include "support/clouds.h"
+#include "support/core_run.h"
 #include "support/shapes.h"
 #include "winding.h"
 
@@ -31,35 +32,15 @@
 
 namespace {
 
-struct Run {
-    ca::CandidateSet set;
-    ca::Selection sel;
-    ca::Skeleton skeleton;
-};
-
-// Runs the three steps on a cloud, connected on `route`; balls come back in the cloud's own units.
-Run run(shapes::Cloud cloud, ca::CandidateOptions copt = {}, ca::PointNormals trust = ca::PointNormals::trusted,
-        ca::ConnectMethod route = ca::ConnectMethod::power) {
-    Run r;
-    ca::SelectOptions sopt;
-    sopt.cover.time_limit_s = 0;
+// Runs the three steps on a cloud (support/core_run.h), connected on `route`.
+CoreRun run(shapes::Cloud cloud, ca::CandidateOptions copt = {}, ca::PointNormals trust = ca::PointNormals::trusted,
+            ca::ConnectMethod route = ca::ConnectMethod::power) {
     ca::Surface surface;
     ca::Status st = ca::prepare_surface(ca::Mesh{std::move(cloud.points), {}}, std::move(cloud.normals), surface, true, trust);
     REQUIRE_MESSAGE(st.ok(), st.message);
-    ca::Monitor monitor;
-    st = ca::generate_candidates(std::move(surface), copt, monitor, r.set);
-    REQUIRE_MESSAGE(st.ok(), st.message);
-    st = ca::select_balls(r.set, sopt, monitor, r.sel);
-    REQUIRE_MESSAGE(st.ok(), st.message);
     ca::ConnectOptions kopt;
     kopt.method = route;
-    st = ca::connect_balls(r.set, r.sel, kopt, monitor, r.skeleton);
-    REQUIRE_MESSAGE(st.ok(), st.message);
-    for (ca::Ball& b : r.skeleton.balls) {
-        b.center = r.set.surface.norm.to_user(b.center);
-        b.radius *= r.set.surface.norm.scale;
-    }
-    return r;
+    return core_run(std::move(surface), copt, ca::SelectOptions{}, kopt);
 }
 
 shapes::Cloud sphere_cloud(double R, size_t n) { return shapes::sample_cloud(shapes::sphere(R, 96, 192), n); }
@@ -73,7 +54,7 @@ shapes::Cloud with_random_signs(shapes::Cloud c, uint64_t seed) {
 }
 
 // The ring test of test_pipeline.cpp: every ball near the core circle, b1 = 1.
-void check_ring(const Run& r, double R, double tube) {
+void check_ring(const CoreRun& r, double R, double tube) {
     REQUIRE(r.skeleton.balls.size() >= 4);
     for (const ca::Ball& b : r.skeleton.balls) {
         const double from_core = std::hypot(std::hypot(b.center.x(), b.center.y()) - R, b.center.z());
@@ -109,7 +90,7 @@ TEST_CASE("point cloud: the envelope rule measures the distance to the cloud's p
     // The segment between the two bulbs' centres runs inside the neck (centre-line rule passes),
     // but its interpolated balls (radius 1) stick far out of the neck (radius 0.25): refused by the
     // envelope rule, and by the reach rule whatever the tolerance.
-    Run r = run(dumbbell_cloud(8000));
+    CoreRun r = run(dumbbell_cloud(8000));
     const ca::Normalization& nz = r.set.surface.norm;
     const ca::Ball a{nz.to_internal(ca::Vec3(-1.5, 0, 0)), 1 / nz.scale}, b{nz.to_internal(ca::Vec3(1.5, 0, 0)), 1 / nz.scale};
     const ca::InsideTest test(r.set);
@@ -126,13 +107,13 @@ TEST_CASE("point cloud: the medial route connects a sampled torus into a ring an
     const double R = 1.0, tube = 0.3;
     const ca::ConnectMethod medial = ca::ConnectMethod::medial;
     check_ring(run(shapes::sample_cloud(shapes::torus(R, tube, 128, 48), 8000), {}, ca::PointNormals::trusted, medial), R, tube);
-    Run r = run(dumbbell_cloud(8000), {}, ca::PointNormals::trusted, medial);
+    CoreRun r = run(dumbbell_cloud(8000), {}, ca::PointNormals::trusted, medial);
     CHECK(ca::topology(r.skeleton).components == 1);
 }
 
 TEST_CASE("point cloud: a sampled sphere gives one ball at its centre") {
     const double R = 2.0;
-    Run r = run(sphere_cloud(R, 5000));
+    CoreRun r = run(sphere_cloud(R, 5000));
     CHECK(!r.set.surface.flipped);
     REQUIRE(r.skeleton.balls.size() == 1);
     CHECK(r.skeleton.balls[0].center.norm() < 0.03 * R);
@@ -143,7 +124,7 @@ TEST_CASE("point cloud: inward normals are flipped, same skeleton size") {
     const double R = 2.0;
     shapes::Cloud c = sphere_cloud(R, 5000);
     for (ca::Vec3& n : c.normals) n = -n;
-    Run r = run(c);
+    CoreRun r = run(c);
     CHECK(r.set.surface.flipped);
     REQUIRE(r.skeleton.balls.size() == 1);
     CHECK(r.skeleton.balls[0].center.norm() < 0.03 * R);
@@ -152,10 +133,10 @@ TEST_CASE("point cloud: inward normals are flipped, same skeleton size") {
 TEST_CASE("point cloud: a sampled torus gives a ring with b1 = 1, outward or inward normals") {
     const double R = 1.0, tube = 0.3;
     shapes::Cloud c = shapes::sample_cloud(shapes::torus(R, tube, 128, 48), 8000);
-    Run a = run(c);
+    CoreRun a = run(c);
     check_ring(a, R, tube);
     for (ca::Vec3& n : c.normals) n = -n;
-    Run b = run(c);
+    CoreRun b = run(c);
     check_ring(b, R, tube);
     const double na = double(a.skeleton.balls.size()), nb = double(b.skeleton.balls.size());
     CHECK(std::abs(na - nb) <= 0.1 * na);
@@ -166,7 +147,7 @@ TEST_CASE("point cloud: the random generator keeps points with winding number > 
     ca::CandidateOptions copt;
     copt.generator = ca::Generator::random;
     copt.random_candidates = 3000;
-    Run r = run(sphere_cloud(R, 4000), copt);
+    CoreRun r = run(sphere_cloud(R, 4000), copt);
     for (const ca::Ball& b : r.set.balls) CHECK(ca::Vec3(b.center - ca::Vec3::Constant(0.5)).norm() < 0.505);   // the cloud spans the unit cube
     REQUIRE(!r.skeleton.balls.empty());
     for (const ca::Ball& b : r.skeleton.balls) CHECK(b.center.norm() + b.radius < 1.02 * R);
@@ -177,28 +158,28 @@ TEST_CASE("point cloud: an outlier point creates no ball outside the shape") {
     shapes::Cloud c = sphere_cloud(R, 5000);
     c.points.push_back(ca::Vec3(3.0 * R, 0, 0));
     c.normals.push_back(ca::Vec3(1, 0, 0));
-    Run r = run(c);
+    CoreRun r = run(c);
     for (const ca::Ball& b : r.skeleton.balls) CHECK(b.center.norm() + b.radius < 1.02 * R);
 }
 
 TEST_CASE("point cloud: random-sign and missing normals give the same skeleton size (torus)") {
     const double R = 1.0, tube = 0.3;
     shapes::Cloud c = shapes::sample_cloud(shapes::torus(R, tube, 128, 48), 8000);
-    const Run exact = run(c);
+    const CoreRun exact = run(c);
     CHECK(exact.set.surface.normals_source == ca::NormalSource::given);
     const double n = double(exact.skeleton.balls.size());
     // random per-point signs, passed as trusted (the sign check catches them) and as unoriented
     const shapes::Cloud shuffled = with_random_signs(c, 3);
     for (ca::PointNormals trust : {ca::PointNormals::trusted, ca::PointNormals::unoriented}) {
         CAPTURE(int(trust));
-        const Run oriented = run(shuffled, {}, trust);
+        const CoreRun oriented = run(shuffled, {}, trust);
         CHECK(oriented.set.surface.normals_source == ca::NormalSource::oriented);
         check_ring(oriented, R, tube);
         CHECK(std::abs(double(oriented.skeleton.balls.size()) - n) <= 0.1 * n);
     }
     shapes::Cloud bare = c;
     bare.normals.clear();
-    const Run estimated = run(bare);
+    const CoreRun estimated = run(bare);
     CHECK(estimated.set.surface.normals_source == ca::NormalSource::estimated);
     check_ring(estimated, R, tube);
     CHECK(std::abs(double(estimated.skeleton.balls.size()) - n) <= 0.1 * n);
@@ -207,11 +188,11 @@ TEST_CASE("point cloud: random-sign and missing normals give the same skeleton s
 TEST_CASE("point cloud: zero normals mean none: 1 % of them are estimated and counted, all of them estimate the cloud") {
     const double R = 1.0, tube = 0.3;
     shapes::Cloud c = shapes::sample_cloud(shapes::torus(R, tube, 128, 48), 8000);
-    const Run exact = run(c);
+    const CoreRun exact = run(c);
     const double n = double(exact.skeleton.balls.size());
     shapes::Cloud holes = c;
     for (size_t i = 0; i < holes.normals.size(); i += 100) holes.normals[i] = ca::Vec3::Zero();   // 80 of 8000
-    const Run some = run(holes);
+    const CoreRun some = run(holes);
     CHECK(some.set.surface.normals_replaced == 80);
     CHECK(some.set.surface.normals_source == ca::NormalSource::given);
     check_ring(some, R, tube);
@@ -220,7 +201,7 @@ TEST_CASE("point cloud: zero normals mean none: 1 % of them are estimated and co
     for (size_t i = 0; i < holes.normals.size(); i += 100) CHECK(some.set.surface.normals[i].dot(c.normals[i]) > 0.9);
     shapes::Cloud none = c;
     for (ca::Vec3& v : none.normals) v = ca::Vec3::Zero();
-    const Run all = run(none);
+    const CoreRun all = run(none);
     CHECK(all.set.surface.normals_replaced == 8000);
     CHECK(all.set.surface.normals_source == ca::NormalSource::estimated);
     check_ring(all, R, tube);
@@ -231,7 +212,7 @@ TEST_CASE("point cloud: random-sign and missing normals on a sphere give one bal
     const shapes::Cloud c = sphere_cloud(R, 5000);
     shapes::Cloud bare = c;
     bare.normals.clear();
-    const Run runs[] = {run(with_random_signs(c, 4)), run(with_random_signs(c, 4), {}, ca::PointNormals::unoriented),
+    const CoreRun runs[] = {run(with_random_signs(c, 4)), run(with_random_signs(c, 4), {}, ca::PointNormals::unoriented),
                         run(bare), run(c, {}, ca::PointNormals::estimate)};
     const ca::NormalSource used[] = {ca::NormalSource::oriented, ca::NormalSource::oriented, ca::NormalSource::estimated,
                                      ca::NormalSource::estimated};
@@ -253,7 +234,7 @@ constexpr double kNoisyR = 2.0;
 double noisy_margin() { return 3 * 0.005 * 4 * std::sqrt(3.0); }
 shapes::Cloud noisy_sphere() { return shapes::noisy_cloud(sphere_cloud(kNoisyR, 5000), 0.005, 0.01); }
 // The largest centre distance + radius, and the largest centre distance, of the selected balls.
-std::pair<double, double> reach(const Run& r) {
+std::pair<double, double> reach(const CoreRun& r) {
     double outer = 0, centre = 0;
     for (const ca::Ball& b : r.skeleton.balls) {
         outer = std::max(outer, b.center.norm() + b.radius);
@@ -264,10 +245,10 @@ std::pair<double, double> reach(const Run& r) {
 }  // namespace
 
 TEST_CASE("point cloud: noise and far outliers make no ball outside the sphere, outliers are counted") {
-    const Run clean = run(sphere_cloud(kNoisyR, 5000));
+    const CoreRun clean = run(sphere_cloud(kNoisyR, 5000));
     CHECK(clean.set.report.outliers == 0);
     CHECK(clean.set.report.outside_local_plane == 0);   // a clean cloud is not noisy: nothing dropped or projected
-    const Run noisy = run(noisy_sphere());
+    const CoreRun noisy = run(noisy_sphere());
     // noise defeats the sign check, not the orientation: the exact normals are kept as given
     CHECK(noisy.set.surface.normals_source == ca::NormalSource::given);
     CHECK(noisy.set.surface.sign_check_inconclusive);
@@ -318,7 +299,7 @@ TEST_CASE("point cloud: orientation probes of a noisy thin box stay inside it") 
 // selected ball stays within the box grown by three noise deviations.
 TEST_CASE("point cloud: a noisy box is covered at the defaults and no ball leaves it") {
     const double sx = 1.0, sy = 0.5, sz = 0.25, sigma = 0.005 * std::sqrt(sx * sx + sy * sy + sz * sz);
-    const Run r = run(shapes::noisy_cloud(shapes::sample_cloud(shapes::box(sx, sy, sz), 5000, 3), 0.005, 0.0));
+    const CoreRun r = run(shapes::noisy_cloud(shapes::sample_cloud(shapes::box(sx, sy, sz), 5000, 3), 0.005, 0.0));
     CHECK(r.set.report.fallback_balls > 0);
     REQUIRE(!r.skeleton.balls.empty());
     const ca::Vec3 hi(sx, sy, sz);
@@ -333,7 +314,7 @@ TEST_CASE("point cloud: a noisy box is covered at the defaults and no ball leave
 // Voronoi balls follow the noise out of the shape.
 TEST_CASE("point cloud: the automatic route is medial on a clean cloud and power on a noisy one") {
     const shapes::Cloud clean = shapes::sample_cloud(shapes::box(1.0, 0.5, 0.25), 5000, 3);
-    const Run c = run(clean), n = run(shapes::noisy_cloud(clean, 0.005, 0.0));
+    const CoreRun c = run(clean), n = run(shapes::noisy_cloud(clean, 0.005, 0.0));
     CHECK(!c.set.noisy_cloud);
     CHECK(n.set.noisy_cloud);
     CHECK(ca::resolve_method(c.set, ca::ConnectMethod::automatic) == ca::ConnectMethod::medial);
@@ -376,7 +357,7 @@ TEST_CASE("point cloud: a thin sheet without normals gives about the skeleton of
         const shapes::Cloud c = shapes::sample_cloud(mesh, 5000, 3);
         shapes::Cloud bare = c;
         bare.normals.clear();
-        const Run exact = run(c), none = run(bare);
+        const CoreRun exact = run(c), none = run(bare);
         CHECK(none.set.surface.normals_source == ca::NormalSource::estimated);
         ca::EvaluateOptions eo;
         eo.surface_samples = 10000;
@@ -434,7 +415,7 @@ TEST_CASE("point cloud: exactly flat faces are not noise, and a desk's thin top 
                  {"no normals", bare, ca::PointNormals::estimate}};
     for (const auto& k : cases) {
         INFO(std::string(k.name));
-        const Run r = run(k.cloud, {}, k.trust);
+        const CoreRun r = run(k.cloud, {}, k.trust);
         CHECK(!r.set.noisy_cloud);
         CHECK(r.sel.cover.uncovered.empty());
         double off = 0;
@@ -469,7 +450,7 @@ TEST_CASE("point cloud: fallback balls of estimated or re-oriented normals are g
                  {"no normals", bare, ca::PointNormals::estimate}};
     for (const auto& k : cases) {
         INFO(std::string(k.name));
-        const Run r = run(k.cloud, {}, k.trust);
+        const CoreRun r = run(k.cloud, {}, k.trust);
         CHECK(r.set.report.fallback_balls > 0);
         CHECK(r.sel.cover.uncovered.empty());
         size_t outside = 0;
@@ -484,7 +465,7 @@ TEST_CASE("point cloud: fallback balls of estimated or re-oriented normals are g
 namespace {
 
 // Every cover sample lies in a selected dilated ball (brute force over the selection).
-void check_every_sample_covered(const Run& r) {
+void check_every_sample_covered(const CoreRun& r) {
     size_t uncovered = 0;
     for (const ca::Vec3& s : r.set.cover_samples) {
         bool in = false;
@@ -546,7 +527,7 @@ TEST_CASE("point cloud: an open hemisphere's reconstruction stays within 5 % of 
     const shapes::Cloud c = hemisphere_cloud(6000);
     const std::vector<ca::Vec3> points = c.points;
     for (ca::ConnectMethod route : {ca::ConnectMethod::automatic, ca::ConnectMethod::power}) {
-        const Run r = run(c, {}, ca::PointNormals::trusted, route);
+        const CoreRun r = run(c, {}, ca::PointNormals::trusted, route);
         CHECK(r.set.report.beyond_reach > 0);
         check_every_sample_covered(r);
         CHECK(recon_to_cloud(points, r.skeleton) <= 5.0);
@@ -560,7 +541,7 @@ TEST_CASE("point cloud: wrong-side normals on a patch make no ball reach outside
     for (size_t i = 0; i < c.points.size(); ++i)
         if (c.points[i].z() > 0.93) c.normals[i] = -c.normals[i];
     const std::vector<ca::Vec3> points = c.points;
-    const Run r = run(c, {}, ca::PointNormals::trusted, ca::ConnectMethod::automatic);
+    const CoreRun r = run(c, {}, ca::PointNormals::trusted, ca::ConnectMethod::automatic);
     check_every_sample_covered(r);
     for (const ca::Ball& b : r.skeleton.balls) CHECK(b.center.norm() + b.radius < 1.1);
     CHECK(recon_to_cloud(points, r.skeleton) <= 5.0);
@@ -577,7 +558,7 @@ TEST_CASE("point cloud: a raw scan (CGAL's hippo2, fragments with given normals)
     }
     const std::vector<ca::Vec3> points = c.points;
     for (ca::PointNormals trust : {ca::PointNormals::trusted, ca::PointNormals::estimate}) {
-        const Run r = run(c, {}, trust, ca::ConnectMethod::automatic);
+        const CoreRun r = run(c, {}, trust, ca::ConnectMethod::automatic);
         check_every_sample_covered(r);
         CHECK(recon_to_cloud(points, r.skeleton) <= 5.0);
     }

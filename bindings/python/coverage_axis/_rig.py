@@ -6,7 +6,7 @@ defaults("rig"))."""
 import ctypes
 
 from ._library import lib
-from ._steps import _Handle, _options, _run, _skeleton_view, _surface
+from ._steps import _Handle, _options, _over_skeleton
 
 INFLUENCES = 4  # CA_INFLUENCES: balls (joints) per vertex
 NEAREST_KINDS = ("ball", "edge", "face")  # CA_NEAREST_BALL, _EDGE, _FACE
@@ -56,22 +56,16 @@ class Rig:
 def correspond(vertices, triangles, skeleton, *, context=None, **options):
     """Each vertex's nearest skeleton primitive and up to 4 ball weights that sum to 1 and change
     continuously over the surface. Options: smoothing."""
-    view, keep = _surface(vertices, triangles, None)
-    sv, keep_skeleton = _skeleton_view(skeleton)
-    opts = _options("correspond", options)
     out = ctypes.c_void_p()
-    _run(context, lib().ca_correspond, ctypes.byref(view), ctypes.byref(sv), ctypes.byref(opts), ctypes.byref(out))
-    del keep, keep_skeleton
+    _over_skeleton(context, lib().ca_correspond, vertices, triangles, skeleton, _options("correspond", options),
+                   ctypes.byref(out))
     return Correspondence(out)
 
 
 def rig(vertices, triangles, skeleton, *, context=None, **options):
     """The skeleton's curve skeleton as a tree of joints and each vertex's joint weights.
     Options: root, max_joints, joint_spacing, min_branch, smoothing."""
-    view, keep = _surface(vertices, triangles, None)
-    sv, keep_skeleton = _skeleton_view(skeleton)
-    opts = _options("rig", options)
     out = ctypes.c_void_p()
-    _run(context, lib().ca_rig_build, ctypes.byref(view), ctypes.byref(sv), ctypes.byref(opts), ctypes.byref(out))
-    del keep, keep_skeleton
+    _over_skeleton(context, lib().ca_rig_build, vertices, triangles, skeleton, _options("rig", options),
+                   ctypes.byref(out))
     return Rig(out)

@@ -91,6 +91,21 @@ def _run(context, function, *args):
         return ctx.run(function, *args)
 
 
+def _make(context, function, *args):
+    """The object a step makes: function(*args, &out) run in the context; its pointer."""
+    out = ctypes.c_void_p()
+    _run(context, function, *args, ctypes.byref(out))
+    return out
+
+
+def _over_skeleton(context, function, vertices, triangles, skeleton, opts, *out):
+    """function(&surface view, &skeleton view, &opts, *out) over the caller's surface and skeleton
+    (evaluate(), correspond(), rig()); the views' buffers live until it returns."""
+    view, keep = _surface(vertices, triangles, None)
+    sv, keep_skeleton = _skeleton_view(skeleton)
+    return _run(context, function, ctypes.byref(view), ctypes.byref(sv), ctypes.byref(opts), *out)
+
+
 # point_normals= of candidates() and skeletonize(): how far a point cloud's normals are trusted
 _POINT_NORMALS = {"given": 0, "unoriented": 1, "estimate": 2}
 # CandidateSet.normals: the normals a point cloud's candidates used (ca_candidate_set_normals)
@@ -139,6 +154,18 @@ class _Handle:
     def view(self, getter, count, width, ctype=ctypes.c_double):
         return _arrays.view(self.get(getter), count, width, ctype, self)
 
+    def pointer(self, getter, ctype):
+        """The getter's array as a ctypes pointer to read item by item."""
+        return ctypes.cast(self.get(getter), ctypes.POINTER(ctype))
+
+    def read(self, getter, struct_type, *args):
+        """A struct_type filled by getter(object, *args, &struct) (stats, a placement); a failure raises."""
+        out = output_struct(struct_type)
+        status = getattr(self._lib, getter)(self._ptr, *args, ctypes.byref(out))
+        if status:
+            raise CoverageAxisError(status, "%s failed" % getter)
+        return out
+
 
 class CandidateSet:
     """Step 1's result: surface samples and inner candidate balls (read-only arrays, no copies)."""
@@ -169,10 +196,7 @@ class Selection:
         self.radii = h.view("ca_selection_radii", self.count, 1)
         self.dilated_radii = h.view("ca_selection_dilated_radii", self.count, 1)
         self.uncovered = h.view("ca_selection_uncovered", h.get("ca_selection_uncovered_count"), 1, ctypes.c_uint32)
-        stats = output_struct(_SelectStats)
-        status = h._lib.ca_selection_stats(h._ptr, ctypes.byref(stats))
-        if status:
-            raise CoverageAxisError(status, "ca_selection_stats failed")
+        stats = h.read("ca_selection_stats", _SelectStats)
         self.stats = {name: _named(name, v) for name, v in struct_dict(stats).items()}
         self.stats["proven_optimal"] = bool(stats.proven_optimal)
 
@@ -193,10 +217,7 @@ class Skeleton:
     def _from_handle(cls, ptr):
         h = _Handle(ptr, "ca_skeleton_destroy")
         n = h.get("ca_skeleton_vertex_count")
-        stats = output_struct(_SkeletonStats)
-        status = h._lib.ca_skeleton_stats_get(h._ptr, ctypes.byref(stats))
-        if status:
-            raise CoverageAxisError(status, "ca_skeleton_stats_get failed")
+        stats = h.read("ca_skeleton_stats_get", _SkeletonStats)
         return cls(h.view("ca_skeleton_centers", n, 3), h.view("ca_skeleton_radii", n, 1),
                    h.view("ca_skeleton_edges", h.get("ca_skeleton_edge_count"), 2, ctypes.c_uint32),
                    h.view("ca_skeleton_faces", h.get("ca_skeleton_face_count"), 3, ctypes.c_uint32),
@@ -211,10 +232,7 @@ def candidates(vertices, triangles=None, normals=None, *, context=None, point_no
     Options: generator, cover_samples, voronoi_samples, random_candidates, seed, connect_samples."""
     view, keep = _surface(vertices, triangles, normals, point_normals)
     opts = _options("candidates", options)
-    out = ctypes.c_void_p()
-    _run(context, lib().ca_candidates, ctypes.byref(view), ctypes.byref(opts), ctypes.byref(out))
-    del keep
-    return CandidateSet(out)
+    return CandidateSet(_make(context, lib().ca_candidates, ctypes.byref(view), ctypes.byref(opts)))
 
 
 def select(candidate_set, *, context=None, ignorable_samples=None, forced_in=None, forced_out=None, **options):
@@ -252,10 +270,8 @@ def connect(selection, *, context=None, **options):
     """Step 3: edges and triangles between the selected balls.
     Options: method ("auto" | "medial" | "power"), remove_outside, fill_holes, reconnect."""
     opts = _options("connect", options)
-    out = ctypes.c_void_p()
-    _run(context, lib().ca_connect, selection.candidate_set._handle._ptr, selection._handle._ptr, ctypes.byref(opts),
-         ctypes.byref(out))
-    return Skeleton._from_handle(out)
+    return Skeleton._from_handle(_make(context, lib().ca_connect, selection.candidate_set._handle._ptr,
+                                       selection._handle._ptr, ctypes.byref(opts)))
 
 
 _connect_step = connect  # skeletonize()'s connect= option hides the function's name
@@ -265,12 +281,9 @@ def evaluate(vertices, triangles, skeleton, *, context=None, **options):
     """Hausdorff distances between the surface and the skeleton's reconstruction (union of balls,
     cones and slabs), in % of the bounding-box diagonal, as a dict.
     Options: surface_samples, envelope_samples, seed."""
-    view, keep = _surface(vertices, triangles, None)
-    sv, keep_skeleton = _skeleton_view(skeleton)
-    opts = _options("evaluate", options)
     out = output_struct(_Evaluation)
-    _run(context, lib().ca_evaluate, ctypes.byref(view), ctypes.byref(sv), ctypes.byref(opts), ctypes.byref(out))
-    del keep, keep_skeleton
+    _over_skeleton(context, lib().ca_evaluate, vertices, triangles, skeleton, _options("evaluate", options),
+                   ctypes.byref(out))
     return struct_dict(out)
 
 
@@ -308,15 +321,13 @@ def proxies(candidate_set, skeleton, *, context=None, **options):
     surface_samples, evaluate_samples, volume_samples, seed."""
     sv, keep = _skeleton_view(skeleton)
     opts = _options("proxies", options)
-    out = ctypes.c_void_p()
-    _run(context, lib().ca_proxies, candidate_set._handle._ptr, ctypes.byref(sv), ctypes.byref(opts),
-         ctypes.byref(out))
+    h = _Handle(_make(context, lib().ca_proxies, candidate_set._handle._ptr, ctypes.byref(sv), ctypes.byref(opts)),
+                "ca_proxy_set_destroy")
     del keep
-    h = _Handle(out, "ca_proxy_set_destroy")
     n = h.get("ca_proxy_set_count")
-    kinds = ctypes.cast(h.get("ca_proxy_set_kinds"), ctypes.POINTER(ctypes.c_int32))
-    c = ctypes.cast(h.get("ca_proxy_set_centers"), ctypes.POINTER(ctypes.c_double))
-    r = ctypes.cast(h.get("ca_proxy_set_radii"), ctypes.POINTER(ctypes.c_double))
+    kinds = h.pointer("ca_proxy_set_kinds", ctypes.c_int32)
+    c = h.pointer("ca_proxy_set_centers", ctypes.c_double)
+    r = h.pointer("ca_proxy_set_radii", ctypes.c_double)
     primitives = []
     for i in range(n):
         a, b = tuple(c[6 * i + k] for k in range(3)), tuple(c[6 * i + 3 + k] for k in range(3))
@@ -324,11 +335,7 @@ def proxies(candidate_set, skeleton, *, context=None, **options):
             primitives.append({"kind": "capsule", "a": a, "radius_a": r[2 * i], "b": b, "radius_b": r[2 * i + 1]})
         else:
             primitives.append({"kind": "sphere", "center": a, "radius": r[2 * i]})
-    stats = output_struct(_ProxyStats)
-    status = h._lib.ca_proxy_set_stats(h._ptr, ctypes.byref(stats))
-    if status:
-        raise CoverageAxisError(status, "ca_proxy_set_stats failed")
-    return Proxies(primitives, struct_dict(stats))
+    return Proxies(primitives, struct_dict(h.read("ca_proxy_set_stats", _ProxyStats)))
 
 
 class BoneColliders:
@@ -379,30 +386,21 @@ def bone_colliders(candidate_set, parents, vertex_joints, vertex_weights, invers
         skip = _arrays.indices(skip_joints, "skip_joints", 1)
         opts.skip_joints, opts.skip_count = skip.address, skip.count
         keep.append(skip)
-    out = ctypes.c_void_p()
-    _run(context, lib().ca_bone_colliders_build, candidate_set._handle._ptr, None, ctypes.byref(view),
-         ctypes.byref(opts), ctypes.byref(out))
+    h = _Handle(_make(context, lib().ca_bone_colliders_build, candidate_set._handle._ptr, None, ctypes.byref(view),
+                      ctypes.byref(opts)), "ca_bone_colliders_destroy")
     del keep
-    h = _Handle(out, "ca_bone_colliders_destroy")
     n = h.get("ca_bone_colliders_count")
-    joints = ctypes.cast(h.get("ca_bone_colliders_joints"), ctypes.POINTER(ctypes.c_uint32))
-    contained = ctypes.cast(h.get("ca_bone_colliders_contained"), ctypes.POINTER(ctypes.c_double))
-    overlap = ctypes.cast(h.get("ca_bone_colliders_overlap"), ctypes.POINTER(ctypes.c_double))
+    joints = h.pointer("ca_bone_colliders_joints", ctypes.c_uint32)
+    contained = h.pointer("ca_bone_colliders_contained", ctypes.c_double)
+    overlap = h.pointer("ca_bone_colliders_overlap", ctypes.c_double)
     colliders = []
     for i in range(n):
-        pl = output_struct(_ProxyPlacement)
-        status = h._lib.ca_bone_colliders_placement(h._ptr, i, ctypes.byref(pl))
-        if status:
-            raise CoverageAxisError(status, "ca_bone_colliders_placement failed")
+        pl = h.read("ca_bone_colliders_placement", _ProxyPlacement, i)
         colliders.append({"joint": joints[i], "kind": "capsule" if pl.kind == 1 else "sphere",
                           "center": tuple(pl.center), "rotation": tuple(pl.rotation), "axis": tuple(pl.axis),
                           "radius_top": pl.radius_top, "radius_bottom": pl.radius_bottom, "height": pl.height,
                           "contained": contained[i], "overlap": overlap[i]})
-    stats = output_struct(_BoneColliderStats)
-    status = h._lib.ca_bone_colliders_stats(h._ptr, ctypes.byref(stats))
-    if status:
-        raise CoverageAxisError(status, "ca_bone_colliders_stats failed")
-    return BoneColliders(colliders, struct_dict(stats))
+    return BoneColliders(colliders, struct_dict(h.read("ca_bone_colliders_stats", _BoneColliderStats)))
 
 
 def _column(values):

@@ -12,6 +12,7 @@
 #include <doctest/doctest.h>
 
 #include "steps.h"
+#include "support/brute_distance.h"
 #include "support/rigged_shapes.h"
 #include "winding.h"
 
@@ -39,20 +40,6 @@ ca::BoneColliderResult colliders(const ca::CandidateSet& set, const RiggedShape&
     const ca::Status st = ca::bone_colliders_step(set, s.skin(), opt, ca::Monitor{}, r);
     REQUIRE_MESSAGE(st.ok(), st.message);
     return r;
-}
-
-// Signed distance to the hull of balls a and b: min over t of |x - c(t)| - r(t), convex in t.
-double brute_distance(const ca::Proxy& p, const ca::Vec3& x) {
-    auto f = [&](double t) {
-        return (x - (p.a.center + t * (p.b.center - p.a.center))).norm() - (p.a.radius + t * (p.b.radius - p.a.radius));
-    };
-    double lo = 0, hi = 1;
-    for (int i = 0; i < 60; ++i) {
-        const double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
-        if (f(m1) <= f(m2)) hi = m2;
-        else lo = m1;
-    }
-    return std::min({f(0), f(1), f(0.5 * (lo + hi))});
 }
 
 // A primitive moved by an affine map with a uniform scale (the column length).
@@ -141,39 +128,35 @@ ca::Proxy engine_capsule(const RiggedShape& s, uint32_t j) {
 
 // Monte Carlo (this file's points, the library's winding number) of the volume of the union of
 // `shapes` outside the mesh, and of each pair's overlap.
-double outside_volume(const std::vector<ca::Proxy>& shapes, const ca::WindingNumber& inside, const ca::Normalization& n,
-                      size_t count) {
+// The volume of the points x of the box around `shapes`' balls for which held(x), by `count`
+// uniform points of a generator seeded with `seed`.
+template <class Held>
+double box_volume(const std::vector<ca::Proxy>& shapes, size_t count, uint64_t seed, Held held) {
     ca::Vec3 lo = ca::Vec3::Constant(1e300), hi = -lo;
     for (const ca::Proxy& p : shapes)
         for (const ca::Ball& b : {p.a, p.b})
             lo = lo.cwiseMin(b.center - ca::Vec3::Constant(b.radius)), hi = hi.cwiseMax(b.center + ca::Vec3::Constant(b.radius));
-    std::mt19937_64 rng(7);
+    std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> u(0, 1);
-    size_t out = 0;
+    size_t n = 0;
     for (size_t i = 0; i < count; ++i) {
         ca::Vec3 x;
         for (int k = 0; k < 3; ++k) x[k] = lo[k] + (hi[k] - lo[k]) * u(rng);
+        n += held(x);
+    }
+    const ca::Vec3 e = hi - lo;
+    return e.x() * e.y() * e.z() * double(n) / double(count);
+}
+double outside_volume(const std::vector<ca::Proxy>& shapes, const ca::WindingNumber& inside, const ca::Normalization& n,
+                      size_t count) {
+    return box_volume(shapes, count, 7, [&](const ca::Vec3& x) {
         bool in = false;
         for (const ca::Proxy& p : shapes) in = in || brute_distance(p, x) <= 0;
-        if (in && !inside.inside(n.to_internal(x))) ++out;
-    }
-    const ca::Vec3 e = hi - lo;
-    return e.x() * e.y() * e.z() * double(out) / double(count);
+        return in && !inside.inside(n.to_internal(x));
+    });
 }
 double overlap(const ca::Proxy& a, const ca::Proxy& b, size_t count) {
-    ca::Vec3 lo = ca::Vec3::Constant(1e300), hi = -lo;
-    for (const ca::Ball& x : {a.a, a.b})
-        lo = lo.cwiseMin(x.center - ca::Vec3::Constant(x.radius)), hi = hi.cwiseMax(x.center + ca::Vec3::Constant(x.radius));
-    std::mt19937_64 rng(11);
-    std::uniform_real_distribution<double> u(0, 1);
-    size_t in = 0;
-    for (size_t i = 0; i < count; ++i) {
-        ca::Vec3 x;
-        for (int k = 0; k < 3; ++k) x[k] = lo[k] + (hi[k] - lo[k]) * u(rng);
-        in += brute_distance(a, x) <= 0 && brute_distance(b, x) <= 0;
-    }
-    const ca::Vec3 e = hi - lo;
-    return e.x() * e.y() * e.z() * double(in) / double(count);
+    return box_volume({a}, count, 11, [&](const ca::Vec3& x) { return brute_distance(a, x) <= 0 && brute_distance(b, x) <= 0; });
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 
 #include "distance.h"
 #include "steps.h"
+#include "support/brute_distance.h"
 #include "support/fresh_samples.h"
 #include "support/shapes.h"
 #include "winding.h"
@@ -56,24 +57,9 @@ double diagonal(const ca::Mesh& m) {
     return (hi - lo).norm();
 }
 
-// Brute force, independent of the library's closed form: the hull of balls a and b is the union
-// of the interpolated balls, so its signed distance is min over t of |x - c(t)| - r(t), a convex
-// function of t, minimised by ternary search.
-double brute_distance(const ca::Proxy& p, const ca::Vec3& x) {
-    auto f = [&](double t) {
-        return (x - (p.a.center + t * (p.b.center - p.a.center))).norm() - (p.a.radius + t * (p.b.radius - p.a.radius));
-    };
-    double lo = 0, hi = 1;
-    for (int i = 0; i < 50; ++i) {
-        const double m1 = lo + (hi - lo) / 3, m2 = hi - (hi - lo) / 3;
-        if (f(m1) <= f(m2)) hi = m2;
-        else lo = m1;
-    }
-    return std::min({f(0), f(1), f(0.5 * (lo + hi))});
-}
-
 // Brute force for any primitive: a box by its definition (every coordinate in its frame within
-// the half-length; the signed distance's sign is all the checks need), the others as above.
+// the half-length; the signed distance's sign is all the checks need), the others by
+// brute_distance (support/brute_distance.h).
 double brute_distance_any(const ca::Proxy& p, const ca::Vec3& x) {
     if (p.kind != ca::ProxyKind::box) return brute_distance(p, x);
     const ca::Vec3 q = p.axes.transpose() * (x - p.a.center);

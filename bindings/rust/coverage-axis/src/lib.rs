@@ -193,6 +193,89 @@ macro_rules! defaults {
     }};
 }
 
+/// An options type over the C struct `$c`: `default()` and `new()` give the library's defaults
+/// (`$defaults`), `raw()` the C struct for reading the values; builder methods are added beside.
+macro_rules! options_type {
+    ($(#[$doc:meta])* $name:ident, $c:ty, $defaults:path) => {
+        $(#[$doc])*
+        #[derive(Clone, Copy)]
+        pub struct $name {
+            raw: $c,
+        }
+
+        impl Default for $name {
+            fn default() -> Self {
+                $name { raw: defaults!($c, $defaults) }
+            }
+        }
+
+        impl $name {
+            pub fn new() -> Self {
+                Self::default()
+            }
+            /// The C struct, for reading the values.
+            pub fn raw(&self) -> &$c {
+                &self.raw
+            }
+        }
+    };
+}
+
+/// A result type owning its C object: freed on drop, `Send + Sync`, with `len` (the getter
+/// `$count`) and `is_empty`.
+macro_rules! owned_result {
+    ($(#[$doc:meta])* $name:ident, $c:ty, $destroy:path, $count:path) => {
+        $(#[$doc])*
+        pub struct $name {
+            raw: *mut $c,
+        }
+
+        // SAFETY: results are immutable and may be read from several threads at once (docs/abi.md).
+        unsafe impl Send for $name {}
+        unsafe impl Sync for $name {}
+
+        impl Drop for $name {
+            fn drop(&mut self) {
+                unsafe { $destroy(self.raw) }
+            }
+        }
+
+        impl $name {
+            pub fn len(&self) -> usize {
+                unsafe { $count(self.raw) }
+            }
+            pub fn is_empty(&self) -> bool {
+                self.len() == 0
+            }
+        }
+    };
+}
+
+/// An output struct of this crate's layout (struct_size set) filled by `$getter(raw, extra..., &mut out)`
+/// of a live result, which cannot fail but for a bug.
+macro_rules! read_out {
+    ($ty:ty, $getter:path, $raw:expr $(, $extra:expr)*) => {{
+        let mut out = <$ty>::default();
+        out.struct_size = std::mem::size_of::<$ty>() as u32;
+        check(unsafe { $getter($raw $(, $extra)*, &mut out) }).expect(stringify!($getter));
+        out
+    }};
+}
+
+/// Builder methods that set the option field of the same name: `name: T` as given, or
+/// `name: T => C` converted with `as C` (bools and enums to the C ints).
+macro_rules! setters {
+    ($($(#[$doc:meta])* $name:ident: $ty:ty $(=> $c:ty)?;)*) => {
+        $(
+            $(#[$doc])*
+            pub fn $name(mut self, value: $ty) -> Self {
+                self.raw.$name = value $(as $c)?;
+                self
+            }
+        )*
+    };
+}
+
 // ---- surface ---------------------------------------------------------------------------------
 
 /// A borrowed input surface: a triangle mesh, or an oriented point cloud (one outward normal per
@@ -271,50 +354,20 @@ pub enum ConnectMethod {
     Auto = sys::CA_CONNECT_AUTO as isize,
 }
 
-/// Options of [`Context::candidates`]; `default()` is the library's defaults.
-#[derive(Clone, Copy)]
-pub struct CandidateOptions {
-    raw: sys::ca_candidate_options,
-}
-
-impl Default for CandidateOptions {
-    fn default() -> Self {
-        CandidateOptions { raw: defaults!(sys::ca_candidate_options, sys::ca_candidate_options_defaults) }
-    }
-}
+options_type!(
+    /// Options of [`Context::candidates`]; `default()` is the library's defaults.
+    CandidateOptions, sys::ca_candidate_options, sys::ca_candidate_options_defaults
+);
 
 impl CandidateOptions {
-    pub fn new() -> Self {
-        Self::default()
-    }
-    pub fn generator(mut self, generator: Generator) -> Self {
-        self.raw.generator = generator as i32;
-        self
-    }
-    /// |S|, the surface samples to cover.
-    pub fn cover_samples(mut self, n: u32) -> Self {
-        self.raw.cover_samples = n;
-        self
-    }
-    pub fn voronoi_samples(mut self, n: u32) -> Self {
-        self.raw.voronoi_samples = n;
-        self
-    }
-    pub fn random_candidates(mut self, n: u32) -> Self {
-        self.raw.random_candidates = n;
-        self
-    }
-    pub fn seed(mut self, seed: u64) -> Self {
-        self.raw.seed = seed;
-        self
-    }
-    pub fn connect_samples(mut self, n: u32) -> Self {
-        self.raw.connect_samples = n;
-        self
-    }
-    /// The C struct, for reading the values.
-    pub fn raw(&self) -> &sys::ca_candidate_options {
-        &self.raw
+    setters! {
+        generator: Generator => i32;
+        /// |S|, the surface samples to cover.
+        cover_samples: u32;
+        voronoi_samples: u32;
+        random_candidates: u32;
+        seed: u64;
+        connect_samples: u32;
     }
 }
 
@@ -353,41 +406,19 @@ impl<'a> SelectOptions<'a> {
         }
         self
     }
-    pub fn solver(mut self, solver: Solver) -> Self {
-        self.raw.solver = solver as i32;
-        self
-    }
-    pub fn effort(mut self, effort: Effort) -> Self {
-        self.raw.effort = effort as i32;
-        self
-    }
-    /// Exact solver wall-clock budget; <= 0: no limit.
-    pub fn time_limit_s(mut self, seconds: f64) -> Self {
-        self.raw.time_limit_s = seconds;
-        self
-    }
-    pub fn skip_uncoverable(mut self, skip: bool) -> Self {
-        self.raw.skip_uncoverable = skip as i32;
-        self
-    }
-    /// At most `k` balls with the smallest dilation achieving it (0 = off).
-    pub fn target_count(mut self, k: u32) -> Self {
-        self.raw.target_count = k;
-        self
-    }
-    pub fn target_tolerance(mut self, tolerance: f64) -> Self {
-        self.raw.target_tolerance = tolerance;
-        self
-    }
-    /// The fewest balls whose two-sided Hausdorff distance is at most `percent` % of the bbox
-    /// diagonal, by a search over delta (0 = off); the stats' `hd_reached` gives the HD.
-    pub fn target_error(mut self, percent: f64) -> Self {
-        self.raw.target_error = percent;
-        self
-    }
-    pub fn divide_threshold(mut self, samples: u32) -> Self {
-        self.raw.divide_threshold = samples;
-        self
+    setters! {
+        solver: Solver => i32;
+        effort: Effort => i32;
+        /// Exact solver wall-clock budget in seconds; <= 0: no limit.
+        time_limit_s: f64;
+        skip_uncoverable: bool => i32;
+        /// At most this many balls with the smallest dilation achieving it (0 = off).
+        target_count: u32;
+        target_tolerance: f64;
+        /// The fewest balls whose two-sided Hausdorff distance is at most this percent of the bbox
+        /// diagonal, by a search over delta (0 = off); the stats' `hd_reached` gives the HD.
+        target_error: f64;
+        divide_threshold: u32;
     }
     /// One entry per sample; non-zero: need not be covered. [`Context::select`] checks the lengths.
     pub fn ignorable_samples(mut self, m: Option<&'a [u8]>) -> Self {
@@ -412,112 +443,46 @@ impl<'a> SelectOptions<'a> {
     }
 }
 
-/// Options of [`Context::connect`]; `default()` is the library's defaults.
-#[derive(Clone, Copy)]
-pub struct ConnectOptions {
-    raw: sys::ca_connect_options,
-}
-
-impl Default for ConnectOptions {
-    fn default() -> Self {
-        ConnectOptions { raw: defaults!(sys::ca_connect_options, sys::ca_connect_options_defaults) }
-    }
-}
+options_type!(
+    /// Options of [`Context::connect`]; `default()` is the library's defaults.
+    ConnectOptions, sys::ca_connect_options, sys::ca_connect_options_defaults
+);
 
 impl ConnectOptions {
-    pub fn new() -> Self {
-        Self::default()
-    }
-    pub fn method(mut self, method: ConnectMethod) -> Self {
-        self.raw.method = method as i32;
-        self
-    }
-    pub fn remove_outside(mut self, on: bool) -> Self {
-        self.raw.remove_outside = on as i32;
-        self
-    }
-    pub fn fill_holes(mut self, on: bool) -> Self {
-        self.raw.fill_holes = on as i32;
-        self
-    }
-    pub fn reconnect(mut self, on: bool) -> Self {
-        self.raw.reconnect = on as i32;
-        self
-    }
-    pub fn raw(&self) -> &sys::ca_connect_options {
-        &self.raw
+    setters! {
+        method: ConnectMethod => i32;
+        remove_outside: bool => i32;
+        fill_holes: bool => i32;
+        reconnect: bool => i32;
     }
 }
 
-/// Options of [`Context::evaluate`]; `default()` is the library's defaults.
-#[derive(Clone, Copy)]
-pub struct EvaluateOptions {
-    raw: sys::ca_evaluate_options,
-}
-
-/// Options of `Context::rig` (ca_rig_options; docs/rig.md); the library's defaults.
-#[derive(Clone, Copy)]
-pub struct RigOptions {
-    raw: sys::ca_rig_options,
-}
-
-impl Default for RigOptions {
-    fn default() -> Self {
-        RigOptions { raw: defaults!(sys::ca_rig_options, sys::ca_rig_options_defaults) }
-    }
-}
+options_type!(
+    /// Options of `Context::rig` (ca_rig_options; docs/rig.md); the library's defaults.
+    RigOptions, sys::ca_rig_options, sys::ca_rig_options_defaults
+);
 
 impl RigOptions {
-    pub fn new() -> Self {
-        Self::default()
-    }
-    /// The root joint's ball; -1: the largest ball.
-    pub fn root(mut self, ball: i64) -> Self {
-        self.raw.root = ball;
-        self
-    }
-    pub fn max_joints(mut self, n: u32) -> Self {
-        self.raw.max_joints = n;
-        self
-    }
-    pub fn joint_spacing(mut self, fraction: f64) -> Self {
-        self.raw.joint_spacing = fraction;
-        self
-    }
-    pub fn min_branch(mut self, ratio: f64) -> Self {
-        self.raw.min_branch = ratio;
-        self
-    }
-    pub fn smoothing(mut self, width: f64) -> Self {
-        self.raw.smoothing = width;
-        self
+    setters! {
+        /// The root joint's ball; -1: the largest ball.
+        root: i64;
+        max_joints: u32;
+        joint_spacing: f64;
+        min_branch: f64;
+        smoothing: f64;
     }
 }
 
-impl Default for EvaluateOptions {
-    fn default() -> Self {
-        EvaluateOptions { raw: defaults!(sys::ca_evaluate_options, sys::ca_evaluate_options_defaults) }
-    }
-}
+options_type!(
+    /// Options of [`Context::evaluate`]; `default()` is the library's defaults.
+    EvaluateOptions, sys::ca_evaluate_options, sys::ca_evaluate_options_defaults
+);
 
 impl EvaluateOptions {
-    pub fn new() -> Self {
-        Self::default()
-    }
-    pub fn surface_samples(mut self, n: u32) -> Self {
-        self.raw.surface_samples = n;
-        self
-    }
-    pub fn envelope_samples(mut self, n: u32) -> Self {
-        self.raw.envelope_samples = n;
-        self
-    }
-    pub fn seed(mut self, seed: u64) -> Self {
-        self.raw.seed = seed;
-        self
-    }
-    pub fn raw(&self) -> &sys::ca_evaluate_options {
-        &self.raw
+    setters! {
+        surface_samples: u32;
+        envelope_samples: u32;
+        seed: u64;
     }
 }
 
@@ -553,40 +518,21 @@ impl BoneColliderOptions {
     pub fn new() -> Self {
         Self::default()
     }
-    /// Conservative (default): each holds its whole part; inscribed: each stays inside the shape.
-    pub fn mode(mut self, mode: ProxyMode) -> Self {
-        self.raw.mode = mode as i32;
-        self
-    }
-    pub fn shapes(mut self, shapes: ProxyShapes) -> Self {
-        self.raw.shapes = shapes as i32;
-        self
-    }
-    /// A joint dominating less than this fraction of the surface's area gets no collider.
-    pub fn min_share(mut self, fraction: f64) -> Self {
-        self.raw.min_share = fraction;
-        self
-    }
-    /// A collider whose larger radius is below this percent of the bbox diagonal is dropped.
-    pub fn min_size(mut self, percent: f64) -> Self {
-        self.raw.min_size = percent;
-        self
+    setters! {
+        /// Conservative (default): each holds its whole part; inscribed: each stays inside the shape.
+        mode: ProxyMode => i32;
+        shapes: ProxyShapes => i32;
+        /// A joint dominating less than this fraction of the surface's area gets no collider.
+        min_share: f64;
+        /// A collider whose larger radius is below this percent of the bbox diagonal is dropped.
+        min_size: f64;
+        surface_samples: u32;
+        evaluate_samples: u32;
+        seed: u64;
     }
     /// Joints to give no collider.
     pub fn skip_joints(mut self, joints: &[u32]) -> Self {
         self.skip = joints.to_vec();
-        self
-    }
-    pub fn surface_samples(mut self, n: u32) -> Self {
-        self.raw.surface_samples = n;
-        self
-    }
-    pub fn evaluate_samples(mut self, n: u32) -> Self {
-        self.raw.evaluate_samples = n;
-        self
-    }
-    pub fn seed(mut self, seed: u64) -> Self {
-        self.raw.seed = seed;
         self
     }
 }
@@ -605,53 +551,21 @@ pub enum ProxyMode {
     Conservative = sys::CA_PROXY_CONSERVATIVE as isize,
 }
 
-/// Options of [`Context::proxies`]; `default()` is the library's defaults.
-#[derive(Clone, Copy)]
-pub struct ProxyOptions {
-    raw: sys::ca_proxy_options,
-}
-
-impl Default for ProxyOptions {
-    fn default() -> Self {
-        ProxyOptions { raw: defaults!(sys::ca_proxy_options, sys::ca_proxy_options_defaults) }
-    }
-}
+options_type!(
+    /// Options of [`Context::proxies`]; `default()` is the library's defaults.
+    ProxyOptions, sys::ca_proxy_options, sys::ca_proxy_options_defaults
+);
 
 impl ProxyOptions {
-    pub fn new() -> Self {
-        Self::default()
-    }
-    pub fn shapes(mut self, shapes: ProxyShapes) -> Self {
-        self.raw.shapes = shapes as i32;
-        self
-    }
-    pub fn mode(mut self, mode: ProxyMode) -> Self {
-        self.raw.mode = mode as i32;
-        self
-    }
-    /// At most this many primitives (>= 1).
-    pub fn count(mut self, k: u32) -> Self {
-        self.raw.count = k;
-        self
-    }
-    pub fn surface_samples(mut self, n: u32) -> Self {
-        self.raw.surface_samples = n;
-        self
-    }
-    pub fn evaluate_samples(mut self, n: u32) -> Self {
-        self.raw.evaluate_samples = n;
-        self
-    }
-    pub fn volume_samples(mut self, n: u32) -> Self {
-        self.raw.volume_samples = n;
-        self
-    }
-    pub fn seed(mut self, seed: u64) -> Self {
-        self.raw.seed = seed;
-        self
-    }
-    pub fn raw(&self) -> &sys::ca_proxy_options {
-        &self.raw
+    setters! {
+        shapes: ProxyShapes => i32;
+        mode: ProxyMode => i32;
+        /// At most this many primitives (>= 1).
+        count: u32;
+        surface_samples: u32;
+        evaluate_samples: u32;
+        volume_samples: u32;
+        seed: u64;
     }
 }
 
@@ -900,8 +814,7 @@ impl Context {
     /// Hausdorff distances between the surface and the skeleton's reconstruction, in % of the
     /// bounding-box diagonal.
     pub fn evaluate(&self, surface: &Surface<'_>, skeleton: &Skeleton, options: &EvaluateOptions) -> Result<Evaluation> {
-        let mut view: sys::ca_skeleton_view = defaults!(sys::ca_skeleton_view, sys::ca_skeleton_view_defaults);
-        check(unsafe { sys::ca_skeleton_get_view(skeleton.raw, &mut view) })?;
+        let view = skeleton.view()?;
         let mut result = Evaluation { struct_size: std::mem::size_of::<Evaluation>() as u32, ..Default::default() };
         self.check(unsafe { sys::ca_evaluate(self.ptr(), &surface.raw, &view, &options.raw, &mut result) })?;
         Ok(result)
@@ -910,8 +823,7 @@ impl Context {
     /// Each surface vertex's nearest skeleton primitive and up to 4 ball weights that sum to 1
     /// (docs/rig.md); `smoothing` None keeps the library's default.
     pub fn correspond(&self, surface: &Surface<'_>, skeleton: &Skeleton, smoothing: Option<f64>) -> Result<Correspondence> {
-        let mut view: sys::ca_skeleton_view = defaults!(sys::ca_skeleton_view, sys::ca_skeleton_view_defaults);
-        check(unsafe { sys::ca_skeleton_get_view(skeleton.raw, &mut view) })?;
+        let view = skeleton.view()?;
         let mut options = defaults!(sys::ca_correspondence_options, sys::ca_correspondence_options_defaults);
         if let Some(width) = smoothing {
             options.smoothing = width;
@@ -923,8 +835,7 @@ impl Context {
 
     /// The skeleton's curve skeleton as a tree of joints and each surface vertex's joint weights.
     pub fn rig(&self, surface: &Surface<'_>, skeleton: &Skeleton, options: &RigOptions) -> Result<Rig> {
-        let mut view: sys::ca_skeleton_view = defaults!(sys::ca_skeleton_view, sys::ca_skeleton_view_defaults);
-        check(unsafe { sys::ca_skeleton_get_view(skeleton.raw, &mut view) })?;
+        let view = skeleton.view()?;
         let mut out = ptr::null_mut();
         self.check(unsafe { sys::ca_rig_build(self.ptr(), &surface.raw, &view, &options.raw, &mut out) })?;
         Ok(Rig { raw: out })
@@ -933,8 +844,7 @@ impl Context {
     /// Engine proxies: at most `options.count` spheres, or tapered capsules and spheres, chosen
     /// from the skeleton over the set's mesh (docs/proxies.md).
     pub fn proxies(&self, set: &CandidateSet, skeleton: &Skeleton, options: &ProxyOptions) -> Result<Proxies> {
-        let mut view: sys::ca_skeleton_view = defaults!(sys::ca_skeleton_view, sys::ca_skeleton_view_defaults);
-        check(unsafe { sys::ca_skeleton_get_view(skeleton.raw, &mut view) })?;
+        let view = skeleton.view()?;
         let mut out = ptr::null_mut();
         self.check(unsafe { sys::ca_proxies(self.ptr(), set.raw, &view, &options.raw, &mut out) })?;
         Ok(Proxies { raw: out })
@@ -992,28 +902,12 @@ pub struct BoneCollider {
     pub overlap: f64,
 }
 
-/// Bone colliders ([`Context::bone_colliders`]); they hold nothing of the other objects.
-pub struct BoneColliders {
-    raw: *mut sys::ca_bone_colliders,
-}
-
-// SAFETY: results are immutable and may be read from several threads at once (docs/abi.md).
-unsafe impl Send for BoneColliders {}
-unsafe impl Sync for BoneColliders {}
-
-impl Drop for BoneColliders {
-    fn drop(&mut self) {
-        unsafe { sys::ca_bone_colliders_destroy(self.raw) }
-    }
-}
+owned_result!(
+    /// Bone colliders ([`Context::bone_colliders`]); they hold nothing of the other objects.
+    BoneColliders, sys::ca_bone_colliders, sys::ca_bone_colliders_destroy, sys::ca_bone_colliders_count
+);
 
 impl BoneColliders {
-    pub fn len(&self) -> usize {
-        unsafe { sys::ca_bone_colliders_count(self.raw) }
-    }
-    pub fn is_empty(&self) -> bool {
-        self.len() == 0
-    }
     pub fn colliders(&self) -> Vec<BoneCollider> {
         let n = self.len();
         let joints = unsafe { values(sys::ca_bone_colliders_joints(self.raw), n) };
@@ -1021,11 +915,7 @@ impl BoneColliders {
         let overlap = unsafe { values(sys::ca_bone_colliders_overlap(self.raw), n) };
         (0..n)
             .map(|i| {
-                let mut p = sys::ca_proxy_placement {
-                    struct_size: std::mem::size_of::<sys::ca_proxy_placement>() as u32,
-                    ..Default::default()
-                };
-                check(unsafe { sys::ca_bone_colliders_placement(self.raw, i, &mut p) }).expect("placement of a live collider");
+                let p = read_out!(sys::ca_proxy_placement, sys::ca_bone_colliders_placement, self.raw, i);
                 BoneCollider {
                     joint: joints[i],
                     capsule: p.kind == sys::CA_PROXY_CAPSULE,
@@ -1042,10 +932,7 @@ impl BoneColliders {
             .collect()
     }
     pub fn stats(&self) -> BoneColliderStats {
-        let mut stats =
-            BoneColliderStats { struct_size: std::mem::size_of::<BoneColliderStats>() as u32, ..Default::default() };
-        check(unsafe { sys::ca_bone_colliders_stats(self.raw, &mut stats) }).expect("stats of live colliders");
-        stats
+        read_out!(BoneColliderStats, sys::ca_bone_colliders_stats, self.raw)
     }
 }
 
@@ -1060,28 +947,12 @@ pub struct Proxy {
     pub radius_b: f64,
 }
 
-/// Engine proxies ([`Context::proxies`]); they hold nothing of the other objects.
-pub struct Proxies {
-    raw: *mut sys::ca_proxy_set,
-}
-
-// SAFETY: results are immutable and may be read from several threads at once (docs/abi.md).
-unsafe impl Send for Proxies {}
-unsafe impl Sync for Proxies {}
-
-impl Drop for Proxies {
-    fn drop(&mut self) {
-        unsafe { sys::ca_proxy_set_destroy(self.raw) }
-    }
-}
+owned_result!(
+    /// Engine proxies ([`Context::proxies`]); they hold nothing of the other objects.
+    Proxies, sys::ca_proxy_set, sys::ca_proxy_set_destroy, sys::ca_proxy_set_count
+);
 
 impl Proxies {
-    pub fn len(&self) -> usize {
-        unsafe { sys::ca_proxy_set_count(self.raw) }
-    }
-    pub fn is_empty(&self) -> bool {
-        self.len() == 0
-    }
     pub fn primitives(&self) -> Vec<Proxy> {
         let n = self.len();
         let kinds = unsafe { values(sys::ca_proxy_set_kinds(self.raw), n) };
@@ -1098,61 +969,27 @@ impl Proxies {
             .collect()
     }
     pub fn stats(&self) -> ProxyStats {
-        let mut stats = ProxyStats { struct_size: std::mem::size_of::<ProxyStats>() as u32, ..Default::default() };
-        check(unsafe { sys::ca_proxy_set_stats(self.raw, &mut stats) }).expect("stats of live proxies");
-        stats
+        read_out!(ProxyStats, sys::ca_proxy_set_stats, self.raw)
     }
 }
 
 // ---- results ---------------------------------------------------------------------------------
 
-/// Surface samples and candidate balls (step 1). Selections made from it keep the C object alive,
-/// so it may be dropped before them.
-pub struct CandidateSet {
-    raw: *mut sys::ca_candidate_set,
-}
-
-/// Balls chosen by step 2; it may outlive its candidate set and context.
-pub struct Selection {
-    raw: *mut sys::ca_selection,
-}
-
-/// The medial skeleton (step 3); it holds nothing of the other objects.
-pub struct Skeleton {
-    raw: *mut sys::ca_skeleton,
-}
-
-// SAFETY: results are immutable and may be read from several threads at once (docs/abi.md).
-unsafe impl Send for CandidateSet {}
-unsafe impl Sync for CandidateSet {}
-unsafe impl Send for Selection {}
-unsafe impl Sync for Selection {}
-unsafe impl Send for Skeleton {}
-unsafe impl Sync for Skeleton {}
-
-impl Drop for CandidateSet {
-    fn drop(&mut self) {
-        unsafe { sys::ca_candidate_set_destroy(self.raw) }
-    }
-}
-impl Drop for Selection {
-    fn drop(&mut self) {
-        unsafe { sys::ca_selection_destroy(self.raw) }
-    }
-}
-impl Drop for Skeleton {
-    fn drop(&mut self) {
-        unsafe { sys::ca_skeleton_destroy(self.raw) }
-    }
-}
+owned_result!(
+    /// Surface samples and candidate balls (step 1). Selections made from it keep the C object
+    /// alive, so it may be dropped before them.
+    CandidateSet, sys::ca_candidate_set, sys::ca_candidate_set_destroy, sys::ca_candidate_set_count
+);
+owned_result!(
+    /// Balls chosen by step 2; it may outlive its candidate set and context.
+    Selection, sys::ca_selection, sys::ca_selection_destroy, sys::ca_selection_count
+);
+owned_result!(
+    /// The medial skeleton (step 3); it holds nothing of the other objects.
+    Skeleton, sys::ca_skeleton, sys::ca_skeleton_destroy, sys::ca_skeleton_vertex_count
+);
 
 impl CandidateSet {
-    pub fn len(&self) -> usize {
-        unsafe { sys::ca_candidate_set_count(self.raw) }
-    }
-    pub fn is_empty(&self) -> bool {
-        self.len() == 0
-    }
     pub fn centers(&self) -> &[[f64; 3]] {
         unsafe { items(sys::ca_candidate_set_centers(self.raw), self.len()) }
     }
@@ -1177,12 +1014,6 @@ impl CandidateSet {
 }
 
 impl Selection {
-    pub fn len(&self) -> usize {
-        unsafe { sys::ca_selection_count(self.raw) }
-    }
-    pub fn is_empty(&self) -> bool {
-        self.len() == 0
-    }
     /// Indices into the candidate set.
     pub fn indices(&self) -> &[u32] {
         unsafe { values(sys::ca_selection_indices(self.raw), self.len()) }
@@ -1202,19 +1033,11 @@ impl Selection {
         unsafe { values(sys::ca_selection_uncovered(self.raw), sys::ca_selection_uncovered_count(self.raw)) }
     }
     pub fn stats(&self) -> SelectStats {
-        let mut stats = SelectStats { struct_size: std::mem::size_of::<SelectStats>() as u32, ..Default::default() };
-        check(unsafe { sys::ca_selection_stats(self.raw, &mut stats) }).expect("stats of a live selection");
-        stats
+        read_out!(SelectStats, sys::ca_selection_stats, self.raw)
     }
 }
 
 impl Skeleton {
-    pub fn len(&self) -> usize {
-        unsafe { sys::ca_skeleton_vertex_count(self.raw) }
-    }
-    pub fn is_empty(&self) -> bool {
-        self.len() == 0
-    }
     pub fn centers(&self) -> &[[f64; 3]] {
         unsafe { items(sys::ca_skeleton_centers(self.raw), self.len()) }
     }
@@ -1229,49 +1052,29 @@ impl Skeleton {
         unsafe { items(sys::ca_skeleton_faces(self.raw), sys::ca_skeleton_face_count(self.raw)) }
     }
     pub fn stats(&self) -> SkeletonStats {
-        let mut stats = SkeletonStats { struct_size: std::mem::size_of::<SkeletonStats>() as u32, ..Default::default() };
-        check(unsafe { sys::ca_skeleton_stats_get(self.raw, &mut stats) }).expect("stats of a live skeleton");
-        stats
+        read_out!(SkeletonStats, sys::ca_skeleton_stats_get, self.raw)
+    }
+    /// The library's view of the skeleton's arrays, for the calls that take a skeleton.
+    fn view(&self) -> Result<sys::ca_skeleton_view> {
+        let mut view: sys::ca_skeleton_view = defaults!(sys::ca_skeleton_view, sys::ca_skeleton_view_defaults);
+        check(unsafe { sys::ca_skeleton_get_view(self.raw, &mut view) })?;
+        Ok(view)
     }
 }
 
-/// Per surface vertex: 4 balls and weights (decreasing, sum 1; an unused slot has weight 0 and
-/// repeats the first ball) and the nearest primitive (`sys::CA_NEAREST_*`, an index into the
-/// skeleton's balls, edges or faces).
-pub struct Correspondence {
-    raw: *mut sys::ca_correspondence,
-}
-
-/// A tree of joints (parents before children; joint 0 the root, parent -1) and per surface
-/// vertex 4 joints and weights (decreasing, sum 1).
-pub struct Rig {
-    raw: *mut sys::ca_rig,
-}
-
-// SAFETY: results are immutable and may be read from several threads at once (docs/abi.md).
-unsafe impl Send for Correspondence {}
-unsafe impl Sync for Correspondence {}
-unsafe impl Send for Rig {}
-unsafe impl Sync for Rig {}
-
-impl Drop for Correspondence {
-    fn drop(&mut self) {
-        unsafe { sys::ca_correspondence_destroy(self.raw) }
-    }
-}
-impl Drop for Rig {
-    fn drop(&mut self) {
-        unsafe { sys::ca_rig_destroy(self.raw) }
-    }
-}
+owned_result!(
+    /// Per surface vertex: 4 balls and weights (decreasing, sum 1; an unused slot has weight 0 and
+    /// repeats the first ball) and the nearest primitive (`sys::CA_NEAREST_*`, an index into the
+    /// skeleton's balls, edges or faces).
+    Correspondence, sys::ca_correspondence, sys::ca_correspondence_destroy, sys::ca_correspondence_vertex_count
+);
+owned_result!(
+    /// A tree of joints (parents before children; joint 0 the root, parent -1) and per surface
+    /// vertex 4 joints and weights (decreasing, sum 1).
+    Rig, sys::ca_rig, sys::ca_rig_destroy, sys::ca_rig_joint_count
+);
 
 impl Correspondence {
-    pub fn len(&self) -> usize {
-        unsafe { sys::ca_correspondence_vertex_count(self.raw) }
-    }
-    pub fn is_empty(&self) -> bool {
-        self.len() == 0
-    }
     pub fn balls(&self) -> &[[u32; 4]] {
         unsafe { items(sys::ca_correspondence_balls(self.raw), self.len()) }
     }
@@ -1287,12 +1090,6 @@ impl Correspondence {
 }
 
 impl Rig {
-    pub fn len(&self) -> usize {
-        unsafe { sys::ca_rig_joint_count(self.raw) }
-    }
-    pub fn is_empty(&self) -> bool {
-        self.len() == 0
-    }
     pub fn branch_count(&self) -> usize {
         unsafe { sys::ca_rig_branch_count(self.raw) }
     }
