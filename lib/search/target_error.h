@@ -8,7 +8,7 @@
 // bracket, then probe the neighbourhood of the best probe (the HD is not monotone in delta), at
 // most max_probes probes in all; a bracket whose ends' counts differ by one is not refined (the
 // count-down probes that count). The count-down: while the best passing probe has n > 1 balls,
-// the first of the probes target_count's search (target_count_hd.h) makes for n - 1 balls: the
+// the probes target_count's search (target_count_hd.h) makes for n - 1 balls: the
 // target size d0 (the smallest delta with at most n - 1 balls, selection.h), then
 // d0 (1 + count_down_step i), i = 1 .. count_down_sweep - 1, until one passes with fewer balls,
 // which becomes the best; the first count none passes for ends it (at most max_count_down probes). The result is the best passing
@@ -41,9 +41,9 @@ struct TargetErrorOptions {
     EvaluateOptions evaluate;     // how each probe is measured (ca_evaluate's defaults)
     std::optional<FitOptions> also_fitted;  // set, with fit unset: each probe judged unfitted and
                                             // fitted with these, the lower HD of the two
-    uint32_t max_probes = 12;     // select + connect + evaluate runs of the delta search, at most
-    uint32_t max_count_down = 6;    // the count-down's probes after it, at most
-    uint32_t count_down_sweep = 3;  // probes per count, its target size included
+    uint32_t max_probes = 10;     // select + connect + evaluate runs of the delta search, at most
+    uint32_t max_count_down = 12;   // the count-down's probes after it, at most
+    uint32_t count_down_sweep = 9;  // probes per count, its target size included (target_count's 9)
     double count_down_step = 0.02;  // their relative delta step (target_count's)
     uint32_t coarse_envelope_samples = 10000;  // the coarse measurement's samples of E's boundary
 };
