@@ -6,6 +6,13 @@ DEMO_MODEL ?= tests/data/fox.obj
 # the fox stands on the xy plane: z is its up axis
 DEMO_PREVIEW ?= --up z
 DATA ?= ../shared/data
+# Compiles go through ccache when it is installed (scripts/install-deps.sh installs it): a rebuild,
+# and consumer_subproject's build of the library inside a parent project (the same compile
+# commands), then reuse the objects compiled before. Checked when a build folder is configured, after
+# deps has installed it; CCACHE= turns it off; a launcher in CMAKE_FLAGS wins.
+CCACHE ?= ccache
+LAUNCHER = $(if $(CCACHE),$$(command -v $(CCACHE) > /dev/null && echo -DCMAKE_C_COMPILER_LAUNCHER=$(CCACHE) \
+  -DCMAKE_CXX_COMPILER_LAUNCHER=$(CCACHE)))
 
 .PHONY: all deps configure build demo test tsan bench install package clean fuzz fuzz-build fuzz-pipeline fuzz-long fuzz-assimp blender-addon test-blender test-distributed
 
@@ -15,7 +22,7 @@ deps:
 	@bash scripts/install-deps.sh
 
 configure: deps
-	@cmake -S . -B $(BUILD) $(CMAKE_FLAGS) > /dev/null
+	@cmake -S . -B $(BUILD) $(LAUNCHER) $(CMAKE_FLAGS) > /dev/null
 
 build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
@@ -31,7 +38,7 @@ test: build
 # the concurrency stress test (several contexts in threads, CBC and Clp included) under
 # ThreadSanitizer, in its own build folder
 tsan: deps
-	@cmake -S . -B build-tsan -DCA_TSAN=ON -DCA_BUILD_BINDINGS=OFF -DCA_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
+	@cmake -S . -B build-tsan $(LAUNCHER) -DCA_TSAN=ON -DCA_BUILD_BINDINGS=OFF -DCA_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
 	@cmake --build build-tsan -j $(JOBS) --target test_concurrent_contexts
 	@cd build-tsan && ctest --output-on-failure -R '^concurrent_contexts$$'
 
@@ -72,7 +79,7 @@ FUZZ_SEEDS = tests/data/hourglass.obj tests/data/wall.obj tests/data/desk_table.
   tests/data/chair_soup.obj
 fuzz-build:
 	@bash scripts/install-deps.sh clang libclang-rt-14-dev
-	@cmake -S . -B build-fuzz -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCA_FUZZ=ON -DCA_SANITIZE=ON \
+	@cmake -S . -B build-fuzz $(LAUNCHER) -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCA_FUZZ=ON -DCA_SANITIZE=ON \
 	  -DCA_BUILD_TESTS=OFF -DCA_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
 	@cmake --build build-fuzz -j $(JOBS) --target fuzz_pipeline $(addprefix fuzz_read_,$(FUZZ_READERS))
 	@python3 tests/fuzz/make_seeds.py build-fuzz/seeds $(FUZZ_SEEDS)

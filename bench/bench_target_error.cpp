@@ -89,7 +89,7 @@ int main(int argc, char** argv) {
     if (models.empty()) return 0;
     std::printf("\n## Error-bounded selection: --target-error 2, 1.5 and 1 against --target-count runs\n\n");
     std::printf("Closed paper meshes, defaults otherwise (|S| 1500, Voronoi candidates, exact cover, fast effort, probe_fit 0: "
-                "unfitted probes, then a fitted search). Per E: the balls target-error returned, its HD (hd_reached: the "
+                "each probe's cover judged unfitted and fitted once). Per E: the balls target-error returned, its HD (hd_reached: the "
                 "skeleton ca_connect gives at its defaults), probes, wall s of ca_select; \"count\": the fewest balls of "
                 "the --target-count runs of that model (K = 90 %% of each E's balls; connected at the defaults, "
                 "evaluated at ca_evaluate's) with HD <= E, and its HD (\"none\": no run within E). Runs (K: balls HD) "

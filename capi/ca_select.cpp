@@ -91,8 +91,10 @@ ca_status ca_select(ca_context* ctx, const ca_candidate_set* set, const ca_selec
         r.set = set;
         ca::SelectResult result;
         st = ca::select_step(set->core, request, ctx->monitor(), result);
-        // a target not reached still returns its best selection, with that status
-        if (!st.ok() && st.code != ca::Code::target_not_reached) return st;
+        // a target not reached, and a search the time limit ended, still return their best
+        // selection, with that status
+        if (!st.ok() && st.code != ca::Code::target_not_reached && !(st.code == ca::Code::time_limit && result.stopped))
+            return st;
         r.core = std::move(result.selection);
         publish(r, *set, request, result.hd_reached);
         *out = res.release();

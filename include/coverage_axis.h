@@ -15,8 +15,9 @@
  *   A count that does not match its array is CA_ERROR_INVALID_INPUT; an array may be NULL when its
  *   count is 0, else CA_ERROR_NULL_POINTER. Output arrays are packed (x y z per point, i j per edge,
  *   i j k per face; 0-based indices).
- * - Status: on any but CA_OK (and CA_ERROR_TARGET_NOT_REACHED) the output pointer is NULL, nothing
- *   is allocated and no output struct is written; ca_context_last_error() explains. No exception
+ * - Status: on any but CA_OK the output pointer is NULL, nothing is allocated and no output struct
+ *   is written (except ca_select's CA_ERROR_TARGET_NOT_REACHED, and its CA_ERROR_TIME_LIMIT when
+ *   *out is not NULL: a search's best selection so far); ca_context_last_error() explains. No exception
  *   crosses this boundary; nothing prints, exits or aborts.
  * - Results are opaque and immutable, readable from several threads, freed by their ca_*_destroy
  *   (NULL: no-op); getters' pointers live until then (NULL object: NULL / 0). A result copies what
@@ -85,8 +86,11 @@ typedef int32_t ca_status;
 #define CA_ERROR_BUFFER_TOO_SMALL  11 /* copy-out capacity too small; *count has the size needed */
 #define CA_ERROR_INTERNAL          12 /* a bug: please report it with the input */
 #define CA_ERROR_NO_CANDIDATES     13 /* no inner candidate ball was found */
-#define CA_ERROR_TIME_LIMIT        14 /* ca_context_desc.time_limit_s ran out; the message names the stage */
-#define CA_ERROR_TARGET_NOT_REACHED 15 /* ca_select: no probe reached target_error; the one failure with a
+#define CA_ERROR_TIME_LIMIT        14 /* ca_context_desc.time_limit_s ran out; the message names the stage.
+                                       ca_select's target_error or target_count search stopped after a
+                                       probe: *out is its best selection so far (else NULL), destroyed
+                                       as on success */
+#define CA_ERROR_TARGET_NOT_REACHED 15 /* ca_select: no probe reached target_error; a failure with a
                                        result: *out is the probe of lowest HD, destroyed as on success */
 
 /* A static English name, e.g. "CA_ERROR_NULL_POINTER: a required pointer is NULL". */

@@ -14,6 +14,9 @@ packages=(build-essential cmake pkg-config libeigen3-dev libnanoflann-dev coinor
 # nodejs brings its own npm, which Debian's npm package would conflict with)
 command -v node > /dev/null || packages+=(nodejs)
 command -v npm > /dev/null || packages+=(npm)
+# ccache: the Makefile compiles through it, so a rebuild and the consumer_subproject test (the
+# library built again inside a parent project, with the same compile commands) reuse the objects
+command -v ccache > /dev/null || packages+=(ccache)
 # the command-line tool (examples/): libcli11-dev (arguments), nlohmann-json3-dev (JSON, glTF),
 # libstb-dev (PNG), libtinygltf-dev (glTF reader) and libassimp-dev (FBX, DAE, 3DS, ...)
 packages+=(libcli11-dev nlohmann-json3-dev libstb-dev libtinygltf-dev libassimp-dev)

@@ -441,6 +441,18 @@ namespace CoverageAxis
         }
     }
 
+    /// <summary>Select with TargetError or TargetCount: the context's time limit ended the search
+    /// after a probe (Status.TimeLimit). Selection is the best selection so far (its Stats'
+    /// hd_reached and probes); the caller disposes of it.</summary>
+    public class SearchStoppedException : CoverageAxisException
+    {
+        public Selection Selection { get; private set; }
+        public SearchStoppedException(string message, Selection selection) : base(Status.TimeLimit, message)
+        {
+            Selection = selection;
+        }
+    }
+
     /// <summary>A surface: a triangle mesh (x y z per vertex, i j k per triangle, 0-based) or an
     /// oriented point cloud (Triangles null, one outward normal per point, or Normals null). Arrays
     /// are read during a call only; their lengths are checked before it (Status.InvalidInput).</summary>
@@ -687,7 +699,8 @@ namespace CoverageAxis
         public void Dispose() { handle.Dispose(); }
 
         /// <summary>Runs a call with the token's cancellation forwarded to the library.</summary>
-        T Run<T>(CancellationToken token, Func<int> call, Func<T> result)
+        // hasResult: whether a failed call still returned its result (Select's time-limited search)
+        T Run<T>(CancellationToken token, Func<int> call, Func<T> result, Func<bool> hasResult = null)
         {
             int status;
             using (token.Register(() => Native.ca_context_request_cancel(handle)))
@@ -695,8 +708,10 @@ namespace CoverageAxis
             if (token.IsCancellationRequested) Native.ca_context_clear_cancel(handle);
             if (status == 0) return result();
             var message = Marshal.PtrToStringAnsi(Native.ca_context_last_error(handle));
-            if (status == (int)Status.TargetNotReached)  // the one failure with a result (Select's)
+            if (status == (int)Status.TargetNotReached)  // the failures with a result (Select's)
                 throw new TargetNotReachedException(message, (Selection)(object)result());
+            if (status == (int)Status.TimeLimit && hasResult != null && hasResult())
+                throw new SearchStoppedException(message, (Selection)(object)result());
             if (status == (int)Status.Cancelled && token.IsCancellationRequested)
                 throw new OperationCanceledException(message, token);
             throw new CoverageAxisException((Status)status, message);
@@ -733,7 +748,8 @@ namespace CoverageAxis
                 o.forced_in_count = (UIntPtr)(options.ForcedIn == null ? 0 : options.ForcedIn.Length);
                 o.forced_out_count = (UIntPtr)(options.ForcedOut == null ? 0 : options.ForcedOut.Length);
                 SelectionHandle h = null;
-                return Run(token, () => Native.ca_select(handle, set.Handle, ref o, out h), () => new Selection(h));
+                return Run(token, () => Native.ca_select(handle, set.Handle, ref o, out h), () => new Selection(h),
+                           () => h != null && !h.IsInvalid);
             }
             finally
             {

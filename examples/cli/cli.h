@@ -87,9 +87,10 @@ bool finish_run_options(const CLI::App& app, RunOptions& o, std::string& error);
 // The options as JSON (for batch sidecars): every value that can change an output.
 Json options_json(const RunOptions& o);
 
-// Reads `input`, runs candidates -> selection -> connection, writes `out` and reports.
+// Reads `input`, runs candidates -> selection -> connection, writes `out` and reports. `log`, when
+// set, gets the library's notes with progress_user.
 Outcome run_pipeline(const std::string& input, const RunOptions& o, const Outputs& out, ca_progress_fn progress = nullptr,
-                     void* progress_user = nullptr);
+                     void* progress_user = nullptr, ca_log_fn log = nullptr);
 
 Json error_json(const Failure& f);
 Failure library_failure(ca_context* ctx, ca_status st, const std::string& step);

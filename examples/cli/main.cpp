@@ -20,17 +20,34 @@ namespace {
 struct ProgressBar {
     std::string stage;
     int last = -1;
+    std::string detail;  // the searches' last note: "probe k of at most n: ...; best so far ..."
+    void draw(int pct) const {
+        std::fprintf(stderr, "\r%-12s [%-30s] %3d%%%s%s\x1b[K", stage.c_str(), std::string(size_t(pct * 30 / 100), '#').c_str(),
+                     pct, detail.empty() ? "" : "  ", detail.c_str());
+        std::fflush(stderr);
+    }
     static int32_t callback(void* user, const char* stage, double f) {
         auto* self = static_cast<ProgressBar*>(user);
         const int pct = std::min(100, std::max(0, int(f * 100)));
         if (self->stage != stage || pct != self->last) {
-            if (!self->stage.empty() && self->stage != stage) std::fputc('\n', stderr);
+            if (!self->stage.empty() && self->stage != stage) {
+                std::fputc('\n', stderr);
+                self->detail.clear();
+            }
             self->stage = stage;
             self->last = pct;
-            std::fprintf(stderr, "\r%-12s [%-30s] %3d%%", stage, std::string(size_t(pct * 30 / 100), '#').c_str(), pct);
-            std::fflush(stderr);
+            self->draw(pct);
         }
         return 0;
+    }
+    // the search's notes (info, "target error: probe ...") go beside its bar: probe k of n, best so far
+    static void log(void* user, int32_t level, const char* message) {
+        auto* self = static_cast<ProgressBar*>(user);
+        const std::string m = message;
+        const std::string prefix = "target error: probe ";
+        if (level != 1 || m.compare(0, prefix.size(), prefix) != 0) return;
+        self->detail = m.substr(std::string("target error: ").size());
+        self->draw(std::max(self->last, 0));
     }
     void finish() {
         if (!stage.empty()) std::fputc('\n', stderr);
@@ -100,7 +117,8 @@ void print_summary(const cli::Json& j, const cli::RunOptions& o) {
                     u("medial_balls"), u("surface_balls"), u("open_parts"));
     if (target_error) {
         const double hd = j["hd_reached"].get<double>();
-        std::printf("target      two-sided HD %.3f %% %s %.4g %% of the bbox diagonal (%llu probes)%s\n", hd,
+        std::printf("target      two-sided HD %.3f %% %s %.4g %% of the bbox diagonal (%llu probes; no lower bound on the "
+                    "balls is known)%s\n", hd,
                     hd <= o.select.target_error ? "<=" : ">", o.select.target_error, u("probes"),
                     hd <= o.select.target_error ? "" : ": not reached, the lowest HD found");
     } else if (target) {
@@ -228,7 +246,8 @@ int single_run(int argc, char** argv) {
 
     ProgressBar bar;
     const bool show_bar = !quiet && !json && isatty(2);
-    const cli::Outcome r = cli::run_pipeline(input, o, out, show_bar ? ProgressBar::callback : nullptr, &bar);
+    const cli::Outcome r =
+        cli::run_pipeline(input, o, out, show_bar ? ProgressBar::callback : nullptr, &bar, show_bar ? ProgressBar::log : nullptr);
     if (show_bar) bar.finish();
     if (!r.ok) return report_failure(r.failure, json, input);
     if (json) std::printf("%s\n", r.report.dump().c_str());

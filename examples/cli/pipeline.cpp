@@ -8,12 +8,14 @@
 
 namespace cli {
 
-Run::Run(const RunOptions& o, ca_progress_fn progress, void* progress_user)
+Run::Run(const RunOptions& o, ca_progress_fn progress, void* progress_user, ca_log_fn log)
     : budget_s(o.time_limit_s), start(Clock::now()) {
     ca_context_desc_init(&desc);
     desc.threads = o.threads;
     desc.progress = progress;
     desc.progress_user = progress_user;
+    desc.log = log;
+    desc.log_user = progress_user;
 }
 
 Run::~Run() {
@@ -128,9 +130,9 @@ bool evaluation_step(Run& run, const caio::MeshData& mesh, const RunOptions& o, 
 }  // namespace
 
 Outcome run_pipeline(const std::string& input, const RunOptions& o, const Outputs& out, ca_progress_fn progress,
-                     void* progress_user) {
+                     void* progress_user, ca_log_fn log) {
     Outcome r;
-    Run run(o, progress, progress_user);
+    Run run(o, progress, progress_user, log);
     caio::MeshData mesh;
     if (!read_step(input, o, out, mesh, r.failure)) return r;
     run.times.read = since(run.start);

@@ -114,7 +114,11 @@ Json run_report(const std::string& input, const caio::MeshData& mesh, const Run&
     if (o.select.target_count > 0) j["hd_reached"] = results.evaluation.hd_two_sided;
     else if (ss.hd_reached >= 0) j["hd_reached"] = ss.hd_reached;
     else j["hd_reached"] = nullptr;
-    if (o.select.target_error > 0) j["target_reached"] = !r.target_missed;
+    if (o.select.target_error > 0) {
+        j["target_reached"] = !r.target_missed;
+        // no lower bound on the count is known (docs/fidelity.md): null, never a guess
+        j["balls_lower_bound"] = nullptr;
+    }
     if (r.target_missed) j["error"] = error_json(r.failure);
     j["time_s"] = times_json(run.times, total);
     return j;

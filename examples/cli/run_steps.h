@@ -31,12 +31,12 @@ struct Run {
     // flipped, read before a candidates file replaces the set.
     int32_t normals = CA_NORMALS_NONE;
     bool flipped = false;
-    ca_context_desc desc;      // every step's context: the threads and the progress callback
+    ca_context_desc desc;      // every step's context: the threads, the progress and log callbacks
     double budget_s = 0;       // --time-limit: the whole run's budget; 0 = none
     Clock::time_point start;   // the run's start, reading included
     StageTimes times;
 
-    Run(const RunOptions& o, ca_progress_fn progress, void* progress_user);
+    Run(const RunOptions& o, ca_progress_fn progress, void* progress_user, ca_log_fn log = nullptr);
     ~Run();
     Run(const Run&) = delete;
     Run& operator=(const Run&) = delete;

@@ -29,6 +29,11 @@ struct DeltaProbe {
     EvaluateResult evaluation;    // the HD only (hd_two_sided and the one-sided maxima)
 };
 
+// A step stopped as cancelled while no cancel was asked but the time limit has run out (the fit
+// reports every stop as a cancel): the time limit's status, so that a search keeps its best so
+// far; any other status unchanged.
+Status stop_cause(const Status& st, const Monitor& monitor);
+
 // Selects with `opt` at opt.delta (opt.target_count as given: 0 for one solve), connects with
 // `connect`, fits with `fit` when it is set (fit_skeleton: a no-op without a triangle mesh) and
 // evaluates with `evaluate` against set.surface.mesh, prepared once by the search (`surface`,

@@ -2,14 +2,19 @@
 // what a probe runs, so that it can be driven by any probe function (a synthetic HD(delta) in the
 // tests). It chooses the deltas, judges each probe against E and keeps the best one.
 //
-// Phase 1 (bracket and bisect): the first probe is at `start`. While the probes pass (HD <= E)
-// delta is doubled (to kLargestDelta), while they fail it is halved (not below `floor`), until a
-// passing delta and a larger failing one bracket the largest passing delta; that bracket is then
-// bisected to `tolerance`, keeping a third of max_probes (rounded down) for phase 2. This assumes HD(delta) is monotone, which it is not (the fit, the
+// Phase 1 (bracket and refine): the first probe is at `start`. While the probes pass (HD <= E)
+// delta grows by E / HD (at least 1.25, at most 4 times; doubled from a delta without a cover; to
+// kLargestDelta), while they fail it shrinks by E / HD (at least to a half, at most to a quarter;
+// not below `floor`): the HD grows about in proportion to delta. Once a passing delta and a
+// larger failing one bracket the largest passing delta, the bracket is cut where the HD, linear
+// between its ends, meets E (a quarter to three quarters in), to `tolerance` (or, with
+// count_down, until lo's balls are at most hi's + 1), keeping a third of max_probes (rounded
+// down) for phase 2. This assumes HD(delta) is monotone, which it is not (the fit, the
 // connection): a delta above the bracket, or between two failing probes, can pass.
 // Phase 2 (neighbourhood), with the probes left: when a probe passes, the gap between the best
-// passing delta L and the nearest failing delta H above it is bisected, then 1.1 H, 1.25 H, 1.5 H
-// (1.25 L, 1.5 L, 2 L when no probe above L failed) and 0.9 L are probed; when none passes, 1.25 and 1.5 times the start, then the midpoints of
+// passing delta L and the nearest failing delta H above it is bisected (not with count_down when
+// their counts differ by at most one), then 1.1 H, 1.25 H, 1.5 H, 2 H, 3 H (1.25 L, 1.5 L, 2 L when
+// no probe above L failed) and 0.9 L are probed; when none passes, 1.25 and 1.5 times the start, then the midpoints of
 // adjacent probed deltas (the widest gap by ratio first, of equal ones the larger). The candidate list is recomputed after every probe
 // (a new best moves L and H), deltas already probed (or out of [floor, kLargestDelta]) are
 // skipped, and the phase ends when no candidate is left or max_probes probes have run.
@@ -32,6 +37,8 @@ struct DeltaSearchOptions {
     double tolerance = 1e-3;      // bisection stops when the bracket is narrower
     double target_error = 2;      // E: a probe passes when its HD <= E
     uint32_t max_probes = 14;     // probes run, those without a cover included
+    bool count_down = false;      // the caller then probes the count below the best itself: a
+                                  // bracket whose ends' counts differ by one is not refined
 };
 
 struct DeltaSearchResult {

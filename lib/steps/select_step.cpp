@@ -67,42 +67,32 @@ Status select_step(const CandidateSet& set, const SelectRequest& request, const 
         te.connect = probe.connect;
         te.fit = fit_options(probe, set);
         te.evaluate = evaluation;
+        // On a mesh with unfitted probes, each probe's cover is also measured fitted (fit once, as
+        // connect fits a selection judged fitted), and the lower HD of the two is judged: one search
+        // finds the fewest balls within E, fitted or not.
+        if (!te.fit) {
+            ConnectRequest fitted_probe = probe;
+            fitted_probe.fit = FitMode::once;
+            te.also_fitted = fit_options(fitted_probe, set);
+        }
         TargetErrorResult ter;
         st = select_target_error(set, so, te, monitor, ter);
         if (!st.ok()) return st;
-        bool fitted = te.fit.has_value();
-        // Searching further (a mesh, probes unfitted): a second search with fitted probes, and the
-        // selection is marked so that connect's automatic fit fits it as judged. Unfitted probes
-        // that all miss E: the better of the two searches is kept, a reached one, else the lower HD.
-        ConnectRequest fitted_probe = probe;
-        fitted_probe.fit = FitMode::once;
-        const std::optional<FitOptions> further = fit_options(fitted_probe, set);
-        // When the unfitted probes reached E, the fitted search starts at their best delta and looks
-        // for fewer balls (the fit lowers the HD of most skeletons, so a larger delta may pass
-        // fitted): the fewest balls within E of either search is kept, fitted or not.
-        if (!fitted && further && !(ter.reached && ter.selection.indices.size() <= 1)) {
-            TargetErrorOptions tf = te;
-            tf.fit = further;
-            SelectOptions from = so;
-            if (ter.reached) from.delta = ter.selection.delta;
-            TargetErrorResult second;
-            st = select_target_error(set, from, tf, monitor, second);
-            // the first search's result stands when the second cannot run to a probe (time limit)
-            if (!st.ok() && st.code != Code::time_limit) return st;
-            if (st.ok()) {
-                const uint32_t probes = ter.selection.probes + second.selection.probes;
-                const bool better = ter.reached ? second.reached && second.selection.indices.size() < ter.selection.indices.size()
-                                                : second.reached || second.evaluation.hd_two_sided < ter.evaluation.hd_two_sided;
-                if (better) {
-                    ter = std::move(second);
-                    fitted = true;
-                }
-                ter.selection.probes = probes;
-            }
-        }
+        const bool fitted = ter.fitted;
         out.selection = std::move(ter.selection);
         out.selection.judged_fitted = fitted;
         out.hd_reached = ter.evaluation.hd_two_sided;
+        if (ter.stopped) {
+            // the best selection so far, with the time limit's status (ca_select keeps the result)
+            out.stopped = true;
+            char text[200];
+            std::snprintf(text, sizeof text,
+                          "time limit reached in the target error search after %llu probes: the best selection so far "
+                          "is returned (%zu balls, two-sided HD %.3f %%, target %s)",
+                          (unsigned long long)out.selection.probes, out.selection.indices.size(), out.hd_reached,
+                          ter.reached ? "reached" : "not reached");
+            return fail(Code::time_limit, text);
+        }
         if (!ter.reached) {
             // the caller gets the best probe with a status of its own, never a silent success
             char text[160];
@@ -121,9 +111,17 @@ Status select_step(const CandidateSet& set, const SelectRequest& request, const 
         if (!st.ok()) return st;
         out.selection = std::move(tcr.selection);
         out.hd_reached = tcr.evaluation.hd_two_sided;
-        if (tcr.stopped)
-            monitor.note(2, "target count: the time limit ended the search after " + std::to_string(tcr.probes.size()) +
-                                " probes; the best skeleton so far is returned");
+        if (tcr.stopped) {
+            // the best selection so far, with the time limit's status (ca_select keeps the result)
+            out.selection.sized_by_count = true;
+            out.stopped = true;
+            char text[200];
+            std::snprintf(text, sizeof text,
+                          "time limit reached in the target count search after %zu probes: the best selection so far is "
+                          "returned (%zu balls, two-sided HD %.3f %%)",
+                          tcr.probes.size(), out.selection.indices.size(), out.hd_reached);
+            return fail(Code::time_limit, text);
+        }
     } else {
         st = select_balls(set, so, monitor, out.selection);
         if (!st.ok()) return st;

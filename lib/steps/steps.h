@@ -100,16 +100,17 @@ struct SelectRequest {
 struct SelectResult {
     Selection selection;
     double hd_reached = -1;       // the searches: the HD of the returned selection; -1 not measured
+    bool stopped = false;         // the time limit ended a search: Code::time_limit, `selection` its best so far
 };
 
-// Checks the request and runs its strategy: target_error's search when set (on a mesh, unfitted
-// probes are searched again fitted: from their best delta when they reach E, the fewer balls within
-// E kept; else the better of the two; when no probe reaches it:
-// Code::target_not_reached with `out` holding the probe of lowest HD); target_count with the
+// Checks the request and runs its strategy: target_error's search when set (on a mesh with
+// unfitted probes, each probe's cover is judged unfitted and fitted once, the lower HD; when no
+// probe reaches it: Code::target_not_reached with `out` holding the probe of lowest HD); target_count with the
 // offset dilation on a set with a surface: the lowest HD within the count (target_count_hd.h); else
 // select_balls (which handles target_count by bisection alone). Each search probe is connected as
 // connect_step would with the default ConnectRequest (fit = probe_fit) and measured as
-// evaluate_step would with the default EvaluateOptions.
+// evaluate_step would with the default EvaluateOptions. When the time limit ends either search
+// after a probe: Code::time_limit with `out` holding the best selection so far (out.stopped).
 Status select_step(const CandidateSet& set, const SelectRequest& request, const Monitor& monitor, SelectResult& out);
 
 // ---- evaluation (evaluate_step.cpp) ----

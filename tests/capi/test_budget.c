@@ -1,6 +1,6 @@
 /* test_budget.c: the C ABI's bounds on work and its range checks, compiled as C99: the context's
  * time limit (CA_ERROR_TIME_LIMIT naming the stage, no partial result, the context usable
- * after it), a cancel from the first progress call of every stage stops that stage at once,
+ * after it; inside ca_select's searches, after a probe, the best selection so far with that status), a cancel from the first progress call of every stage stops that stage at once,
  * counts past the ABI's range, strides that leave elements misaligned, boxes near the ends of
  * the double range, and indices equal to the vertex count everywhere the ABI takes indices. */
 #include "box_skeleton.h"
@@ -8,6 +8,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 static ca_context* context_with_limit(double seconds) {
     ca_context_desc d;
@@ -294,8 +295,80 @@ static void test_index_equal_to_count(void) {
     ca_context_destroy(ctx);
 }
 
+/* The progress callback of the searches' probes: at its first call after a probe (fraction > 0)
+   it waits until the context's time limit (time_limit_s after `start`) has surely passed, so the
+   limit falls inside the search wherever the machine's speed puts the probes. */
+struct Waiter {
+    const char* stage;
+    time_t start;
+    double wait_s;
+    int waited;
+};
+static int32_t wait_past_limit(void* user, const char* stage, double fraction) {
+    struct Waiter* w = (struct Waiter*)user;
+    if (!w->waited && fraction > 0 && strcmp(stage, w->stage) == 0) {
+        while (difftime(time(NULL), w->start) < w->wait_s) {
+        }
+        w->waited = 1;
+    }
+    return 0;
+}
+
+/* A time limit inside the target_error and target_count searches, after their first probe:
+   CA_ERROR_TIME_LIMIT, the message saying the best selection so far is returned, and that
+   selection in *out (its HD and probes in its stats), connected like any selection. */
+static void test_time_limit_in_searches(void) {
+    ca_surface_view v = box_view();
+    ca_candidate_options o = box_options(400);
+    ca_candidate_set* set = NULL;
+    ca_context* plain = context_with_limit(0);
+    int search;
+    CHECK(ca_candidates(plain, &v, &o, &set) == CA_OK);
+    for (search = 0; search < 2 && set; ++search) {
+        struct Waiter w;
+        ca_context_desc d;
+        ca_context* ctx = NULL;
+        ca_select_options so;
+        ca_selection* sel = NULL;
+        ca_skeleton* sk = NULL;
+        ca_select_stats ss;
+        ca_status st;
+        w.stage = search == 0 ? "target error: probes" : "target count: probes";
+        w.wait_s = 10; /* whole seconds: past the 8 s limit, which the first probe stays well within */
+        w.waited = 0;
+        ca_context_desc_init(&d);
+        d.time_limit_s = 8;
+        d.progress = wait_past_limit;
+        d.progress_user = &w;
+        CHECK(ca_context_create(&d, &ctx) == CA_OK);
+        ca_select_options_init(&so);
+        if (search == 0) so.target_error = 1e-4; /* never reached: the search would run every probe */
+        else so.target_count = 6;
+        w.start = time(NULL);
+        st = ca_select(ctx, set, &so, &sel);
+        CHECK(w.waited);
+        CHECK(st == CA_ERROR_TIME_LIMIT);
+        CHECK(strstr(ca_context_last_error(ctx), "best selection so far") != NULL);
+        CHECK(sel != NULL);
+        if (sel) {
+            ss.struct_size = sizeof ss;
+            CHECK(ca_selection_stats(sel, &ss) == CA_OK);
+            CHECK(ss.hd_reached > 0);
+            CHECK(ca_selection_count(sel) > 0);
+            if (search == 1) CHECK(ca_selection_count(sel) <= 6);
+            CHECK(ca_connect(plain, set, sel, NULL, &sk) == CA_OK && sk != NULL);
+            ca_skeleton_destroy(sk);
+            ca_selection_destroy(sel);
+        }
+        ca_context_destroy(ctx);
+    }
+    ca_candidate_set_destroy(set);
+    ca_context_destroy(plain);
+}
+
 int main(void) {
     test_time_limit();
+    test_time_limit_in_searches();
     test_cancel_every_stage();
     test_counts_and_strides();
     test_index_equal_to_count();

@@ -5,10 +5,11 @@
 # default when the project is not the top level) and define no tool or test target; then the
 # add_subdirectory one is built (the library and examples/minimal.c only) and run.
 # WORK_DIR (ctest gives one in the build folder; default: a temporary folder) is emptied first and
-# kept, at a fixed path: with ccache present the build goes through it, with the paths under the
-# common folder of the source and WORK_DIR relative, so a rerun (or another checkout of the same
-# tree) compiles only what changed. The build is still the parent project's own, from source.
-# usage: subproject.sh SOURCE_DIR [JOBS] [WORK_DIR]
+# kept. CMAKE_ARGs go to both configures: ctest gives its build folder's type and compilers, so that
+# with ccache present (the build then goes through it) the library's compile commands are that
+# folder's own (the same flags, absolute paths into the same tree) and reuse its objects. The
+# caller's CCACHE_BASEDIR is left alone: paths made relative would differ between the two folders.
+# usage: subproject.sh SOURCE_DIR [JOBS] [WORK_DIR] [CMAKE_ARG...]
 set -eu
 src=$(cd "$1" && pwd)
 jobs=${2:-2}
@@ -21,15 +22,13 @@ else
   tmp=$(mktemp -d)
   trap 'rm -rf "$tmp"' EXIT
 fi
-launcher=()
+shift $(($# < 3 ? $# : 3))
+cmake_args=("$@")
 if command -v ccache > /dev/null; then
-  common=$src
-  while [ "$common" != / ] && [ "${tmp#"$common"/}" = "$tmp" ]; do common=$(dirname "$common"); done
-  [ "$common" != / ] && export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$common}
-  launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  cmake_args+=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 fi
 configure() {  # BUILD_DIR USE_FETCHCONTENT
-  cmake -S "$src/tests/consumer/subproject" -B "$tmp/$1" -DCA_SOURCE_DIR="$src" -DUSE_FETCHCONTENT="$2" ${launcher[@]+"${launcher[@]}"} \
+  cmake -S "$src/tests/consumer/subproject" -B "$tmp/$1" -DCA_SOURCE_DIR="$src" -DUSE_FETCHCONTENT="$2" ${cmake_args[@]+"${cmake_args[@]}"} \
     --trace-expand --trace-format=json-v1 --trace-redirect="$tmp/$1.trace" > "$tmp/$1.log" 2>&1 \
     || { cat "$tmp/$1.log" >&2; exit 1; }
   python3 "$src/tests/consumer/check_finds.py" "$tmp/$1.trace" "$tmp/$1"

@@ -12,7 +12,7 @@ module CoverageAxis
 
 export Context, candidates, select, connect, skeletonize, evaluate, cancel!, clear_cancel!,
        centers, radii, dilated_radii, indices, uncovered, samples, edges, faces, stats, CoverageAxisError,
-       TargetNotReachedError
+       TargetNotReachedError, SearchStoppedError
 
 # The library's path: COVERAGE_AXIS_LIBRARY, else the loader's search path.
 const libcoverage_axis = get(ENV, "COVERAGE_AXIS_LIBRARY", "libcoverage_axis")
@@ -21,6 +21,7 @@ const CA_OK = Int32(0)
 const CA_ERROR_TARGET_NOT_REACHED = Int32(15)
 const CA_ERROR_INVALID_INPUT = Int32(4)
 const CA_ERROR_CANCELLED = Int32(9)
+const CA_ERROR_TIME_LIMIT = Int32(14)
 
 # ---- the C structs (names: the header's without ca_, in CamelCase) ----------------------------
 struct ContextDesc
@@ -397,6 +398,14 @@ struct TargetNotReachedError <: Exception
 end
 Base.showerror(io::IO, e::TargetNotReachedError) = print(io, "TargetNotReachedError: ", e.message)
 
+"""`select` with target_error or target_count: the context's time limit ended the search after a
+probe; `selection` is the best one so far."""
+struct SearchStoppedError <: Exception
+    message::String
+    selection::Selection
+end
+Base.showerror(io::IO, e::SearchStoppedError) = print(io, "SearchStoppedError: ", e.message)
+
 for (T, destroy) in ((CandidateSet, :ca_candidate_set_destroy), (Selection, :ca_selection_destroy),
                      (Skeleton, :ca_skeleton_destroy))
     @eval function Base.close(x::$T)
@@ -515,9 +524,13 @@ function select(ctx::Context, set::CandidateSet; ignorable_samples=nothing, forc
         ccall((:ca_select, libcoverage_axis), Int32,
               (Ptr{Cvoid}, Ptr{Cvoid}, Ref{SelectOptions}, Ref{Ptr{Cvoid}}), ctx.ptr, set.ptr, o, out)
     end
-    if status == CA_ERROR_TARGET_NOT_REACHED && out[] != C_NULL  # the one failure with a result
+    if status == CA_ERROR_TARGET_NOT_REACHED && out[] != C_NULL  # a failure with a result
         message = unsafe_string(ccall((:ca_context_last_error, libcoverage_axis), Cstring, (Ptr{Cvoid},), ctx.ptr))
         throw(TargetNotReachedError(message, Selection(out[])))
+    end
+    if status == CA_ERROR_TIME_LIMIT && out[] != C_NULL  # a search the time limit ended: its best so far
+        message = unsafe_string(ccall((:ca_context_last_error, libcoverage_axis), Cstring, (Ptr{Cvoid},), ctx.ptr))
+        throw(SearchStoppedError(message, Selection(out[])))
     end
     check(ctx, status)
     Selection(out[])

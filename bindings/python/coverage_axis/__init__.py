@@ -14,7 +14,8 @@ Steps one by one: candidates() -> select() -> connect(); a Context gives threads
 and a cancel() any thread may call. Errors raise CoverageAxisError (.status, .message)."""
 from ._arrays import HAVE_NUMPY
 from ._context import Context
-from ._library import (ABI_VERSION, STATUS_NAMES, CoverageAxisError, LibraryNotFoundError, TargetNotReachedError,
+from ._library import (ABI_VERSION, STATUS_NAMES, CoverageAxisError, LibraryNotFoundError, SearchStoppedError,
+                       TargetNotReachedError,
                        lib as _lib, load_library)
 from ._library import (CA_OK, CA_ERROR_INVALID_ARGUMENT, CA_ERROR_NULL_POINTER, CA_ERROR_STRUCT_SIZE,
                        CA_ERROR_INVALID_INPUT, CA_ERROR_DEGENERATE_INPUT, CA_ERROR_UNCOVERABLE, CA_ERROR_GEOMETRY,
@@ -26,7 +27,7 @@ from ._steps import (BoneColliders, CandidateSet, Proxies, Selection, Skeleton, 
 from ._rig import INFLUENCES, NEAREST_KINDS, Correspondence, Rig, correspond, rig
 
 __all__ = ["HAVE_NUMPY", "Context", "ABI_VERSION", "STATUS_NAMES", "CoverageAxisError", "LibraryNotFoundError",
-           "TargetNotReachedError",
+           "SearchStoppedError", "TargetNotReachedError",
            "load_library", "CandidateSet", "Proxies", "Selection", "Skeleton", "candidates", "connect", "defaults",
            "evaluate", "proxies", "select", "skeletonize", "version", "Correspondence", "Rig", "correspond", "rig",
            "BoneColliders", "bone_colliders",

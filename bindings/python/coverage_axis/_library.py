@@ -47,6 +47,18 @@ class CoverageAxisError(Exception):
         self.message = message
 
 
+class SearchStoppedError(CoverageAxisError):
+    """select() or skeletonize() with target_error or target_count: the context's time limit ended
+    the search after a probe (status CA_ERROR_TIME_LIMIT). .selection holds the best selection so
+    far (its stats' hd_reached and probes), and from skeletonize() .skeleton its skeleton (None when
+    no time was left to connect it)."""
+
+    def __init__(self, message, selection):
+        super().__init__(CA_ERROR_TIME_LIMIT, message)
+        self.selection = selection
+        self.skeleton = None
+
+
 class TargetNotReachedError(CoverageAxisError):
     """select() or skeletonize() with target_error: no probe reached it. .selection holds the
     selection of lowest HD found (its stats' hd_reached), and from skeletonize() .skeleton its

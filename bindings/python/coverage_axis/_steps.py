@@ -10,7 +10,8 @@ import ctypes
 from . import _arrays
 from ._context import Context
 from ._library import (CA_ERROR_INVALID_ARGUMENT, CA_ERROR_INVALID_INPUT, CA_ERROR_TARGET_NOT_REACHED,
-                       CoverageAxisError, TargetNotReachedError, _CandidateOptions, _ConnectOptions,
+                       CA_ERROR_TIME_LIMIT, CoverageAxisError, SearchStoppedError, TargetNotReachedError,
+                       _CandidateOptions, _ConnectOptions,
                        _CorrespondenceOptions, _EvaluateOptions, _Evaluation, _ProxyOptions, _ProxyStats, _RigOptions,
                        _SelectOptions, _SelectStats, _SkeletonStats, _SkeletonView, _SurfaceView, fill_defaults, lib,
                        output_struct, struct_dict)
@@ -254,10 +255,12 @@ def select(candidate_set, *, context=None, ignorable_samples=None, forced_in=Non
     try:
         _run(context, lib().ca_select, candidate_set._handle._ptr, ctypes.byref(opts), ctypes.byref(out))
     except CoverageAxisError as e:
-        if e.status != CA_ERROR_TARGET_NOT_REACHED:
-            raise
-        # the one failure with a result: the library returned its best selection
-        raise TargetNotReachedError(e.message, Selection(out, candidate_set)) from None
+        # the failures with a result: the library returned its best selection
+        if e.status == CA_ERROR_TARGET_NOT_REACHED:
+            raise TargetNotReachedError(e.message, Selection(out, candidate_set)) from None
+        if e.status == CA_ERROR_TIME_LIMIT and out.value:
+            raise SearchStoppedError(e.message, Selection(out, candidate_set)) from None
+        raise
     finally:
         del masks
     return Selection(out, candidate_set)
@@ -428,6 +431,13 @@ def skeletonize(vertices, triangles=None, normals=None, *, context=None, connect
     except TargetNotReachedError as e:  # the best skeleton travels with the error
         e.skeleton = _connect_step(e.selection, context=context, **steps["connect"])
         e.skeleton.stats = dict(e.selection.stats, **e.skeleton.stats, candidates=cset.count)
+        raise
+    except SearchStoppedError as e:  # the time limit: connected when the context's budget allows
+        try:
+            e.skeleton = _connect_step(e.selection, context=context, **steps["connect"])
+            e.skeleton.stats = dict(e.selection.stats, **e.skeleton.stats, candidates=cset.count)
+        except CoverageAxisError:
+            pass
         raise
     sk = _connect_step(sel, context=context, **steps["connect"])
     sk.stats = dict(sel.stats, **sk.stats, candidates=cset.count)

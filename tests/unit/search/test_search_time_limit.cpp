@@ -2,9 +2,12 @@
 // fox.obj. The progress callback moves the monitor's deadline to just ahead of now in the middle of
 // the search (the third probe), so the limit falls inside it wherever the machine's speed puts the
 // probes: the search must end within 0.1 s of that limit and return the best skeleton of the probes
-// it ran (target_count: at most K balls, marked stopped; target_error: a result with its reached flag).
+// it ran (target_count: at most K balls, marked stopped; target_error: a result with its reached flag,
+// marked stopped). Through the selection step (what ca_select runs) both end with Code::time_limit
+// and the best selection so far in the result (out.stopped), which ca_select hands to the caller.
 #include <doctest/doctest.h>
 
+#include "steps.h"
 #include "support/fox_candidates.h"
 #include "target_count_hd.h"
 #include "target_error.h"
@@ -80,8 +83,42 @@ TEST_CASE("search time limit: target_error ends within 0.1 s of a limit inside i
     CHECK(seconds_after(at.limit) < 0.1);
     REQUIRE_MESSAGE(st.ok(), st.message);
     CHECK_FALSE(r.reached);
+    CHECK(r.stopped);
     CHECK(r.probes.size() >= 1);  // the probes before the limit (an uncoverable delta is no probe)
     CHECK(r.probes.size() <= 2);
     CHECK(r.skeleton.balls.size() == r.selection.indices.size());
     for (const ca::TargetErrorProbe& p : r.probes) CHECK(r.evaluation.hd_two_sided <= p.hd);
+}
+
+TEST_CASE("search time limit: through the selection step, both searches end with the time-limit status and the best selection so far") {
+    const ca::CandidateSet set = fox_candidate_set();
+    for (const bool count : {false, true}) {
+        CAPTURE(count);
+        ca::SelectRequest request;
+        if (count) request.select.target_count = 12;
+        else request.target_error = 0.01;  // never reached: the search would run all its probes
+        ca::Monitor mon;
+        LimitAt at{mon, count ? 3 : 2};  // target_error: before its second probe
+        const char* stage = count ? "target count: probes" : "target error: probes";
+        int probes_started = 0;
+        mon.progress = [&](const char* s, double) {
+            if (std::strcmp(s, stage) == 0) {
+                ++probes_started;
+                at.hit();
+            }
+            return true;
+        };
+        ca::SelectResult r;
+        const ca::Status st = ca::select_step(set, request, mon, r);
+        REQUIRE(at.set);
+        CHECK(seconds_after(at.limit) < 0.1);
+        CHECK(st.code == ca::Code::time_limit);
+        CHECK(st.message.find("best selection so far") != std::string::npos);
+        CHECK(r.stopped);
+        CHECK_FALSE(r.selection.indices.empty());
+        CHECK(r.hd_reached > 0);
+        if (count) CHECK(r.selection.indices.size() <= 12);
+        else CHECK(r.selection.probes <= 2);  // the probe before the limit, and the one it stopped
+        CHECK(probes_started < 9);
+    }
 }

@@ -767,9 +767,11 @@ impl Context {
         }
     }
 
-    /// Step 2, keeping the result of a `target_error` search that did not reach its target: the
-    /// selection of lowest HD found, with the `TargetNotReached` error beside it (`None` when the
-    /// target was reached or not set). Other failures are errors as in `select`.
+    /// Step 2, keeping the result of a `target_error` search that did not reach its target (the
+    /// selection of lowest HD found, with the `TargetNotReached` error beside it) or of a
+    /// `target_error` or `target_count` search the time limit ended after a probe (the best so far,
+    /// with the `TimeLimit` error beside it); `None` when neither happened. Other failures are
+    /// errors as in `select`.
     pub fn select_best(&self, set: &CandidateSet, options: &SelectOptions<'_>) -> Result<(Selection, Option<Error>)> {
         let raw = &options.raw;
         let samples = unsafe { sys::ca_candidate_set_sample_count(set.raw) };
@@ -785,8 +787,9 @@ impl Context {
         }
         let mut out = ptr::null_mut();
         let status = unsafe { sys::ca_select(self.ptr(), set.raw, &options.raw, &mut out) };
-        if status == sys::CA_ERROR_TARGET_NOT_REACHED && !out.is_null() {
-            // the one failure with a result: the selection is owned (and freed) like any other
+        if (status == sys::CA_ERROR_TARGET_NOT_REACHED || status == sys::CA_ERROR_TIME_LIMIT) && !out.is_null() {
+            // the failures with a result (a target not reached; a search the time limit ended:
+            // its best so far): the selection is owned (and freed) like any other
             let missed = self.check(status).unwrap_err();
             return Ok((Selection { raw: out }, Some(missed)));
         }
