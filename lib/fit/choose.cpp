@@ -3,8 +3,7 @@
 // evaluator's two-sided Hausdorff distance. The fit's own samples can miss the evaluator's worst
 // point, and which of the two misses it less differs from model to model, so the choice is made
 // by measuring both rather than by a rule; the first is kept on a tie, so the thorough fit is never
-// farther than the regular one by the measurement that chooses (evaluate() at its defaults with
-// kThoroughChoiceEnvelopeSamples samples of E's boundary).
+// farther than the regular one by evaluate() at its defaults.
 #include "fit.h"
 
 #include "evaluate.h"
@@ -35,11 +34,10 @@ Status fit_skeleton(const CandidateSet& set, const Selection& sel, const FitOpti
     FitStats second_stats;
     st = fit_once(set, sel, second_fit_options(opt), monitor, second, second_stats);
     if (!st.ok()) return st;
-    // the evaluator as ca_evaluate runs it at its defaults (its samples and seed), with fewer
-    // samples of E's boundary (kThoroughChoiceEnvelopeSamples); threads do not change its result
+    // the evaluator as ca_evaluate runs it at its defaults (its samples and seed); threads do not
+    // change its result
     EvaluateOptions eo;
     eo.threads = opt.threads;
-    eo.envelope_samples = kThoroughChoiceEnvelopeSamples;
     std::shared_ptr<const EvaluationSurface> surface;
     st = prepare_evaluation(set.surface.mesh, eo, surface, &set.queries);
     if (!st.ok()) return st;

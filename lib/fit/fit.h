@@ -38,27 +38,20 @@ struct FitOptions {
     int32_t threads = 0;               // 0 = all cores
     // Off by default. On: the fit above and a second fit (second_fit_options), both from the
     // connected skeleton; of the two, the one of lower two-sided Hausdorff distance as evaluate()
-    // measures it at its default options with kThoroughChoiceEnvelopeSamples samples of E's
-    // boundary is kept (the first on a tie). 3-5x the fit's CPU time.
+    // measures it at its default options is kept (the first on a tie). 4-6x the fit's CPU time.
     bool thorough = false;
     // Off by default. On: the covered fit (fit_covered, called by the connection step): this fit
     // (thorough or not), then the cover it breaks repaired with added balls and a refit that keeps it.
     bool keep_cover = false;
 };
 
-// The thorough fit's measurement: evaluate()'s defaults but this many samples of E's boundary
-// (the searches' coarse measurement) instead of 100 000. The choice between the two fits rarely
-// turns on a point the coarse draw misses, and the two full measurements cost as much as both
-// fits (at Q-MAT's sizes the choice was the same on the five reference models).
-constexpr uint32_t kThoroughChoiceEnvelopeSamples = 10000;
-
 struct FitStats {
     double error_before = 0, error_after = 0;   // max residual (internal units) at the start / kept
     uint32_t iterations = 0, accepted = 0;      // steps computed / steps taken
     size_t uncovered = 0;     // cover samples that no fitted ball covers with its dilated radius
     double time_s = 0;
-    // thorough only: the two-sided HD (% of the bbox diagonal) of the first and the second fit as
-    // the choice measured it (kThoroughChoiceEnvelopeSamples), and which was kept (0 the first, 1 the second)
+    // thorough only: the evaluator's two-sided HD (% of the bbox diagonal) of the first and the
+    // second fit, and which was kept (0 the first, 1 the second)
     double hd_first = 0, hd_second = 0;
     uint32_t kept = 0;
     // covered fit only (cover.cpp): cover samples the first fit left uncovered, balls added to

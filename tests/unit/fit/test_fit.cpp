@@ -31,9 +31,9 @@ ca::CandidateSet candidates(ca::Mesh mesh) {
     return set;
 }
 
-double two_sided(const ca::CandidateSet& set, const ca::Skeleton& sk, const ca::EvaluateOptions& opt = {}) {
+double two_sided(const ca::CandidateSet& set, const ca::Skeleton& sk) {
     ca::EvaluateResult r;
-    const ca::Status st = ca::evaluate(set.surface.mesh, sk, opt, ca::Monitor{}, r);
+    const ca::Status st = ca::evaluate(set.surface.mesh, sk, ca::EvaluateOptions{}, ca::Monitor{}, r);
     REQUIRE_MESSAGE(st.ok(), st.message);
     return r.hd_two_sided;
 }
@@ -102,8 +102,7 @@ TEST_CASE("test_fit: capsule and torus: lower Hausdorff distance, same topology,
 }
 
 // Brute force: the thorough fit returns, ball for ball, whichever of the regular fit and the
-// second fit (second_fit_options) evaluate() measures closer at its defaults with
-// kThoroughChoiceEnvelopeSamples boundary samples, the first on a tie.
+// second fit (second_fit_options) evaluate() at its defaults measures closer, the first on a tie.
 TEST_CASE("test_fit: the thorough fit keeps the fit of lower evaluated Hausdorff distance") {
     for (int shape = 0; shape < 2; ++shape) {
         const ca::CandidateSet set =
@@ -121,9 +120,7 @@ TEST_CASE("test_fit: the thorough fit keeps the fit of lower evaluated Hausdorff
         REQUIRE(ca::fit_skeleton(set, sel, ca::second_fit_options(opt), ca::Monitor{}, second, stats).ok());
         opt.thorough = true;
         REQUIRE(ca::fit_skeleton(set, sel, opt, ca::Monitor{}, thorough, stats).ok());
-        ca::EvaluateOptions choice;
-        choice.envelope_samples = ca::kThoroughChoiceEnvelopeSamples;
-        const double h1 = two_sided(set, first, choice), h2 = two_sided(set, second, choice);
+        const double h1 = two_sided(set, first), h2 = two_sided(set, second);
         CHECK(h1 != h2);   // the two fits differ, so the choice is tested
         const ca::Skeleton& want = h2 < h1 ? second : first;
         CHECK(stats.kept == (h2 < h1 ? 1u : 0u));
@@ -134,7 +131,7 @@ TEST_CASE("test_fit: the thorough fit keeps the fit of lower evaluated Hausdorff
             CHECK(thorough.balls[i].center == want.balls[i].center);
             CHECK(thorough.balls[i].radius == want.balls[i].radius);
         }
-        CHECK(two_sided(set, thorough, choice) == std::min(h1, h2));
+        CHECK(two_sided(set, thorough) == std::min(h1, h2));
         CHECK(thorough.faces == sk.faces);
     }
 }
