@@ -54,26 +54,31 @@ void split_parts(const std::vector<Vec3>& pts, std::vector<uint32_t> ids, size_t
     split_parts(pts, std::move(right), max_part, parts);
 }
 
-// Divide and conquer (see SelectOptions::dc_threshold).
-Status solve_parts(const Coverage& cov, const std::vector<Vec3>& samples, const SelectOptions& opt,
-                   const CoverOptions& cover, const Monitor& monitor, CoverResult& res, uint32_t& n_parts) {
+// The whole problem's masks (which samples must be covered, which balls may or must be chosen),
+// checked first, so that errors name global sample indices. Samples no allowed ball covers go to
+// res.uncovered and are dropped from the required ones when opt.skip_uncoverable is set.
+struct GlobalMasks {
+    std::vector<uint8_t> required, allowed, locked;
+};
+
+Status global_masks(const Coverage& cov, const SelectOptions& opt, const CoverOptions& cover, CoverResult& res,
+                    GlobalMasks& g) {
     const size_t m = cov.n_samples, n = cov.n_balls;
-    const auto t0 = Clock::now();
-    res = CoverResult{};
-    // Global feasibility first, so that errors name global sample indices.
-    std::vector<uint8_t> required(m, 1), allowed(n, 1), locked(n, 0);
-    for (size_t j = 0; j < cover.ignorable_samples.size() && j < m; ++j) required[j] = !cover.ignorable_samples[j];
-    for (size_t a = 0; a < cover.forced_out.size() && a < n; ++a) allowed[a] = !cover.forced_out[a];
-    for (size_t a = 0; a < cover.forced_in.size() && a < n; ++a) locked[a] = cover.forced_in[a] != 0;
+    g.required.assign(m, 1);
+    g.allowed.assign(n, 1);
+    g.locked.assign(n, 0);
+    for (size_t j = 0; j < cover.ignorable_samples.size() && j < m; ++j) g.required[j] = !cover.ignorable_samples[j];
+    for (size_t a = 0; a < cover.forced_out.size() && a < n; ++a) g.allowed[a] = !cover.forced_out[a];
+    for (size_t a = 0; a < cover.forced_in.size() && a < n; ++a) g.locked[a] = cover.forced_in[a] != 0;
     if ((!cover.ignorable_samples.empty() && cover.ignorable_samples.size() != m) ||
         (!cover.forced_in.empty() && cover.forced_in.size() != n) || (!cover.forced_out.empty() && cover.forced_out.size() != n))
         return fail(Code::invalid_argument, "set cover: mask sizes do not match the problem");
     for (size_t a = 0; a < n; ++a)
-        if (locked[a] && !allowed[a]) return fail(Code::invalid_argument, "set cover: a ball is both forced in and forced out");
+        if (g.locked[a] && !g.allowed[a]) return fail(Code::invalid_argument, "set cover: a ball is both forced in and forced out");
     for (uint32_t j = 0; j < m; ++j) {
-        if (!required[j]) continue;
+        if (!g.required[j]) continue;
         bool ok = false;
-        for (uint32_t k = cov.sample_ptr[j]; k < cov.sample_ptr[j + 1] && !ok; ++k) ok = allowed[cov.sample_balls[k]] != 0;
+        for (uint32_t k = cov.sample_ptr[j]; k < cov.sample_ptr[j + 1] && !ok; ++k) ok = g.allowed[cov.sample_balls[k]] != 0;
         if (!ok) res.uncovered.push_back(j);
     }
     if (!res.uncovered.empty()) {
@@ -81,10 +86,97 @@ Status solve_parts(const Coverage& cov, const std::vector<Vec3>& samples, const 
             return fail(Code::uncoverable, std::to_string(res.uncovered.size()) + " of " + std::to_string(m) +
                                                " samples are covered by no candidate ball (first: " +
                                                std::to_string(res.uncovered[0]) + ")");
-        for (uint32_t j : res.uncovered) required[j] = 0;
+        for (uint32_t j : res.uncovered) g.required[j] = 0;
     }
-    for (uint8_t v : required) res.rows_before += v;
-    for (uint8_t v : allowed) res.cols_before += v;
+    for (uint8_t v : g.required) res.rows_before += v;
+    for (uint8_t v : g.allowed) res.cols_before += v;
+    return Status::success();
+}
+
+// One part's sub-problem: its samples (local indices in part order), every ball covering one of
+// them (`balls`, ascending global indices), and the global masks carried over into pc. local_of
+// and ball_local are all UINT32_MAX on entry and are left so on return.
+void part_problem(const Coverage& cov, const std::vector<uint32_t>& part, const GlobalMasks& g,
+                  std::vector<uint32_t>& local_of, std::vector<uint32_t>& ball_local, Coverage& sub,
+                  std::vector<uint32_t>& balls, CoverOptions& pc) {
+    sub = Coverage{};
+    sub.n_samples = part.size();
+    balls.clear();
+    for (uint32_t l = 0; l < part.size(); ++l) {
+        local_of[part[l]] = l;
+        for (uint32_t k = cov.sample_ptr[part[l]]; k < cov.sample_ptr[part[l] + 1]; ++k) {
+            const uint32_t a = cov.sample_balls[k];
+            if (ball_local[a] == UINT32_MAX) { ball_local[a] = 0; balls.push_back(a); }
+        }
+    }
+    std::sort(balls.begin(), balls.end());
+    sub.n_balls = balls.size();
+    sub.ball_ptr.assign(balls.size() + 1, 0);
+    for (uint32_t b = 0; b < balls.size(); ++b) {
+        const uint32_t a = balls[b];
+        ball_local[a] = b;
+        for (uint32_t k = cov.ball_ptr[a]; k < cov.ball_ptr[a + 1]; ++k)
+            if (local_of[cov.ball_samples[k]] != UINT32_MAX) sub.ball_samples.push_back(local_of[cov.ball_samples[k]]);
+        sub.ball_ptr[b + 1] = uint32_t(sub.ball_samples.size());
+    }
+    sub.build_transpose();
+    pc.ignorable_samples.assign(part.size(), 0);
+    for (uint32_t l = 0; l < part.size(); ++l) pc.ignorable_samples[l] = !g.required[part[l]];
+    pc.forced_in.assign(balls.size(), 0);
+    pc.forced_out.assign(balls.size(), 0);
+    for (uint32_t b = 0; b < balls.size(); ++b) {
+        pc.forced_in[b] = g.locked[balls[b]];
+        pc.forced_out[b] = !g.allowed[balls[b]];
+    }
+    for (uint32_t j : part) local_of[j] = UINT32_MAX;
+    for (uint32_t a : balls) ball_local[a] = UINT32_MAX;
+}
+
+// Adds a part's solve to the whole's counters; any part's lower bound also bounds the whole.
+void add_part(const CoverResult& pr, CoverResult& res) {
+    res.lower_bound = std::max(res.lower_bound, pr.lower_bound);
+    res.time_reduce_s += pr.time_reduce_s;
+    res.rows_after += pr.rows_after;
+    res.cols_after += pr.cols_after;
+    res.forced += pr.forced;
+    res.components += pr.components;
+    res.cbc_components += pr.cbc_components;
+}
+
+// The merged parts' selection, made irredundant, against the global greedy cover: the smaller one
+// is kept, and the greedy's global bound (forced balls of the whole reduction + disjoint kernel
+// rows) joins the parts' bound.
+Status finish_parts(const Coverage& cov, const SelectOptions& opt, const CoverOptions& cover, const GlobalMasks& g,
+                    const Monitor& monitor, std::vector<uint32_t> selected, CoverResult& res) {
+    for (uint32_t a = 0; a < cov.n_balls; ++a)
+        if (g.locked[a]) selected.push_back(a);
+    remove_redundant_balls(cov, g.required, g.locked, selected);
+    CoverOptions gc = cover;
+    gc.solver = Solver::greedy;
+    CoverResult greedy;
+    if (monitor.cancelled()) return fail(Code::cancelled, "set cover: cancelled");
+    if (solve_set_cover(cov, gc, opt.skip_uncoverable, monitor, greedy).ok()) {
+        res.lower_bound = std::max(res.lower_bound, greedy.lower_bound);
+        if (greedy.selected.size() < selected.size()) selected = greedy.selected;
+    }
+    res.selected = selected;
+    res.objective = double(selected.size());
+    res.lower_bound = std::min(res.lower_bound, res.objective);
+    res.proven_optimal = cover.solver == Solver::exact && res.lower_bound >= res.objective ? 1 : 0;
+    res.gap = res.objective > 0 ? (res.objective - res.lower_bound) / res.objective : 0.0;
+    return Status::success();
+}
+
+// Divide and conquer (see SelectOptions::dc_threshold): the samples cut into spatial parts, each
+// part solved alone, the union finished by finish_parts.
+Status solve_parts(const Coverage& cov, const std::vector<Vec3>& samples, const SelectOptions& opt,
+                   const CoverOptions& cover, const Monitor& monitor, CoverResult& res, uint32_t& n_parts) {
+    const size_t m = cov.n_samples, n = cov.n_balls;
+    const auto t0 = Clock::now();
+    res = CoverResult{};
+    GlobalMasks g;
+    Status masks = global_masks(cov, opt, cover, res, g);
+    if (!masks.ok()) return masks;
 
     std::vector<uint32_t> all(m);
     for (uint32_t j = 0; j < m; ++j) all[j] = j;
@@ -96,41 +188,13 @@ Status solve_parts(const Coverage& cov, const std::vector<Vec3>& samples, const 
     pc.centers = nullptr;
     pc.radii = nullptr;
     if (pc.time_limit_s > 0 && std::isfinite(pc.time_limit_s)) pc.time_limit_s = cover.time_limit_s / double(parts.size());
-    std::vector<uint32_t> selected, local_of(m, UINT32_MAX), ball_local(n, UINT32_MAX);
+    std::vector<uint32_t> selected, balls, local_of(m, UINT32_MAX), ball_local(n, UINT32_MAX);
     std::vector<Vec3> sub_centers;
     std::vector<double> sub_radii;
+    Coverage sub;
     for (const auto& part : parts) {
         if (monitor.cancelled()) return fail(Code::cancelled, "set cover: cancelled");
-        // The part's sub-problem: its samples, every ball covering one of them.
-        Coverage sub;
-        sub.n_samples = part.size();
-        std::vector<uint32_t> balls;
-        for (uint32_t l = 0; l < part.size(); ++l) {
-            local_of[part[l]] = l;
-            for (uint32_t k = cov.sample_ptr[part[l]]; k < cov.sample_ptr[part[l] + 1]; ++k) {
-                const uint32_t a = cov.sample_balls[k];
-                if (ball_local[a] == UINT32_MAX) { ball_local[a] = 0; balls.push_back(a); }
-            }
-        }
-        std::sort(balls.begin(), balls.end());
-        sub.n_balls = balls.size();
-        sub.ball_ptr.assign(balls.size() + 1, 0);
-        for (uint32_t b = 0; b < balls.size(); ++b) {
-            const uint32_t a = balls[b];
-            ball_local[a] = b;
-            for (uint32_t k = cov.ball_ptr[a]; k < cov.ball_ptr[a + 1]; ++k)
-                if (local_of[cov.ball_samples[k]] != UINT32_MAX) sub.ball_samples.push_back(local_of[cov.ball_samples[k]]);
-            sub.ball_ptr[b + 1] = uint32_t(sub.ball_samples.size());
-        }
-        sub.build_transpose();
-        pc.ignorable_samples.assign(part.size(), 0);
-        for (uint32_t l = 0; l < part.size(); ++l) pc.ignorable_samples[l] = !required[part[l]];
-        pc.forced_in.assign(balls.size(), 0);
-        pc.forced_out.assign(balls.size(), 0);
-        for (uint32_t b = 0; b < balls.size(); ++b) {
-            pc.forced_in[b] = locked[balls[b]];
-            pc.forced_out[b] = !allowed[balls[b]];
-        }
+        part_problem(cov, part, g, local_of, ball_local, sub, balls, pc);
         if (cover.solver == Solver::capp && cover.centers && cover.radii) {
             sub_centers.clear();
             sub_radii.clear();
@@ -140,36 +204,12 @@ Status solve_parts(const Coverage& cov, const std::vector<Vec3>& samples, const 
         }
         CoverResult pr;
         Status st = solve_set_cover(sub, pc, false, monitor, pr);
-        for (uint32_t j : part) local_of[j] = UINT32_MAX;
-        for (uint32_t a : balls) ball_local[a] = UINT32_MAX;
         if (!st.ok()) return st;
         for (uint32_t b : pr.selected) selected.push_back(balls[b]);
-        res.lower_bound = std::max(res.lower_bound, pr.lower_bound);  // each part relaxes the whole
-        res.time_reduce_s += pr.time_reduce_s;
-        res.rows_after += pr.rows_after;
-        res.cols_after += pr.cols_after;
-        res.forced += pr.forced;
-        res.components += pr.components;
-        res.cbc_components += pr.cbc_components;
+        add_part(pr, res);
     }
-    for (uint32_t a = 0; a < n; ++a)
-        if (locked[a]) selected.push_back(a);
-    remove_redundant_balls(cov, required, locked, selected);
-    // A global bound (forced balls of the whole reduction + disjoint kernel rows), and the
-    // global greedy cover when it is smaller than the merged one.
-    CoverOptions gc = cover;
-    gc.solver = Solver::greedy;
-    CoverResult g;
-    if (monitor.cancelled()) return fail(Code::cancelled, "set cover: cancelled");
-    if (solve_set_cover(cov, gc, opt.skip_uncoverable, monitor, g).ok()) {
-        res.lower_bound = std::max(res.lower_bound, g.lower_bound);
-        if (g.selected.size() < selected.size()) selected = g.selected;
-    }
-    res.selected = selected;
-    res.objective = double(selected.size());
-    res.lower_bound = std::min(res.lower_bound, res.objective);
-    res.proven_optimal = cover.solver == Solver::exact && res.lower_bound >= res.objective ? 1 : 0;
-    res.gap = res.objective > 0 ? (res.objective - res.lower_bound) / res.objective : 0.0;
+    Status finished = finish_parts(cov, opt, cover, g, monitor, std::move(selected), res);
+    if (!finished.ok()) return finished;
     res.time_solve_s = seconds_since(t0) - res.time_reduce_s;
     return Status::success();
 }
