@@ -8,7 +8,7 @@
 #include <doctest/doctest.h>
 
 #include "steps.h"
-#include "support/fox_candidates.h"
+#include "support/test_candidates.h"
 #include "target_count_hd.h"
 #include "target_error.h"
 

@@ -7,7 +7,7 @@
 
 #include "candidates.h"
 #include "mesh_io.h"
-#include "support/fox_candidates.h"
+#include "support/test_candidates.h"
 #include "target_count_hd.h"
 
 #include <cmath>

@@ -16,7 +16,7 @@
 #include "mesh_io.h"
 #include "selection.h"
 #include "steps.h"
-#include "support/fox_candidates.h"
+#include "support/test_candidates.h"
 #include "target_error.h"
 
 #include <algorithm>

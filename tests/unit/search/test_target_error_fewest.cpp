@@ -6,30 +6,14 @@
 // and the skeleton connect_step gives it at the defaults must measure the HD it reports, <= E.
 #include <doctest/doctest.h>
 
-#include "candidates.h"
 #include "evaluate.h"
-#include "mesh_io.h"
 #include "steps.h"
-#include "support/mesh_convert.h"
+#include "support/test_candidates.h"
 
 #include <string>
 #include <vector>
 
 namespace {
-
-ca::CandidateSet torus_candidate_set() {
-    caio::MeshData data;
-    std::string error;
-    REQUIRE_MESSAGE(caio::read_mesh(std::string(CA_TEST_DATA) + "/torus.obj", data, error), error);
-    ca::Surface surface;
-    REQUIRE(ca::prepare_surface(to_core_mesh(data), {}, surface).ok());
-    ca::CandidateOptions co;
-    co.cover_samples = 600;
-    co.voronoi_samples = 1500;
-    ca::CandidateSet set;
-    REQUIRE(ca::generate_candidates(std::move(surface), co, ca::Monitor{}, set).ok());
-    return set;
-}
 
 // The selection connected at connect_step's defaults and measured at evaluate's: its balls and HD.
 std::pair<size_t, double> measured(const ca::CandidateSet& set, const ca::Selection& sel) {
@@ -43,7 +27,7 @@ std::pair<size_t, double> measured(const ca::CandidateSet& set, const ca::Select
 }  // namespace
 
 TEST_CASE("test_target_error_fewest: torus: target-error returns no more balls than target-count finds within E") {
-    const ca::CandidateSet set = torus_candidate_set();
+    const ca::CandidateSet set = candidate_set_of("torus.obj", 600, 1500);
     std::vector<std::pair<size_t, double>> counts;  // (balls, HD) of each target-count run
     for (uint32_t K = 6; K <= 13; ++K) {
         ca::SelectRequest request;
